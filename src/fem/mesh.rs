@@ -1,0 +1,220 @@
+//! Nodes and meshes as plain data.
+//!
+//! Cast3M keeps one global table of nodes: a POINT object *is* a node, and
+//! meshes list node numbers. Two meshes that share a point share the node,
+//! which is how `ET` glues parts together and how conditions reach the
+//! unknowns of a structure. We keep the same model: [`Nodes`] is the table
+//! (owned by the interpreter's store), [`Mesh`] holds connectivity only.
+
+/// Element geometries known to the mesher and the element library.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum ElemType {
+    Poi1,
+    Seg2,
+    Seg3,
+    Tri3,
+    Tri6,
+    Qua4,
+    Qua8,
+    Cub8,
+    Tet4,
+    Pri6,
+}
+
+impl ElemType {
+    /// Every geometry, in Cast3M's usual listing order.
+    pub const ALL: [ElemType; 10] = [
+        ElemType::Poi1,
+        ElemType::Seg2,
+        ElemType::Seg3,
+        ElemType::Tri3,
+        ElemType::Tri6,
+        ElemType::Qua4,
+        ElemType::Qua8,
+        ElemType::Cub8,
+        ElemType::Tet4,
+        ElemType::Pri6,
+    ];
+
+    /// Number of nodes of one element.
+    pub fn nodes(self) -> usize {
+        match self {
+            ElemType::Poi1 => 1,
+            ElemType::Seg2 => 2,
+            ElemType::Seg3 => 3,
+            ElemType::Tri3 => 3,
+            ElemType::Tri6 => 6,
+            ElemType::Qua4 => 4,
+            ElemType::Qua8 => 8,
+            ElemType::Cub8 => 8,
+            ElemType::Tet4 => 4,
+            ElemType::Pri6 => 6,
+        }
+    }
+
+    /// Topological dimension (0 point, 1 line, 2 surface, 3 volume).
+    pub fn dim(self) -> usize {
+        match self {
+            ElemType::Poi1 => 0,
+            ElemType::Seg2 | ElemType::Seg3 => 1,
+            ElemType::Tri3 | ElemType::Tri6 | ElemType::Qua4 | ElemType::Qua8 => 2,
+            ElemType::Cub8 | ElemType::Tet4 | ElemType::Pri6 => 3,
+        }
+    }
+
+    /// Cast3M's 4-letter name.
+    pub fn name(self) -> &'static str {
+        match self {
+            ElemType::Poi1 => "POI1",
+            ElemType::Seg2 => "SEG2",
+            ElemType::Seg3 => "SEG3",
+            ElemType::Tri3 => "TRI3",
+            ElemType::Tri6 => "TRI6",
+            ElemType::Qua4 => "QUA4",
+            ElemType::Qua8 => "QUA8",
+            ElemType::Cub8 => "CUB8",
+            ElemType::Tet4 => "TET4",
+            ElemType::Pri6 => "PRI6",
+        }
+    }
+
+    /// Parse a Cast3M element name (exact 4 letters).
+    pub fn from_name(s: &str) -> Option<ElemType> {
+        ElemType::ALL.into_iter().find(|t| t.name() == s)
+    }
+}
+
+/// The global node table. Coordinates are always stored in 3D; the unused
+/// ones are 0. The last field is the local density (`OPTI DENS`), which
+/// Cast3M stores with every point and DROI uses to grade meshes.
+#[derive(Debug, Clone, Default)]
+pub struct Nodes {
+    pub coords: Vec<[f64; 3]>,
+    pub density: Vec<f64>,
+}
+
+impl Nodes {
+    /// Add a node and return its number.
+    pub fn push(&mut self, x: [f64; 3], density: f64) -> usize {
+        self.coords.push(x);
+        self.density.push(density);
+        self.coords.len() - 1
+    }
+
+    pub fn len(&self) -> usize {
+        self.coords.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.coords.is_empty()
+    }
+
+    pub fn get(&self, i: usize) -> [f64; 3] {
+        self.coords[i]
+    }
+}
+
+/// Elements of one geometry, connectivity stored flat
+/// (`conn[e * ty.nodes() + k]` is node k of element e).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Part {
+    pub ty: ElemType,
+    pub conn: Vec<usize>,
+}
+
+impl Part {
+    pub fn new(ty: ElemType) -> Self {
+        Part { ty, conn: Vec::new() }
+    }
+
+    pub fn len(&self) -> usize {
+        self.conn.len() / self.ty.nodes()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.conn.is_empty()
+    }
+
+    pub fn elem(&self, e: usize) -> &[usize] {
+        let n = self.ty.nodes();
+        &self.conn[e * n..(e + 1) * n]
+    }
+
+    pub fn elems(&self) -> impl Iterator<Item = &[usize]> {
+        self.conn.chunks(self.ty.nodes())
+    }
+}
+
+/// A mesh: one or more parts, each of a single element type. A mesh of
+/// points is a POI1 part. Element order is significant (COTE, POIN n, EXTR
+/// of element fields all count elements), so parts keep insertion order.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Mesh {
+    pub parts: Vec<Part>,
+}
+
+impl Mesh {
+    pub fn single(part: Part) -> Self {
+        Mesh { parts: vec![part] }
+    }
+
+    /// A POI1 mesh of the given nodes.
+    pub fn points(nodes: &[usize]) -> Self {
+        Mesh::single(Part { ty: ElemType::Poi1, conn: nodes.to_vec() })
+    }
+
+    pub fn n_elements(&self) -> usize {
+        self.parts.iter().map(Part::len).sum()
+    }
+
+    /// Distinct nodes in order of first appearance.
+    pub fn node_list(&self) -> Vec<usize> {
+        let mut seen = std::collections::HashSet::new();
+        let mut out = Vec::new();
+        for p in &self.parts {
+            for &n in &p.conn {
+                if seen.insert(n) {
+                    out.push(n);
+                }
+            }
+        }
+        out
+    }
+
+    /// Union (Cast3M `ET`): parts of the same type are concatenated and
+    /// elements already present (same type, same nodes in the same order)
+    /// are not repeated.
+    pub fn union(&self, other: &Mesh) -> Mesh {
+        let mut out = self.clone();
+        for p in &other.parts {
+            match out.parts.iter_mut().find(|q| q.ty == p.ty) {
+                Some(q) => {
+                    let n = p.ty.nodes();
+                    let existing: std::collections::HashSet<Vec<usize>> =
+                        q.conn.chunks(n).map(|c| c.to_vec()).collect();
+                    for e in p.conn.chunks(n) {
+                        if !existing.contains(e) {
+                            q.conn.extend_from_slice(e);
+                        }
+                    }
+                }
+                None => out.parts.push(p.clone()),
+            }
+        }
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn union_keeps_shared_nodes_and_drops_repeated_elements() {
+        let a = Mesh::single(Part { ty: ElemType::Seg2, conn: vec![0, 1] });
+        let b = Mesh::single(Part { ty: ElemType::Seg2, conn: vec![1, 2, 0, 1] });
+        let u = a.union(&b);
+        assert_eq!(u.n_elements(), 2);
+        assert_eq!(u.node_list(), vec![0, 1, 2]);
+    }
+}

@@ -1,0 +1,2 @@
+//! Elements, quadrature and assembly: knows meshes and materials, never the language.
+pub mod mesh;

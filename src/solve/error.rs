@@ -1,0 +1,39 @@
+//! Solver failures, in terms of unknown numbers (`dofs`) and condition
+//! numbers. The language side turns them into node/component names.
+
+use thiserror::Error;
+
+#[derive(Debug, Clone, Error, PartialEq)]
+pub enum SolveError {
+    /// The operator has a free rigid mode: `dofs` are the unknowns that move
+    /// in it (largest components first).
+    #[error("singular system: a rigid mode is free")]
+    Singular { dofs: Vec<usize> },
+    /// Unknowns that no matrix term and no condition touch.
+    #[error("unknowns touched by no matrix")]
+    Untouched { dofs: Vec<usize> },
+    /// The same unknown is imposed by several equality conditions
+    /// (the rows are dependent).
+    #[error("unknown constrained twice")]
+    DoublyConstrained { dof: usize, conditions: Vec<usize> },
+    /// Linearly dependent condition rows (other than proportional pairs).
+    #[error("linearly dependent conditions")]
+    DependentConditions { conditions: Vec<usize> },
+    /// Parallel unilateral conditions with crossed limits: empty feasible set.
+    #[error("conflicting unilateral conditions")]
+    Conflicting { conditions: Vec<usize> },
+    /// The load drives a rigid mode away from every unilateral support.
+    /// `work` is F·r along the escaping mode r.
+    #[error("no equilibrium: the load pushes the structure away from its unilateral supports")]
+    Infeasible { conditions: Vec<usize>, work: f64 },
+    /// The status iteration did not settle within its cap; `conditions` are
+    /// the ones still changing.
+    #[error("the status iteration did not converge")]
+    NoConvergence { iterations: usize, conditions: Vec<usize> },
+    /// The a-posteriori residual check failed.
+    #[error("inaccurate solution: relative residual {residual:e}")]
+    Inaccurate { residual: f64 },
+    /// Anything else the numerical library reported.
+    #[error("{0}")]
+    Other(String),
+}

@@ -1,0 +1,29 @@
+//! Language-free numerics for linear statics with conditions.
+//!
+//! This layer knows matrices, unknown numbers and condition rows, never the
+//! Gibiane language: `scripts/check-layering.sh` fails if anything here
+//! imports `syntax`, `eval`, `ops` or `value`.
+//!
+//! * [`problem`]: the data RESO hands over (stiffness, condition rows, loads)
+//!   and what comes back (displacements, multipliers, statuses).
+//! * [`error`]: what can go wrong, in terms of unknown and condition numbers
+//!   (the caller turns them into node and component names).
+//! * [`lagrange`], [`ordering`], [`linear`], [`direct`]: the doubled-multiplier
+//!   system of Verpeaux & Charras and its pivot-free LDLᵀ on faer.
+//! * [`condense`]: the interrupted factorisation onto the second multipliers
+//!   of the unilateral conditions (and onto chosen unknowns, for SUPER).
+//! * [`status`]: the status (active-set) iteration on the condensed operator.
+//! * [`unilateral`]: the UNIL driver choosing among the methods.
+
+pub mod condense;
+pub mod direct;
+pub mod error;
+pub mod lagrange;
+pub mod linear;
+pub mod ordering;
+pub mod problem;
+pub mod status;
+pub mod unilateral;
+
+pub use error::SolveError;
+pub use problem::{Condition, Kind, Load, Matrix, Problem, Solution};
