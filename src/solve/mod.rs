@@ -26,4 +26,4 @@ pub mod status;
 pub mod unilateral;
 
 pub use error::SolveError;
-pub use problem::{Condition, Kind, Load, Matrix, Problem, Solution};
+pub use problem::{Condensed, Condition, Kind, Load, Matrix, Problem, Solution};
