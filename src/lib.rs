@@ -1,4 +1,219 @@
-//! gibi: an embeddable interpreter for Gibiane, the command language of Cast3M.
+//! gibi: an embeddable interpreter for Gibiane, the command language of
+//! Cast3M, with a linear-statics solver for bilateral and unilateral
+//! conditions.
+//!
+//! ```
+//! use gibi::{Capture, Interpreter, OpSpec, Value};
+//!
+//! // Output goes to a sink the host chooses; by default it is discarded.
+//! let out = Capture::default();
+//! let mut gibi = Interpreter::builder().output(out.clone()).build();
+//!
+//! // A custom operator with typed arguments, read like any Gibiane operator.
+//! gibi.register(OpSpec::host("DOUB", "DOUB FLOTTANT", "Twice a number.", |args| {
+//!     let x = args.req_num()?;
+//!     Ok(vec![Value::Float(2.0 * x)])
+//! }));
+//!
+//! gibi.set("L", 3.0);
+//! gibi.run_str("example", "x = 1 + 2 * 3 ; y = doub l ; mess 'x =' x ;").unwrap();
+//! assert_eq!(gibi.get_f64("X"), Some(9.0)); // no precedence: (1 + 2) * 3
+//! assert_eq!(gibi.get_f64("Y"), Some(6.0));
+//! assert_eq!(out.text(), "x = 9\n");
+//! ```
 
+pub mod error;
+pub mod eval;
 pub mod fem;
+pub mod ops;
 pub mod solve;
+pub mod source;
+pub mod syntax;
+pub mod value;
+
+pub use error::{Error, ErrorKind, Result};
+pub use eval::FilePolicy;
+pub use ops::{Args, OpSpec, Registry};
+pub use value::Value;
+
+use eval::Interp;
+use source::Source;
+use std::cell::RefCell;
+use std::io::Write;
+use std::path::Path;
+use std::rc::Rc;
+
+/// An output sink that keeps what was written (for tests and hosts that
+/// want the transcript as a string).
+#[derive(Debug, Clone, Default)]
+pub struct Capture(Rc<RefCell<Vec<u8>>>);
+
+impl Capture {
+    /// Everything written so far.
+    pub fn text(&self) -> String {
+        String::from_utf8_lossy(&self.0.borrow()).into_owned()
+    }
+    /// Forget what was written.
+    pub fn clear(&self) {
+        self.0.borrow_mut().clear();
+    }
+}
+
+impl Write for Capture {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        self.0.borrow_mut().extend_from_slice(buf);
+        Ok(buf.len())
+    }
+    fn flush(&mut self) -> std::io::Result<()> {
+        Ok(())
+    }
+}
+
+/// How a run ended without error.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Outcome {
+    /// The text was run to its end.
+    EndOfInput,
+    /// `FIN ;` ended the run.
+    Finished,
+}
+
+/// Builds an [`Interpreter`]: output sink, file policy, extra operators.
+pub struct InterpreterBuilder {
+    out: Box<dyn Write>,
+    files: FilePolicy,
+    registry: Registry,
+}
+
+impl InterpreterBuilder {
+    /// Where MESS, LIST, … write. Default: discarded.
+    pub fn output(mut self, w: impl Write + 'static) -> Self {
+        self.out = Box::new(w);
+        self
+    }
+    /// Which files scripts may read or write. Default: none.
+    pub fn files(mut self, policy: FilePolicy) -> Self {
+        self.files = policy;
+        self
+    }
+    /// Add an operator before the registry is frozen.
+    pub fn operator(mut self, op: OpSpec) -> Self {
+        self.registry.insert(op);
+        self
+    }
+    pub fn build(self) -> Interpreter {
+        let mut interp = Interp::new(Rc::new(self.registry), self.out);
+        interp.files = self.files;
+        Interpreter { interp }
+    }
+}
+
+/// A Gibiane session: objects persist from one `run_*` call to the next.
+pub struct Interpreter {
+    interp: Interp,
+}
+
+impl Default for Interpreter {
+    fn default() -> Self {
+        Interpreter::builder().build()
+    }
+}
+
+impl Interpreter {
+    /// A session with the standard operators, output discarded, no file access.
+    pub fn new() -> Self {
+        Interpreter::default()
+    }
+
+    pub fn builder() -> InterpreterBuilder {
+        InterpreterBuilder { out: Box::new(std::io::sink()), files: FilePolicy::Nothing, registry: Registry::standard() }
+    }
+
+    /// Register (or replace) an operator.
+    pub fn register(&mut self, op: OpSpec) {
+        let mut r = (*self.interp.registry).clone();
+        r.insert(op);
+        self.interp.registry = Rc::new(r);
+    }
+
+    /// The operator table (for help and completion).
+    pub fn registry(&self) -> &Registry {
+        &self.interp.registry
+    }
+
+    /// Parse and run a text. `name` is used in error locations.
+    pub fn run_str(&mut self, name: &str, text: &str) -> Result<Outcome> {
+        let src = Source::new(name, text);
+        let prog = syntax::parse(text).map_err(|mut e| {
+            e.source = Some(src.clone());
+            e
+        })?;
+        self.run_parsed(&prog, src)
+    }
+
+    /// Run an already parsed program (the REPL parses to know whether the
+    /// input is complete).
+    pub fn run_parsed(&mut self, prog: &syntax::ast::Program, src: Rc<Source>) -> Result<Outcome> {
+        let fin = self.interp.run_program(prog, src.clone()).map_err(|mut e| {
+            if e.source.is_none() {
+                e.source = Some(src);
+            }
+            e
+        })?;
+        Ok(if fin { Outcome::Finished } else { Outcome::EndOfInput })
+    }
+
+    /// Read and run a file (named as given in error locations).
+    pub fn run_file(&mut self, path: impl AsRef<Path>) -> Result<Outcome> {
+        let path = path.as_ref();
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| Error::io(format!("cannot read {}: {}", path.display(), e)))?;
+        self.run_str(&path.display().to_string(), &text)
+    }
+
+    /// The object bound to a name (names are upper-cased as in Gibiane).
+    pub fn get(&self, name: &str) -> Option<Value> {
+        self.interp.store.get(&name.to_uppercase()).cloned()
+    }
+
+    /// A number bound to a name (ENTIER or FLOTTANT).
+    pub fn get_f64(&self, name: &str) -> Option<f64> {
+        self.get(name)?.as_f64()
+    }
+
+    /// Read an object as a typed Rust value.
+    pub fn get_as<T: ops::FromArg>(&self, name: &str) -> Result<T> {
+        let v = self.get(name).ok_or_else(|| Error::runtime(format!("no object named {}", name.to_uppercase())))?;
+        T::from_value(&v).ok_or_else(|| {
+            Error::runtime(format!("{} is a {}, not a {}", name.to_uppercase(), v.type_name(), T::EXPECT))
+        })
+    }
+
+    /// Bind a name in the global frame.
+    pub fn set(&mut self, name: &str, v: impl Into<Value>) {
+        self.interp.store.set(&name.to_uppercase(), v.into());
+    }
+
+    /// Every visible name with its object.
+    pub fn objects(&self) -> Vec<(String, Value)> {
+        self.interp.store.visible()
+    }
+
+    /// Coordinates of a POINT object.
+    pub fn point_coords(&self, v: &Value) -> Option<[f64; 3]> {
+        match v {
+            Value::Point(p) => Some(self.interp.nodes.get(*p)),
+            _ => None,
+        }
+    }
+
+    /// Whether `FIN ;` has been reached.
+    pub fn finished(&self) -> bool {
+        self.interp.finished
+    }
+
+    /// Low-level access for the CLI and tests.
+    pub fn interp(&mut self) -> &mut Interp {
+        &mut self.interp
+    }
+}

@@ -1,0 +1,181 @@
+//! Statements: instructions with assignment, SI, REPETER, QUITTER/ITERER,
+//! FIN, and procedure definitions.
+
+use super::{Flow, Interp};
+use crate::error::{Error, Result};
+use crate::syntax::ast::{Instr, Stmt, Target};
+use crate::value::{Key, Ty, Value};
+
+impl Interp {
+    pub fn exec_block(&mut self, stmts: &[Stmt]) -> Result<Flow> {
+        for s in stmts {
+            let f = self.exec_stmt(s)?;
+            if f != Flow::Next {
+                return Ok(f);
+            }
+        }
+        Ok(Flow::Next)
+    }
+
+    fn exec_stmt(&mut self, s: &Stmt) -> Result<Flow> {
+        match s {
+            Stmt::Instr(ins) => {
+                self.exec_instr(ins)?;
+                Ok(Flow::Next)
+            }
+            Stmt::If { cond, then, otherwise, .. } => {
+                self.echo(cond);
+                let c = self.condition(cond)?;
+                if c {
+                    self.exec_block(then)
+                } else if let Some(o) = otherwise {
+                    self.exec_block(o)
+                } else {
+                    Ok(Flow::Next)
+                }
+            }
+            Stmt::Loop { name, count, body, .. } => self.exec_loop(name, count.as_ref(), body),
+            Stmt::Quit { name, .. } => Ok(Flow::Quit(name.clone())),
+            Stmt::Iter { name, .. } => Ok(Flow::Iter(name.clone())),
+            Stmt::End { .. } => Ok(Flow::End),
+            Stmt::Proc(p) => {
+                self.store.set(&p.name, Value::Proc(p.clone()));
+                Ok(Flow::Next)
+            }
+            Stmt::Argu { params, span } => {
+                self.bind_argu(params, *span)?;
+                Ok(Flow::Next)
+            }
+            Stmt::Respro(ins) => {
+                let vals = self.eval_items_raw(&ins.items).map_err(|e| e.with_span_if_missing(ins.span, &self.source))?;
+                if self.store.top().proc_name.is_none() {
+                    return Err(Error::runtime("RESPRO is only allowed inside a procedure").at(ins.span));
+                }
+                self.store.top_mut().results.extend(vals);
+                Ok(Flow::Next)
+            }
+        }
+    }
+
+    fn echo(&mut self, ins: &Instr) {
+        if self.opts.echo >= 1 {
+            let text = self.source.slice(ins.span).split_whitespace().collect::<Vec<_>>().join(" ");
+            self.println(&format!("$ {}", text));
+        }
+    }
+
+    fn condition(&mut self, cond: &Instr) -> Result<bool> {
+        let vals = self.eval_items(&cond.items).map_err(|e| e.with_span_if_missing(cond.span, &self.source))?;
+        match vals.as_slice() {
+            [Value::Bool(b)] => Ok(*b),
+            [v] => Err(Error::runtime(format!("SI needs a LOGIQUE, found {}", v.type_name())).at(cond.span)),
+            _ => Err(Error::runtime(format!("SI needs one LOGIQUE, found {} values", vals.len())).at(cond.span)),
+        }
+    }
+
+    fn exec_loop(&mut self, name: &str, count: Option<&Instr>, body: &[Stmt]) -> Result<Flow> {
+        let n = match count {
+            None => None,
+            Some(c) => match self.eval_items(&c.items)?.as_slice() {
+                [Value::Int(n)] if *n >= 0 => Some(*n),
+                [Value::Int(_)] => None,
+                [v] => {
+                    return Err(Error::runtime(format!("REPETER {}: the count must be an ENTIER, found {}", name, v.type_name()))
+                        .at(c.span))
+                }
+                _ => return Err(Error::runtime(format!("REPETER {}: one count expected", name)).at(c.span)),
+            },
+        };
+        self.store.set(name, Value::Bloc(name.into()));
+        self.store.top_mut().loops.push((name.to_string(), 0));
+        let mut pass = 0i64;
+        let result = loop {
+            if n.is_some_and(|n| pass >= n) {
+                break Ok(Flow::Next);
+            }
+            pass += 1;
+            if let Some(l) = self.store.top_mut().loops.last_mut() {
+                l.1 = pass;
+            }
+            match self.exec_block(body) {
+                Err(e) => break Err(e),
+                Ok(Flow::Next) => {}
+                Ok(Flow::Iter(q)) if q == name || q.is_empty() => {}
+                Ok(Flow::Quit(q)) if q == name || q.is_empty() => break Ok(Flow::Next),
+                Ok(other) => break Ok(other),
+            }
+        };
+        self.store.top_mut().loops.pop();
+        result
+    }
+
+    /// `[targets =] items ;`
+    pub fn exec_instr(&mut self, ins: &Instr) -> Result<()> {
+        self.echo(ins);
+        self.called_proc = false;
+        let mut vals = self.eval_items(&ins.items).map_err(|e| e.with_span_if_missing(ins.span, &self.source))?;
+        if ins.targets.is_empty() {
+            return Ok(());
+        }
+        if self.called_proc && vals.len() > ins.targets.len() {
+            vals.truncate(ins.targets.len());
+        }
+        if vals.len() != ins.targets.len() {
+            let msg = if vals.len() > ins.targets.len() {
+                format!(
+                    "{} results for {} name(s): a result is left over (error 11)",
+                    vals.len(),
+                    ins.targets.len()
+                )
+            } else {
+                format!("{} result(s) for {} names", vals.len(), ins.targets.len())
+            };
+            let types: Vec<String> = vals.iter().map(|v| v.type_name()).collect();
+            let mut e = Error::runtime(msg).at(ins.span).with_span_if_missing(ins.span, &self.source);
+            if !types.is_empty() {
+                e = e.note(format!("results: {}", types.join(" ")));
+            }
+            return Err(e);
+        }
+        for (t, v) in ins.targets.iter().zip(vals) {
+            self.assign(t, v).map_err(|e| e.with_span_if_missing(t.span, &self.source))?;
+        }
+        Ok(())
+    }
+
+    fn assign(&mut self, t: &Target, v: Value) -> Result<()> {
+        if let Some(ty) = &t.typed {
+            let want = Ty::from_name(ty).ok_or_else(|| Error::runtime(format!("unknown type {}", ty)))?;
+            let ok = v.ty() == want || (want == Ty::Flottant && v.ty() == Ty::Entier);
+            if !ok {
+                return Err(Error::runtime(format!("{} is declared {} but receives a {}", t.name, ty, v.type_name())));
+            }
+        }
+        if t.keys.is_empty() {
+            self.store.set(&t.name, v);
+            return Ok(());
+        }
+        // T . k1 . k2 = v : walk to the last table, then set in place.
+        let mut cur = self
+            .store
+            .get(&t.name)
+            .cloned()
+            .ok_or_else(|| Error::runtime(format!("{} is not a TABLE (it does not exist)", t.name)))?;
+        let n = t.keys.len();
+        for (i, kit) in t.keys.iter().enumerate() {
+            let key = self.key_value(kit)?;
+            let table = match &cur {
+                Value::Table(tb) => tb.clone(),
+                other => {
+                    return Err(Error::runtime(format!("'.' indexes a TABLE, not a {}", other.type_name())).at(kit.span))
+                }
+            };
+            if i + 1 == n {
+                table.borrow_mut().set(Key::from_value(&key), v);
+                return Ok(());
+            }
+            cur = super::machine::index(&cur, &key).map_err(|e| e.at(kit.span))?;
+        }
+        Ok(())
+    }
+}

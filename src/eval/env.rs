@@ -1,0 +1,79 @@
+//! The object store: one frame per procedure call. A procedure body reads
+//! every object that existed before the call but assigns only into its own
+//! frame (language.md §6.3), so lookups walk down the frames and
+//! assignments stay on top.
+
+use crate::syntax::structure_name as truncate;
+use crate::value::Value;
+use std::collections::HashMap;
+
+use super::machine::GroupState;
+
+#[derive(Debug, Default)]
+pub struct Frame {
+    pub vars: HashMap<String, Value>,
+    /// Procedure name, None for the global frame.
+    pub proc_name: Option<String>,
+    /// The caller's unread arguments, for ARGU.
+    pub pending: GroupState,
+    /// Results appended by RESPRO.
+    pub results: Vec<Value>,
+    /// Active loops of this frame: (name, pass number).
+    pub loops: Vec<(String, i64)>,
+}
+
+#[derive(Debug)]
+pub struct Store {
+    pub frames: Vec<Frame>,
+}
+
+impl Default for Store {
+    fn default() -> Self {
+        Store { frames: vec![Frame::default()] }
+    }
+}
+
+impl Store {
+    pub fn get(&self, name: &str) -> Option<&Value> {
+        let name = truncate(name);
+        // `!name` is never filled in from the caller (debp.notice).
+        if name.starts_with('!') {
+            return self.top().vars.get(&name);
+        }
+        self.frames.iter().rev().find_map(|f| f.vars.get(&name))
+    }
+
+    pub fn set(&mut self, name: &str, v: Value) {
+        let name = truncate(name);
+        self.top_mut().vars.insert(name, v);
+    }
+
+    /// Forget a name in the current frame (OUBL).
+    pub fn remove(&mut self, name: &str) -> Option<Value> {
+        self.top_mut().vars.remove(&truncate(name))
+    }
+
+    pub fn top(&self) -> &Frame {
+        self.frames.last().expect("the global frame always exists")
+    }
+
+    pub fn top_mut(&mut self) -> &mut Frame {
+        self.frames.last_mut().expect("the global frame always exists")
+    }
+
+    pub fn counter(&self, name: &str) -> Option<i64> {
+        let name = truncate(name);
+        self.top().loops.iter().rev().find(|(n, _)| *n == name).map(|(_, i)| *i)
+    }
+
+    /// Names visible from the current frame, sorted, with their values.
+    pub fn visible(&self) -> Vec<(String, Value)> {
+        let mut m: std::collections::BTreeMap<String, Value> = Default::default();
+        for f in &self.frames {
+            for (k, v) in &f.vars {
+                m.insert(k.clone(), v.clone());
+            }
+        }
+        m.into_iter().collect()
+    }
+}

@@ -1,0 +1,230 @@
+//! The stack machine that runs one parenthesised group (language.md §2).
+//!
+//! Items become tokens first: nested groups are evaluated innermost first,
+//! left to right, names are resolved (object, else word), and table
+//! indexing `T . k` is applied. Then tokens are read left to right: values
+//! are pushed, operators run and read their arguments by type among the
+//! pushed values and further right, and their results are pushed back.
+
+use super::Interp;
+use crate::error::{Error, Result};
+use crate::ops::{Args, OpSpec};
+use crate::source::Span;
+use crate::syntax::ast::{Item, ItemKind};
+use crate::value::{Key, Value};
+use std::collections::VecDeque;
+use std::rc::Rc;
+
+#[derive(Debug, Clone)]
+pub enum TokKind {
+    /// A value: literal number, object, group result, loop counter.
+    Val(Value),
+    /// Quoted text: a MOT, unless it names an operator in operator position.
+    Quoted(Rc<str>),
+    /// An unquoted word that names no object: an operator, else a MOT.
+    Word(String),
+    /// `+ - * / ** < > <EG >EG %`.
+    Sym(&'static str),
+}
+
+#[derive(Debug, Clone)]
+pub struct Tok {
+    pub kind: TokKind,
+    pub span: Span,
+    /// The name the token was written as, when it named an object
+    /// (OUBL, LIST and error notes need it).
+    pub name: Option<String>,
+}
+
+/// Operands already pushed (left) and tokens not yet read (right).
+#[derive(Debug, Default)]
+pub struct GroupState {
+    pub left: Vec<Value>,
+    pub right: VecDeque<Tok>,
+}
+
+/// A quoted text can act as an operator only if it looks like a word.
+fn wordlike(s: &str) -> bool {
+    !s.is_empty() && !s.contains(char::is_whitespace)
+}
+
+impl Interp {
+    /// Evaluate a group of items to its results (a POINT if exactly two or
+    /// three numbers remain).
+    pub fn eval_items(&mut self, items: &[Item]) -> Result<Vec<Value>> {
+        let toks = self.tokens(items)?;
+        let span = items.iter().map(|i| i.span).reduce(Span::join).unwrap_or_default();
+        let (mut vals, ran_operator) = self.run_tokens(toks)?;
+        // Numbers left over become a POINT only when they were written as
+        // operands: `x y = coor p` keeps the two results of COOR.
+        if !ran_operator && (vals.len() == 2 || vals.len() == 3) && vals.iter().all(Value::is_number) {
+            vals = vec![self.make_point(&vals).map_err(|e| e.with_span_if_missing(span, &self.source))?];
+        }
+        Ok(vals)
+    }
+
+    fn make_point(&mut self, nums: &[Value]) -> Result<Value> {
+        let dim = self.opts.dime;
+        if dim == 0 {
+            return Err(Error::runtime(
+                "two or three numbers make a POINT, which needs OPTI DIME first (error 14)",
+            ));
+        }
+        let f: Vec<f64> = nums.iter().filter_map(Value::as_f64).collect();
+        if f.len() < dim {
+            return Err(Error::runtime(format!(
+                "a POINT in dimension {} needs {} coordinates, found {}",
+                dim,
+                dim,
+                f.len()
+            )));
+        }
+        let mut x = [0.0; 3];
+        x[..dim].copy_from_slice(&f[..dim]);
+        let dens = if f.len() > dim { f[dim] } else { self.opts.dens };
+        Ok(Value::Point(self.nodes.push(x, dens)))
+    }
+
+    /// Evaluate items without the POINT rule (FINPROC and RESPRO results).
+    pub fn eval_items_raw(&mut self, items: &[Item]) -> Result<Vec<Value>> {
+        let toks = self.tokens(items)?;
+        Ok(self.run_tokens(toks)?.0)
+    }
+
+    /// Items -> tokens, resolving names, groups and table indexing.
+    fn tokens(&mut self, items: &[Item]) -> Result<Vec<Tok>> {
+        let mut out: Vec<Tok> = Vec::with_capacity(items.len());
+        let mut i = 0;
+        while i < items.len() {
+            let it = &items[i];
+            let span = it.span;
+            match &it.kind {
+                ItemKind::Dot => {
+                    let key_item = items
+                        .get(i + 1)
+                        .ok_or_else(|| Error::runtime("'.' must be followed by a table key").at(span))?;
+                    let table = match out.pop() {
+                        Some(Tok { kind: TokKind::Val(v), span: s, .. }) => (v, s),
+                        _ => return Err(Error::runtime("'.' must follow a TABLE").at(span)),
+                    };
+                    let key = self.key_value(key_item)?;
+                    let v = index(&table.0, &key).map_err(|e| e.at(table.1.join(key_item.span)))?;
+                    out.push(Tok { kind: TokKind::Val(v), span: table.1.join(key_item.span), name: None });
+                    i += 2;
+                    continue;
+                }
+                ItemKind::Group(g) => {
+                    for v in self.eval_items(g)? {
+                        out.push(Tok { kind: TokKind::Val(v), span, name: None });
+                    }
+                }
+                kind => {
+                    let name = match kind {
+                        ItemKind::Word(w) => Some(w.clone()),
+                        _ => None,
+                    };
+                    let kind = self.resolve(kind, span)?;
+                    out.push(Tok { kind, span, name });
+                }
+            }
+            i += 1;
+        }
+        Ok(out)
+    }
+
+    fn resolve(&self, kind: &ItemKind, span: Span) -> Result<TokKind> {
+        Ok(match kind {
+            ItemKind::Int(n) => TokKind::Val(Value::Int(*n)),
+            ItemKind::Float(f) => TokKind::Val(Value::Float(*f)),
+            ItemKind::Str(s) => TokKind::Quoted(Rc::from(s.as_str())),
+            ItemKind::Word(w) => match self.store.get(w) {
+                Some(v) => TokKind::Val(v.clone()),
+                None if w == "VRAI" => TokKind::Val(Value::Bool(true)),
+                None if w == "FAUX" => TokKind::Val(Value::Bool(false)),
+                None => TokKind::Word(w.clone()),
+            },
+            ItemKind::Counter(n) => match self.store.counter(n) {
+                Some(c) => TokKind::Val(Value::Int(c)),
+                None => {
+                    return Err(Error::runtime(format!("&{}: no REPETER {} is running", n, n)).at(span));
+                }
+            },
+            ItemKind::Sym(s) => TokKind::Sym(s),
+            ItemKind::Dot | ItemKind::Group(_) => unreachable!("handled by tokens()"),
+        })
+    }
+
+    /// The value of a table key item: a name gives its object, else the word.
+    pub fn key_value(&mut self, it: &Item) -> Result<Value> {
+        match &it.kind {
+            ItemKind::Word(w) => Ok(self.store.get(w).cloned().unwrap_or_else(|| Value::mot(w))),
+            ItemKind::Str(s) => Ok(Value::mot(s)),
+            ItemKind::Group(g) => {
+                let mut v = self.eval_items(g)?;
+                if v.len() != 1 {
+                    return Err(Error::runtime("a table key must be one value").at(it.span));
+                }
+                Ok(v.remove(0))
+            }
+            k => match self.resolve(k, it.span)? {
+                TokKind::Val(v) => Ok(v),
+                _ => Err(Error::runtime("this is not a table key").at(it.span)),
+            },
+        }
+    }
+
+    /// Read tokens left to right, running operators as they come.
+    pub fn run_tokens(&mut self, toks: Vec<Tok>) -> Result<(Vec<Value>, bool)> {
+        let mut st = GroupState { left: Vec::new(), right: toks.into() };
+        let mut ran = false;
+        while let Some(t) = st.right.pop_front() {
+            ran |= !matches!(t.kind, TokKind::Val(ref v) if !matches!(v, Value::Proc(_)));
+            match t.kind {
+                TokKind::Val(Value::Proc(p)) => {
+                    let r = self.call_proc(p, &mut st, t.span)?;
+                    self.called_proc = true;
+                    st.left.extend(r);
+                }
+                TokKind::Val(v) => st.left.push(v),
+                TokKind::Quoted(s) => match self.registry.find(&s).filter(|_| wordlike(&s)) {
+                    Some(op) => self.invoke(op, &mut st, t.span)?,
+                    None => st.left.push(Value::Mot(s)),
+                },
+                TokKind::Word(w) => match self.registry.find(&w) {
+                    Some(op) => self.invoke(op, &mut st, t.span)?,
+                    None => st.left.push(Value::mot(&w)),
+                },
+                TokKind::Sym(s) => match self.registry.find(s) {
+                    Some(op) => self.invoke(op, &mut st, t.span)?,
+                    None => return Err(Error::runtime(format!("'{}' is not an operator here", s)).at(t.span)),
+                },
+            }
+        }
+        Ok((st.left, ran))
+    }
+
+    /// Run one operator: it reads its arguments through `Args`, and its
+    /// results are pushed back for the next operator (chaining).
+    pub fn invoke(&mut self, op: Rc<OpSpec>, st: &mut GroupState, span: Span) -> Result<()> {
+        let registry = self.registry.clone();
+        let start = std::time::Instant::now();
+        let res = {
+            let mut args = Args::new(&op, st, &registry, span);
+            op.call(self, &mut args)
+        };
+        self.timers.record(op.name, start.elapsed());
+        let res = res.map_err(|e| e.with_span_if_missing(span, &self.source))?;
+        st.left.extend(res);
+        Ok(())
+    }
+}
+
+/// `T . k`: the entry of a table (or of an object that acts like one).
+pub fn index(v: &Value, key: &Value) -> Result<Value> {
+    match v {
+        Value::Table(t) => t.borrow().get(&Key::from_value(key)).cloned().ok_or_else(|| {
+            Error::runtime(format!("the TABLE has no entry {}", crate::value::list_value_short(key)))
+        }),
+        other => Err(Error::runtime(format!("'.' indexes a TABLE, not a {}", other.type_name()))),
+    }
+}

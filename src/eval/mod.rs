@@ -1,0 +1,96 @@
+//! The evaluator: runs a [`Program`] statement by statement on the stack
+//! machine of [`machine`], with the object store of [`env`].
+
+mod control;
+pub mod env;
+pub mod machine;
+mod options;
+mod proc;
+
+pub use options::{FilePolicy, Options, Timers};
+
+use crate::error::{Error, ErrorKind, Result};
+use crate::fem::mesh::Nodes;
+use crate::ops::Registry;
+use crate::source::Source;
+use crate::syntax::ast::Program;
+use env::Store;
+use std::io::Write;
+use std::rc::Rc;
+
+/// Everything one run of Gibiane needs: the frozen operator table, the
+/// objects, the node table, the options and the output sink.
+pub struct Interp {
+    pub registry: Rc<Registry>,
+    pub store: Store,
+    pub nodes: Nodes,
+    pub opts: Options,
+    pub out: Box<dyn Write>,
+    /// The source being run (for error locations).
+    pub source: Rc<Source>,
+    pub files: FilePolicy,
+    pub timers: Timers,
+    pub title: String,
+    /// Set by `FIN ;`: the run is over.
+    pub finished: bool,
+    /// Whether the instruction being run called a procedure: a procedure
+    /// may return more results than the caller names, and the extra ones
+    /// are dropped (01_language: `z3 = carre 2. 2 ;`).
+    pub called_proc: bool,
+}
+
+/// How a statement ended.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Flow {
+    Next,
+    Quit(String),
+    Iter(String),
+    End,
+}
+
+impl Interp {
+    pub fn new(registry: Rc<Registry>, out: Box<dyn Write>) -> Self {
+        Interp {
+            registry,
+            store: Store::default(),
+            nodes: Nodes::default(),
+            opts: Options::default(),
+            out,
+            source: Source::new("<none>", ""),
+            files: FilePolicy::Nothing,
+            timers: Timers::default(),
+            title: String::new(),
+            finished: false,
+            called_proc: false,
+        }
+    }
+
+    /// Write one line to the output sink. Output errors are ignored: a
+    /// closed pipe must not turn into a Gibiane error.
+    pub fn println(&mut self, s: &str) {
+        let _ = writeln!(self.out, "{}", s);
+    }
+
+    /// Run a parsed program from `source`. Returns Ok(true) when `FIN ;`
+    /// ended it.
+    pub fn run_program(&mut self, prog: &Program, source: Rc<Source>) -> Result<bool> {
+        let saved = std::mem::replace(&mut self.source, source);
+        let r = self.exec_block(&prog.stmts);
+        self.source = saved;
+        let _ = self.out.flush();
+        let r = match r {
+            Err(e) if e.kind == ErrorKind::Finished => Ok(Flow::End),
+            r => r,
+        };
+        match r? {
+            Flow::End => {
+                self.finished = true;
+                Ok(true)
+            }
+            Flow::Next => Ok(false),
+            Flow::Quit(n) | Flow::Iter(n) => {
+                Err(Error::new(ErrorKind::Runtime, format!("QUITTER/ITERER {}: no such block is running", n)))
+            }
+        }
+    }
+}

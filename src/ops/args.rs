@@ -1,0 +1,329 @@
+//! `Args`: how an operator reads its arguments, and the only place where
+//! argument and arity errors are worded.
+//!
+//! Cast3M's rule (language.md §2): an operator looks for an argument of the
+//! type it wants among the operands already pushed in the instruction
+//! (oldest first), then at the next token on its right. Keywords are read
+//! as words on the right, whatever they would otherwise mean
+//! (`BLOQ 'MINI' …` reads MINI as a word even though MINI is an operator).
+
+use super::{OpSpec, Registry};
+use crate::error::{Error, Result};
+use crate::eval::machine::{GroupState, TokKind};
+use crate::fem::mesh::Mesh;
+use crate::source::Span;
+use crate::value::{Chpoint, Evolution, Mchaml, Model, Rigidite, Table, Value};
+use std::cell::RefCell;
+use std::rc::Rc;
+
+/// A node used as a POINT argument.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PointId(pub usize);
+
+/// A Rust type an argument can be read as.
+pub trait FromArg: Sized {
+    /// The Gibiane type name(s), for messages.
+    const EXPECT: &'static str;
+    fn from_value(v: &Value) -> Option<Self>;
+}
+
+macro_rules! from_arg {
+    ($t:ty, $name:expr, $pat:pat => $e:expr) => {
+        impl FromArg for $t {
+            const EXPECT: &'static str = $name;
+            fn from_value(v: &Value) -> Option<Self> {
+                match v {
+                    $pat => Some($e),
+                    _ => None,
+                }
+            }
+        }
+    };
+}
+
+from_arg!(f64, "FLOTTANT", Value::Float(f) => *f);
+from_arg!(i64, "ENTIER", Value::Int(i) => *i);
+from_arg!(bool, "LOGIQUE", Value::Bool(b) => *b);
+from_arg!(String, "MOT", Value::Mot(s) => s.to_string());
+from_arg!(PointId, "POINT", Value::Point(p) => PointId(*p));
+from_arg!(Rc<Vec<f64>>, "LISTREEL", Value::ListReel(l) => l.clone());
+from_arg!(Rc<Vec<i64>>, "LISTENTI", Value::ListEnti(l) => l.clone());
+from_arg!(Rc<Vec<String>>, "LISTMOTS", Value::ListMots(l) => l.clone());
+from_arg!(Rc<RefCell<Table>>, "TABLE", Value::Table(t) => t.clone());
+from_arg!(Rc<Mesh>, "MAILLAGE", Value::Mesh(m) => m.clone());
+from_arg!(Rc<Chpoint>, "CHPOINT", Value::Chpo(c) => c.clone());
+from_arg!(Rc<Rigidite>, "RIGIDITE", Value::Rigi(r) => r.clone());
+from_arg!(Rc<Model>, "MMODEL", Value::Model(m) => m.clone());
+from_arg!(Rc<Mchaml>, "MCHAML", Value::Mchaml(m) => m.clone());
+from_arg!(Rc<Evolution>, "EVOLUTIO", Value::Evol(e) => e.clone());
+
+/// A FLOTTANT argument also accepts an ENTIER (lirabj.eso).
+#[derive(Debug, Clone, Copy)]
+pub struct Num(pub f64);
+from_arg!(Num, "FLOTTANT", Value::Float(f) => Num(*f));
+impl Num {
+    fn accept(v: &Value) -> Option<Num> {
+        v.as_f64().map(Num)
+    }
+}
+
+impl FromArg for Value {
+    const EXPECT: &'static str = "an object";
+    fn from_value(v: &Value) -> Option<Self> {
+        Some(v.clone())
+    }
+}
+
+pub struct Args<'a> {
+    pub op: &'a OpSpec,
+    st: &'a mut GroupState,
+    registry: &'a Registry,
+    pub span: Span,
+}
+
+/// Compare keywords on their first 4 letters (`'MINIMUM'` = `'MINI'`).
+pub fn keyword_matches(word: &str, choice: &str) -> bool {
+    let k = |s: &str| s.chars().take(4).collect::<String>();
+    k(word) == k(choice)
+}
+
+impl<'a> Args<'a> {
+    pub fn new(op: &'a OpSpec, st: &'a mut GroupState, registry: &'a Registry, span: Span) -> Self {
+        Args { op, st, registry, span }
+    }
+
+    // ---- errors: every wording lives here -------------------------------
+
+    /// `OP: message` with the operator's usage as a note.
+    pub fn err(&self, msg: impl std::fmt::Display) -> Error {
+        Error::runtime(format!("{}: {}", self.op.name, msg)).note(format!("usage: {}", self.op.signature))
+    }
+
+    /// A required argument is missing: says what was found instead.
+    pub fn missing(&self, what: &str) -> Error {
+        self.err(format!("expected {}, found {}", what, self.describe_next()))
+    }
+
+    /// What the next unread token is, in words.
+    pub fn describe_next(&self) -> String {
+        match self.st.right.front().map(|t| &t.kind) {
+            None => "nothing".into(),
+            Some(TokKind::Val(v)) => format!("{} {}", article(&v.type_name()), v.type_name()),
+            Some(TokKind::Quoted(s)) => format!("the word '{}'", s),
+            Some(TokKind::Word(w)) if self.registry.find(w).is_some() => format!("the operator {}", w),
+            Some(TokKind::Word(w)) => format!("the word {}", w),
+            Some(TokKind::Sym(s)) => format!("'{}'", s),
+        }
+    }
+
+    // ---- reading by type ------------------------------------------------
+
+    /// The next right token as a value, if it is one (operators and
+    /// symbols are not values).
+    fn right_value(&self) -> Option<Value> {
+        match self.st.right.front().map(|t| &t.kind)? {
+            TokKind::Val(Value::Proc(_)) => None,
+            TokKind::Val(v) => Some(v.clone()),
+            TokKind::Quoted(s) => Some(Value::Mot(s.clone())),
+            TokKind::Word(w) if self.registry.find(w).is_none() => Some(Value::mot(w)),
+            _ => None,
+        }
+    }
+
+    fn take_with<T>(&mut self, conv: impl Fn(&Value) -> Option<T>) -> Option<T> {
+        if let Some(i) = self.st.left.iter().position(|v| conv(v).is_some()) {
+            return conv(&self.st.left.remove(i));
+        }
+        self.take_right_with(conv)
+    }
+
+    fn take_right_with<T>(&mut self, conv: impl Fn(&Value) -> Option<T>) -> Option<T> {
+        let t = conv(&self.right_value()?)?;
+        self.st.right.pop_front();
+        Some(t)
+    }
+
+    /// An optional argument of type T: pushed operands first, then right.
+    pub fn opt<T: FromArg>(&mut self) -> Option<T> {
+        self.take_with(T::from_value)
+    }
+
+    /// A required argument of type T.
+    pub fn req<T: FromArg>(&mut self) -> Result<T> {
+        match self.opt::<T>() {
+            Some(t) => Ok(t),
+            None => Err(self.missing(T::EXPECT)),
+        }
+    }
+
+    /// Only from the right (for arguments that must follow the operator).
+    pub fn opt_right<T: FromArg>(&mut self) -> Option<T> {
+        self.take_right_with(T::from_value)
+    }
+
+    /// A number (ENTIER or FLOTTANT) as f64.
+    pub fn opt_num(&mut self) -> Option<f64> {
+        self.take_with(Num::accept).map(|n| n.0)
+    }
+    pub fn req_num(&mut self) -> Result<f64> {
+        self.opt_num().ok_or_else(|| self.missing("FLOTTANT"))
+    }
+    pub fn opt_num_right(&mut self) -> Option<f64> {
+        self.take_right_with(Num::accept).map(|n| n.0)
+    }
+
+    /// The most recently pushed operand, if it has type T (binary
+    /// operators take their left operand this way: `1 + 2 * 3` is 9).
+    pub fn left_top<T: FromArg>(&mut self) -> Option<T> {
+        let t = T::from_value(self.st.left.last()?)?;
+        self.st.left.pop();
+        Some(t)
+    }
+
+    /// Left operand of an infix operator: the newest pushed value.
+    pub fn left_value(&mut self) -> Option<Value> {
+        self.st.left.pop()
+    }
+
+    /// The next right value, whatever its type.
+    pub fn right_any(&mut self) -> Option<Value> {
+        let v = self.right_value()?;
+        self.st.right.pop_front();
+        Some(v)
+    }
+
+    /// Peek at the next right value without consuming it.
+    pub fn peek_right(&self) -> Option<Value> {
+        self.right_value()
+    }
+
+    /// Every remaining value on the right, up to the next operator.
+    pub fn rest(&mut self) -> Vec<Value> {
+        let mut out = Vec::new();
+        while let Some(v) = self.right_any() {
+            out.push(v);
+        }
+        out
+    }
+
+    /// Number of operands pushed on the left (not yet consumed).
+    pub fn left_len(&self) -> usize {
+        self.st.left.len()
+    }
+
+    // ---- words ---------------------------------------------------------
+
+    /// The raw next right token as a word: quoted text, any unquoted word
+    /// (operator names included), a MOT object, or a symbol (`RELA` reads
+    /// `+`/`-` this way).
+    fn right_word(&self) -> Option<String> {
+        match self.st.right.front().map(|t| &t.kind)? {
+            TokKind::Quoted(s) => Some(s.to_string()),
+            TokKind::Word(w) => Some(w.clone()),
+            TokKind::Val(Value::Mot(s)) => Some(s.to_string()),
+            TokKind::Sym(s) => Some(s.to_string()),
+            _ => None,
+        }
+    }
+
+    /// If the next right token is one of `choices` (4-letter match),
+    /// consume it and return the choice as written in the table.
+    pub fn keyword(&mut self, choices: &[&'static str]) -> Option<&'static str> {
+        let w = self.right_word()?;
+        let c = choices.iter().find(|c| keyword_matches(&w, c))?;
+        self.st.right.pop_front();
+        Some(c)
+    }
+
+    /// Like [`keyword`](Self::keyword) but the word must be there.
+    pub fn req_keyword(&mut self, choices: &[&'static str]) -> Result<&'static str> {
+        self.keyword(choices).ok_or_else(|| self.missing(&format!("one of {}", choices.join(" "))))
+    }
+
+    /// Any word on the right (not a symbol), consumed.
+    pub fn word(&mut self) -> Option<String> {
+        match self.st.right.front().map(|t| &t.kind)? {
+            TokKind::Sym(_) => None,
+            _ => {
+                let w = self.right_word()?;
+                self.st.right.pop_front();
+                Some(w)
+            }
+        }
+    }
+
+    /// A symbol or word `+`/`-` on the right (RELA's signs).
+    pub fn sign(&mut self) -> Option<f64> {
+        match self.right_word()?.as_str() {
+            "+" => {
+                self.st.right.pop_front();
+                Some(1.0)
+            }
+            "-" => {
+                self.st.right.pop_front();
+                Some(-1.0)
+            }
+            _ => None,
+        }
+    }
+
+    /// A MOT among the pushed operands (for operators written after their
+    /// operands), else on the right.
+    pub fn opt_mot(&mut self) -> Option<String> {
+        self.opt::<String>()
+    }
+}
+
+fn article(ty: &str) -> &'static str {
+    if ty.starts_with(['E', 'A', 'I', 'O', 'U']) {
+        "an"
+    } else {
+        "a"
+    }
+}
+
+impl Args<'_> {
+    /// A `*` on the right (the `n*value` repeat of PROG, LECT, MOTS).
+    pub fn sign_like_star(&mut self) -> bool {
+        if matches!(self.st.right.front().map(|t| &t.kind), Some(TokKind::Sym("*"))) {
+            self.st.right.pop_front();
+            true
+        } else {
+            false
+        }
+    }
+
+    /// A word on the right that is not an unquoted operator name.
+    pub fn word_not_operator(&mut self) -> Option<String> {
+        match self.st.right.front().map(|t| &t.kind)? {
+            TokKind::Word(w) if self.registry.find(w).is_some() => None,
+            TokKind::Sym(_) => None,
+            _ => self.word(),
+        }
+    }
+
+    /// If the next right token is a name that is bound to nothing (an
+    /// unassigned word), consume it and return it (EXIS, OUBL).
+    pub fn unbound_word(&mut self) -> Option<String> {
+        match self.st.right.front().map(|t| &t.kind)? {
+            TokKind::Word(w) => {
+                let w = w.clone();
+                self.st.right.pop_front();
+                Some(w)
+            }
+            _ => None,
+        }
+    }
+
+    /// The source name of the next right token, when it was a name.
+    pub fn next_name(&self) -> Option<String> {
+        self.st.right.front().and_then(|t| t.name.clone())
+    }
+}
+
+impl Args<'_> {
+    /// Consume every remaining token of the instruction (COMM).
+    pub fn drain(&mut self) {
+        self.st.right.clear();
+    }
+}

