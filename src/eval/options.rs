@@ -61,13 +61,23 @@ impl FilePolicy {
                 path
             ))),
             FilePolicy::Under(root) => {
-                let full = if p.is_absolute() { p.to_path_buf() } else { root.join(p) };
-                let ok = !p.components().any(|c| matches!(c, std::path::Component::ParentDir))
+                let full = if p.is_absolute() {
+                    p.to_path_buf()
+                } else {
+                    root.join(p)
+                };
+                let ok = !p
+                    .components()
+                    .any(|c| matches!(c, std::path::Component::ParentDir))
                     && full.starts_with(root);
                 if ok {
                     Ok(full)
                 } else {
-                    Err(Error::io(format!("'{}' is outside the directory this run may use ({})", path, root.display())))
+                    Err(Error::io(format!(
+                        "'{}' is outside the directory this run may use ({})",
+                        path,
+                        root.display()
+                    )))
                 }
             }
         }

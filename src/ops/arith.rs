@@ -71,7 +71,8 @@ fn int_op(a: &Args, op: Bin, x: i64, y: i64) -> Result<Value> {
             u32::try_from(y).ok().and_then(|e| x.checked_pow(e))
         }
     };
-    Ok(r.map(Value::Int).unwrap_or_else(|| Value::Float(float_op(op, x as f64, y as f64))))
+    Ok(r.map(Value::Int)
+        .unwrap_or_else(|| Value::Float(float_op(op, x as f64, y as f64))))
 }
 
 fn binary(it: &mut Interp, a: &mut Args, op: Bin) -> Result<Vec<Value>> {
@@ -83,14 +84,25 @@ pub(crate) fn apply(it: &mut Interp, a: &Args, op: Bin, x: Value, y: Value) -> R
     use Value::*;
     Ok(match (&x, &y) {
         (Int(i), Int(j)) => int_op(a, op, *i, *j)?,
-        (Int(_) | Float(_), Int(_) | Float(_)) => {
-            Float(float_op(op, x.as_f64().unwrap_or(0.0), y.as_f64().unwrap_or(0.0)))
-        }
+        (Int(_) | Float(_), Int(_) | Float(_)) => Float(float_op(
+            op,
+            x.as_f64().unwrap_or(0.0),
+            y.as_f64().unwrap_or(0.0),
+        )),
         (ListReel(l), ListReel(m)) => {
             if l.len() != m.len() {
-                return Err(a.err(format!("lists of different lengths ({} and {})", l.len(), m.len())));
+                return Err(a.err(format!(
+                    "lists of different lengths ({} and {})",
+                    l.len(),
+                    m.len()
+                )));
             }
-            ListReel(Rc::new(l.iter().zip(m.iter()).map(|(p, q)| float_op(op, *p, *q)).collect()))
+            ListReel(Rc::new(
+                l.iter()
+                    .zip(m.iter())
+                    .map(|(p, q)| float_op(op, *p, *q))
+                    .collect(),
+            ))
         }
         (ListReel(l), Int(_) | Float(_)) => {
             let s = y.as_f64().unwrap_or(0.0);
@@ -171,7 +183,11 @@ fn compare(a: &mut Args, f: fn(f64, f64) -> bool) -> Result<Vec<Value>> {
     let (x, y) = operands(a)?;
     match (x.as_f64(), y.as_f64()) {
         (Some(p), Some(q)) => Ok(vec![Value::Bool(f(p, q))]),
-        _ => Err(a.err(format!("compares numbers, found {} and {}", x.type_name(), y.type_name()))),
+        _ => Err(a.err(format!(
+            "compares numbers, found {} and {}",
+            x.type_name(),
+            y.type_name()
+        ))),
     }
 }
 fn lt(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
@@ -190,7 +206,11 @@ fn ge(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 /// EGA/NEG equality, with an optional absolute tolerance for numbers.
 fn equal(it: &Interp, a: &mut Args) -> Result<bool> {
     let (x, y) = operands(a)?;
-    let tol = if x.is_number() { a.opt_num_right().unwrap_or(0.0) } else { 0.0 };
+    let tol = if x.is_number() {
+        a.opt_num_right().unwrap_or(0.0)
+    } else {
+        0.0
+    };
     use Value::*;
     Ok(match (&x, &y) {
         (Int(i), Int(j)) => i == j,
@@ -204,7 +224,11 @@ fn equal(it: &Interp, a: &mut Args) -> Result<bool> {
         (ListReel(l), ListReel(m)) => l == m,
         (ListMots(l), ListMots(m)) => l == m,
         _ => {
-            return Err(a.err(format!("cannot compare {} with {}", x.type_name(), y.type_name())));
+            return Err(a.err(format!(
+                "cannot compare {} with {}",
+                x.type_name(),
+                y.type_name()
+            )));
         }
     })
 }
@@ -219,7 +243,11 @@ fn ou(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let (x, y) = operands(a)?;
     match (x, y) {
         (Value::Bool(p), Value::Bool(q)) => Ok(vec![Value::Bool(p || q)]),
-        (x, y) => Err(a.err(format!("needs two LOGIQUE, found {} and {}", x.type_name(), y.type_name()))),
+        (x, y) => Err(a.err(format!(
+            "needs two LOGIQUE, found {} and {}",
+            x.type_name(),
+            y.type_name()
+        ))),
     }
 }
 

@@ -18,8 +18,9 @@ pub(crate) const OPS: &[OpDef] = &[
 ];
 
 const OPTI_KEYS: &[&str] = &[
-    "DIME", "ELEM", "MODE", "ECHO", "DENS", "ERRE", "TRAC", "NORM", "IMPI", "RESO", "EPSI", "SORT", "LOCA", "SAUV",
-    "REST", "DONN", "LECT", "IMPR", "VERI", "PARA", "ACQU", "POTR", "CALC", "INCO", "COUL", "DEBU", "FTRA",
+    "DIME", "ELEM", "MODE", "ECHO", "DENS", "ERRE", "TRAC", "NORM", "IMPI", "RESO", "EPSI", "SORT",
+    "LOCA", "SAUV", "REST", "DONN", "LECT", "IMPR", "VERI", "PARA", "ACQU", "POTR", "CALC", "INCO",
+    "COUL", "DEBU", "FTRA",
 ];
 
 fn opti(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
@@ -33,14 +34,23 @@ fn opti(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                     return Err(a.err(format!("DIME must be 1, 2 or 3, found {}", d)));
                 }
                 it.opts.dime = d as usize;
-                it.opts.mode = if d == 3 { "TRID".into() } else if d == 2 { "PLAN CONT".into() } else { "UNID".into() };
+                it.opts.mode = if d == 3 {
+                    "TRID".into()
+                } else if d == 2 {
+                    "PLAN CONT".into()
+                } else {
+                    "UNID".into()
+                };
             }
             "ELEM" => {
                 let e = a.word().ok_or_else(|| a.missing("an element type"))?;
                 it.opts.elem = e.to_uppercase();
             }
             "MODE" => {
-                let m = a.word().ok_or_else(|| a.missing("an analysis mode"))?.to_uppercase();
+                let m = a
+                    .word()
+                    .ok_or_else(|| a.missing("an analysis mode"))?
+                    .to_uppercase();
                 let mode = if m.starts_with("PLAN") {
                     let sub = a.req_keyword(&["CONT", "DEFO", "GENE"])?;
                     format!("PLAN {}", sub)
@@ -53,8 +63,17 @@ fn opti(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             }
             "ECHO" => it.opts.echo = a.req::<i64>()?,
             "DENS" => it.opts.dens = a.req_num()?,
-            "ERRE" => it.opts.erre = a.word().ok_or_else(|| a.missing("NORMAL, FATAL, CONTROLE or IGNORE"))?,
-            "RESO" => it.opts.reso = a.word().ok_or_else(|| a.missing("DIRECTE or ITERATIVE"))?.to_uppercase(),
+            "ERRE" => {
+                it.opts.erre = a
+                    .word()
+                    .ok_or_else(|| a.missing("NORMAL, FATAL, CONTROLE or IGNORE"))?
+            }
+            "RESO" => {
+                it.opts.reso = a
+                    .word()
+                    .ok_or_else(|| a.missing("DIRECTE or ITERATIVE"))?
+                    .to_uppercase()
+            }
             other => {
                 // Accepted for compatibility (graphics device, scaling,
                 // debug level, …): keep the value for VALE.
@@ -76,7 +95,9 @@ fn opti(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 fn vale(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let k = a.req_keyword(&["PREC", "DIME", "MODE", "ELEM", "DENS", "ECHO", "RESO", "ERRE"])?;
+    let k = a.req_keyword(&[
+        "PREC", "DIME", "MODE", "ELEM", "DENS", "ECHO", "RESO", "ERRE",
+    ])?;
     Ok(vec![match k {
         "PREC" => Value::Float(f64::EPSILON),
         "DIME" => Value::Int(it.opts.dime as i64),
@@ -99,7 +120,11 @@ pub(crate) fn show(it: &Interp, v: &Value) -> String {
         Value::Point(p) => {
             let x = it.nodes.get(*p);
             let d = it.opts.dime.max(1);
-            x[..d].iter().map(|c| fmt_float(*c)).collect::<Vec<_>>().join(" ")
+            x[..d]
+                .iter()
+                .map(|c| fmt_float(*c))
+                .collect::<Vec<_>>()
+                .join(" ")
         }
         other => format!("<{}>", other.type_name()),
     }
@@ -161,14 +186,20 @@ fn temp(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         return Ok(vec![]);
     }
     a.keyword(&["IMPR", "SGAC", "NOEC"]);
-    let mut lines = vec![format!("{:<10} {:>8} {:>12}", "operator", "calls", "seconds")];
+    let mut lines = vec![format!(
+        "{:<10} {:>8} {:>12}",
+        "operator", "calls", "seconds"
+    )];
     let mut ops: Vec<_> = it.timers.by_op.iter().map(|(k, v)| (*k, *v)).collect();
     ops.sort_by(|x, y| y.1 .1.cmp(&x.1 .1));
     for (k, (n, d)) in ops {
         lines.push(format!("{:<10} {:>8} {:>12.6}", k, n, d.as_secs_f64()));
     }
     if !it.timers.phases.is_empty() {
-        lines.push(format!("{:<24} {:>8} {:>12}", "solver phase", "count", "seconds"));
+        lines.push(format!(
+            "{:<24} {:>8} {:>12}",
+            "solver phase", "count", "seconds"
+        ));
         for (k, (n, d)) in &it.timers.phases {
             lines.push(format!("{:<24} {:>8} {:>12.6}", k, n, d.as_secs_f64()));
         }
@@ -185,8 +216,14 @@ fn erre(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     if let Some(n) = a.opt::<i64>() {
         return match n {
             0 => Ok(vec![]),
-            5 => Err(Error::new(ErrorKind::Abort, "ERRE 5: the deck's own check failed (abnormal error, severity 3)")),
-            n => Err(Error::runtime(format!("ERRE {}: error raised by the deck", n))),
+            5 => Err(Error::new(
+                ErrorKind::Abort,
+                "ERRE 5: the deck's own check failed (abnormal error, severity 3)",
+            )),
+            n => Err(Error::runtime(format!(
+                "ERRE {}: error raised by the deck",
+                n
+            ))),
         };
     }
     let mut parts = Vec::new();

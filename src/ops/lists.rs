@@ -7,11 +7,41 @@ use crate::value::Value;
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
-    OpDef { name: "PROG", signature: "PROG (X1 X2 …) (X PAS DX (NPAS N | XEND)) (N * X) (LISTREEL)", doc: "Build a LISTREEL.", example: "l = prog 0. pas 0.5 2. ;", f: prog },
-    OpDef { name: "LECT", signature: "LECT (I1 I2 …) (I PAS DI (NPAS N | IEND)) (N * I) (LISTENTI)", doc: "Build a LISTENTI.", example: "l = lect 1 pas 1 4 ;", f: lect },
-    OpDef { name: "MOTS", signature: "MOTS WORD1 WORD2 … (N * WORD)", doc: "Build a LISTMOTS of 4-character words.", example: "m = mots 'UX' 'UY' ;", f: mots },
-    OpDef { name: "EXTR", signature: "EXTR LIST I | MOT I J | CHPOINT COMP POINT | …", doc: "Extract a part of an object (list element, substring, field value, …).", example: "x = extr l 2 ;", f: extr },
-    OpDef { name: "DIME", signature: "DIME LIST|MOT|TABLE|RIGIDITE|EVOLUTIO", doc: "Size of an object.", example: "n = dime l ;", f: dime },
+    OpDef {
+        name: "PROG",
+        signature: "PROG (X1 X2 …) (X PAS DX (NPAS N | XEND)) (N * X) (LISTREEL)",
+        doc: "Build a LISTREEL.",
+        example: "l = prog 0. pas 0.5 2. ;",
+        f: prog,
+    },
+    OpDef {
+        name: "LECT",
+        signature: "LECT (I1 I2 …) (I PAS DI (NPAS N | IEND)) (N * I) (LISTENTI)",
+        doc: "Build a LISTENTI.",
+        example: "l = lect 1 pas 1 4 ;",
+        f: lect,
+    },
+    OpDef {
+        name: "MOTS",
+        signature: "MOTS WORD1 WORD2 … (N * WORD)",
+        doc: "Build a LISTMOTS of 4-character words.",
+        example: "m = mots 'UX' 'UY' ;",
+        f: mots,
+    },
+    OpDef {
+        name: "EXTR",
+        signature: "EXTR LIST I | MOT I J | CHPOINT COMP POINT | …",
+        doc: "Extract a part of an object (list element, substring, field value, …).",
+        example: "x = extr l 2 ;",
+        f: extr,
+    },
+    OpDef {
+        name: "DIME",
+        signature: "DIME LIST|MOT|TABLE|RIGIDITE|EVOLUTIO",
+        doc: "Size of an object.",
+        example: "n = dime l ;",
+        f: dime,
+    },
 ];
 
 /// Sequence builder shared by PROG and LECT.
@@ -20,26 +50,40 @@ fn sequence(a: &mut Args, int: bool) -> Result<Vec<f64>> {
     loop {
         if let Some(x) = a.opt_num_right() {
             if a.sign_like_star() {
-                let v = a.opt_num_right().ok_or_else(|| a.missing("a value after '*'"))?;
+                let v = a
+                    .opt_num_right()
+                    .ok_or_else(|| a.missing("a value after '*'"))?;
                 if x < 0.0 || x.fract() != 0.0 {
-                    return Err(a.err(format!("a repeat count must be a non-negative ENTIER, found {}", x)));
+                    return Err(a.err(format!(
+                        "a repeat count must be a non-negative ENTIER, found {}",
+                        x
+                    )));
                 }
                 out.extend(std::iter::repeat_n(v, x as usize));
             } else if a.keyword(&["PAS"]).is_some() {
-                let step = a.opt_num_right().ok_or_else(|| a.missing("the step after PAS"))?;
+                let step = a
+                    .opt_num_right()
+                    .ok_or_else(|| a.missing("the step after PAS"))?;
                 if a.keyword(&["NPAS"]).is_some() {
-                    let n = a.opt_num_right().ok_or_else(|| a.missing("the count after NPAS"))?;
+                    let n = a
+                        .opt_num_right()
+                        .ok_or_else(|| a.missing("the count after NPAS"))?;
                     for k in 0..=(n.max(0.0) as usize) {
                         out.push(x + k as f64 * step);
                     }
                 } else {
-                    let end = a.opt_num_right().ok_or_else(|| a.missing("the last value after PAS"))?;
+                    let end = a
+                        .opt_num_right()
+                        .ok_or_else(|| a.missing("the last value after PAS"))?;
                     if step == 0.0 || (end - x) * step < 0.0 {
                         return Err(a.err(format!("PAS {} cannot go from {} to {}", step, x, end)));
                     }
                     let n = ((end - x) / step + 1e-9).floor();
                     if int && ((end - x) / step - n).abs() > 1e-9 {
-                        return Err(a.err(format!("PAS {} does not divide the interval from {} to {}", step, x, end)));
+                        return Err(a.err(format!(
+                            "PAS {} does not divide the interval from {} to {}",
+                            step, x, end
+                        )));
                     }
                     if n > 1.0e8 {
                         return Err(a.err("too many values"));
@@ -71,7 +115,9 @@ fn lect(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     if let Some(x) = v.iter().find(|x| x.fract() != 0.0) {
         return Err(a.err(format!("LECT takes integers, found {}", x)));
     }
-    Ok(vec![Value::ListEnti(Rc::new(v.into_iter().map(|x| x as i64).collect()))])
+    Ok(vec![Value::ListEnti(Rc::new(
+        v.into_iter().map(|x| x as i64).collect(),
+    ))])
 }
 
 fn mots(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
@@ -127,7 +173,14 @@ fn extr(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         let i = idx(a, chars.len())?;
         let j = match a.opt::<i64>() {
             Some(j) if j as usize > i && j as usize <= chars.len() => j as usize,
-            Some(j) => return Err(a.err(format!("end index {} is outside {}..{}", j, i + 1, chars.len()))),
+            Some(j) => {
+                return Err(a.err(format!(
+                    "end index {} is outside {}..{}",
+                    j,
+                    i + 1,
+                    chars.len()
+                )))
+            }
             None => i + 1,
         };
         return Ok(vec![Value::mot(chars[i..j].iter().collect::<String>())]);

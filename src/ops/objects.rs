@@ -8,15 +8,69 @@ use std::cell::RefCell;
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
-    OpDef { name: "TYPE", signature: "TYPE OBJ", doc: "The 8-character type name of an object, as a MOT.", example: "t = type x ;", f: type_ },
-    OpDef { name: "EXIS", signature: "EXIS NAME | TABLE KEY | CHPOINT COMP | LIST VALUE", doc: "Whether a name, a table key, a component or a list member exists.", example: "si (exis t 'K') ;", f: exis },
-    OpDef { name: "OUBL", signature: "OUBL NAME | TABLE KEY", doc: "Forget a name, or remove a table entry.", example: "oubl t 'K' ;", f: oubl },
-    OpDef { name: "DETR", signature: "DETR OBJ", doc: "Destroy an object (memory is managed by gibi: no effect).", example: "detr x ;", f: detr },
-    OpDef { name: "MOT", signature: "MOT WORD", doc: "A word as a MOT object (also an operator name kept for later).", example: "m = mot 'TRAC' ;", f: mot },
-    OpDef { name: "CHAI", signature: "CHAI OBJ1 OBJ2 …", doc: "Join words and numbers into one MOT (floats as 1PE12.5).", example: "m = chai 'err=' x ;", f: chai },
-    OpDef { name: "COMM", signature: "COMM text ;", doc: "Comment up to the ';'.", example: "comm this is ignored ;", f: comm },
-    OpDef { name: "TABL", signature: "TABL ('SUBTYPE') | TABL TABLE", doc: "A new TABLE (with a subtype), or another name for the same table.", example: "t = tabl ;", f: tabl },
-    OpDef { name: "TEXT", signature: "TEXT WORD …", doc: "A text (kept as a MOT).", example: "t = text 'abc' ;", f: chai },
+    OpDef {
+        name: "TYPE",
+        signature: "TYPE OBJ",
+        doc: "The 8-character type name of an object, as a MOT.",
+        example: "t = type x ;",
+        f: type_,
+    },
+    OpDef {
+        name: "EXIS",
+        signature: "EXIS NAME | TABLE KEY | CHPOINT COMP | LIST VALUE",
+        doc: "Whether a name, a table key, a component or a list member exists.",
+        example: "si (exis t 'K') ;",
+        f: exis,
+    },
+    OpDef {
+        name: "OUBL",
+        signature: "OUBL NAME | TABLE KEY",
+        doc: "Forget a name, or remove a table entry.",
+        example: "oubl t 'K' ;",
+        f: oubl,
+    },
+    OpDef {
+        name: "DETR",
+        signature: "DETR OBJ",
+        doc: "Destroy an object (memory is managed by gibi: no effect).",
+        example: "detr x ;",
+        f: detr,
+    },
+    OpDef {
+        name: "MOT",
+        signature: "MOT WORD",
+        doc: "A word as a MOT object (also an operator name kept for later).",
+        example: "m = mot 'TRAC' ;",
+        f: mot,
+    },
+    OpDef {
+        name: "CHAI",
+        signature: "CHAI OBJ1 OBJ2 …",
+        doc: "Join words and numbers into one MOT (floats as 1PE12.5).",
+        example: "m = chai 'err=' x ;",
+        f: chai,
+    },
+    OpDef {
+        name: "COMM",
+        signature: "COMM text ;",
+        doc: "Comment up to the ';'.",
+        example: "comm this is ignored ;",
+        f: comm,
+    },
+    OpDef {
+        name: "TABL",
+        signature: "TABL ('SUBTYPE') | TABL TABLE",
+        doc: "A new TABLE (with a subtype), or another name for the same table.",
+        example: "t = tabl ;",
+        f: tabl,
+    },
+    OpDef {
+        name: "TEXT",
+        signature: "TEXT WORD …",
+        doc: "A text (kept as a MOT).",
+        example: "t = text 'abc' ;",
+        f: chai,
+    },
 ];
 
 fn type_(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {

@@ -58,17 +58,38 @@ pub struct Param {
 #[derive(Debug, Clone, PartialEq)]
 pub enum Stmt {
     Instr(Instr),
-    If { cond: Instr, then: Vec<Stmt>, otherwise: Option<Vec<Stmt>>, span: Span },
-    Loop { name: String, count: Option<Instr>, body: Vec<Stmt>, span: Span },
+    If {
+        cond: Instr,
+        then: Vec<Stmt>,
+        otherwise: Option<Vec<Stmt>>,
+        span: Span,
+    },
+    Loop {
+        name: String,
+        count: Option<Instr>,
+        body: Vec<Stmt>,
+        span: Span,
+    },
     Proc(std::rc::Rc<ProcDef>),
-    Quit { name: String, span: Span },
-    Iter { name: String, span: Span },
+    Quit {
+        name: String,
+        span: Span,
+    },
+    Iter {
+        name: String,
+        span: Span,
+    },
     /// `ARGU params ;` inside a procedure.
-    Argu { params: Vec<Param>, span: Span },
+    Argu {
+        params: Vec<Param>,
+        span: Span,
+    },
     /// `RESPRO items ;` inside a procedure.
     Respro(Instr),
     /// `FIN ;`: ends the whole run.
-    End { span: Span },
+    End {
+        span: Span,
+    },
 }
 
 /// `DEBPROC name params ; body FINPROC results ;`

@@ -1,0 +1,166 @@
+//! Lexing and structure: the rules of language.md §1 and §9.
+
+use super::ast::*;
+use super::*;
+
+fn items(src: &str) -> Vec<ItemKind> {
+    let p = parse(src).unwrap_or_else(|e| panic!("{}: {}", src, e.message));
+    match &p.stmts[0] {
+        Stmt::Instr(i) => i.items.iter().map(|i| i.kind.clone()).collect(),
+        s => panic!("not an instruction: {:?}", s),
+    }
+}
+
+use ItemKind::*;
+
+#[test]
+fn sign_rule() {
+    // `A -1` is two operands, `A - 1` and `A-1` subtract, `CRIT*-1` multiplies.
+    assert_eq!(items("A -1 ;"), vec![Word("A".into()), Int(-1)]);
+    assert_eq!(items("A - 1 ;"), vec![Word("A".into()), Sym("-"), Int(1)]);
+    assert_eq!(items("A-1 ;"), vec![Word("A".into()), Sym("-"), Int(1)]);
+    assert_eq!(
+        items("CRIT*-1 ;"),
+        vec![Word("CRIT".into()), Sym("*"), Int(-1)]
+    );
+    assert_eq!(
+        items("x + -0.5e1 ;"),
+        vec![Word("X".into()), Sym("+"), Float(-5.0)]
+    );
+}
+
+#[test]
+fn numbers() {
+    assert_eq!(
+        items("1. .5 1.e-5 1D-13 2.1E11 1E-5 12 ;"),
+        vec![
+            Float(1.0),
+            Float(0.5),
+            Float(1e-5),
+            Float(1e-13),
+            Float(2.1e11),
+            Float(1e-5),
+            Int(12)
+        ]
+    );
+    // More than 9 digits turns an integer into a float.
+    assert_eq!(items("1234567890 ;"), vec![Float(1234567890.0)]);
+}
+
+#[test]
+fn upper_case_outside_quotes_and_quote_escape() {
+    assert_eq!(
+        items("bloq 'ux' 'it''s' ;"),
+        vec![Word("BLOQ".into()), Str("ux".into()), Str("it's".into())]
+    );
+}
+
+#[test]
+fn dots_index_tables() {
+    assert_eq!(items("T.1 ;"), vec![Word("T".into()), Dot, Int(1)]);
+    assert_eq!(
+        items("T . 'K' . 2 ;"),
+        vec![Word("T".into()), Dot, Str("K".into()), Dot, Int(2)]
+    );
+    assert_eq!(
+        items("T . 3.68 ;"),
+        vec![Word("T".into()), Dot, Float(3.68)]
+    );
+}
+
+#[test]
+fn column_one_comments_inside_an_instruction() {
+    let src = "a = 1\n* a comment ; with a semicolon\n + 2 ;\n";
+    let p = parse(src).unwrap();
+    assert_eq!(p.stmts.len(), 1);
+}
+
+#[test]
+fn star_elsewhere_multiplies() {
+    assert_eq!(items(" 2 * 3 ;"), vec![Int(2), Sym("*"), Int(3)]);
+    assert_eq!(items("2. ** 3 ;"), vec![Float(2.0), Sym("**"), Int(3)]);
+}
+
+#[test]
+fn counters_and_groups() {
+    assert_eq!(items("(&bouc / 2) ;").len(), 1);
+    assert!(matches!(&items("&B ;")[0], Counter(n) if n == "B"));
+}
+
+#[test]
+fn quotes_close_on_their_line() {
+    let e = parse("a = 1 ;\nb = 'open ;\n").unwrap_err();
+    assert_eq!(e.kind, crate::error::ErrorKind::Syntax);
+    assert!(e.message.contains("quote"));
+    assert_eq!(e.span.unwrap().start, 12);
+}
+
+#[test]
+fn instruction_limit() {
+    let long = format!("x = {} ;", "1 + ".repeat(130) + "1");
+    let e = parse(&long).unwrap_err();
+    assert!(e.message.contains("500"), "{}", e.message);
+    // Blanks are squeezed before counting.
+    let spaced = format!("x = 1{} ;", " ".repeat(2000));
+    assert!(parse(&spaced).is_ok());
+}
+
+#[test]
+fn structure_is_rebuilt() {
+    let p = parse(
+        "si (a > 1) ; x = 1 ; sinon ; x = 2 ; finsi ; repeter b 3 ; fin b ; repeter 5 c ; fin c ;",
+    )
+    .unwrap();
+    assert!(matches!(
+        &p.stmts[0],
+        Stmt::If {
+            otherwise: Some(_),
+            ..
+        }
+    ));
+    assert!(matches!(&p.stmts[1], Stmt::Loop { name, count: Some(_), .. } if name == "B"));
+    assert!(matches!(&p.stmts[2], Stmt::Loop { name, count: Some(_), .. } if name == "C"));
+    let p = parse("debproc f x*flottant k/entier ; finproc x ;").unwrap();
+    match &p.stmts[0] {
+        Stmt::Proc(d) => {
+            assert_eq!(d.params.len(), 2);
+            assert!(!d.params[0].optional && d.params[1].optional);
+            assert_eq!(d.params[0].ty.as_deref(), Some("FLOTTANT"));
+        }
+        s => panic!("{:?}", s),
+    }
+}
+
+#[test]
+fn unclosed_blocks_and_strays() {
+    assert!(parse("si (a) ; x = 1 ;")
+        .unwrap_err()
+        .message
+        .contains("never closed"));
+    assert!(parse("finsi ;").is_err());
+    assert!(parse("repeter a ; fin b ;").is_err());
+    assert!(parse("x = (1 + 2 ;").unwrap_err().message.contains("'('"));
+    assert!(parse("x = 1 + 2) ;").is_err());
+}
+
+#[test]
+fn completeness_for_the_repl() {
+    assert!(matches!(check_complete("x = 1"), Completeness::Incomplete));
+    assert!(matches!(
+        check_complete("si (x > 1) ;\n y = 2 ;"),
+        Completeness::Incomplete
+    ));
+    assert!(matches!(check_complete("x = (1"), Completeness::Incomplete));
+    assert!(matches!(
+        check_complete("x = 1 ;"),
+        Completeness::Complete(_)
+    ));
+    assert!(matches!(
+        check_complete("x = 1) ;"),
+        Completeness::Invalid(_)
+    ));
+    assert!(matches!(
+        check_complete("finsi ;"),
+        Completeness::Invalid(_)
+    ));
+}

@@ -1,0 +1,91 @@
+//! The `gibi` binary: exit codes, file names in errors, -e, stdin, --check.
+
+use std::io::Write;
+use std::process::{Command, Stdio};
+
+fn gibi() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_gibi"))
+}
+
+fn deck(name: &str, text: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("gibi-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+#[test]
+fn exit_codes() {
+    let ok = gibi()
+        .arg(deck(
+            "ok.dgibi",
+            "mess 'hello' ; fin ; mess 'not printed' ;",
+        ))
+        .output()
+        .unwrap();
+    assert_eq!(ok.status.code(), Some(0));
+    assert_eq!(String::from_utf8_lossy(&ok.stdout), "hello\n");
+
+    let syn = gibi()
+        .current_dir(std::env::temp_dir())
+        .arg(deck("syn.dgibi", "a = 1 ;\nb = 'x ;\n"))
+        .output()
+        .unwrap();
+    assert_eq!(syn.status.code(), Some(65));
+    assert!(String::from_utf8_lossy(&syn.stderr).contains("syn.dgibi:2:5:"));
+
+    let run = gibi()
+        .arg(deck("run.dgibi", "a = 1 ;\nerre 5 ;\n"))
+        .output()
+        .unwrap();
+    assert_eq!(run.status.code(), Some(70));
+    assert!(String::from_utf8_lossy(&run.stderr).contains("run.dgibi:2:1:"));
+
+    let missing = gibi().arg("/nonexistent/deck.dgibi").output().unwrap();
+    assert_eq!(missing.status.code(), Some(66));
+}
+
+#[test]
+fn eval_stdin_and_check() {
+    let e = gibi()
+        .args(["-e", "x = 1 + 2 * 3 ; mess x ;"])
+        .output()
+        .unwrap();
+    assert_eq!(String::from_utf8_lossy(&e.stdout), "9\n");
+
+    let mut child = gibi()
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .spawn()
+        .unwrap();
+    child
+        .stdin
+        .take()
+        .unwrap()
+        .write_all(b"mess 'piped' ;\n")
+        .unwrap();
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(String::from_utf8_lossy(&out.stdout), "piped\n");
+
+    let c = gibi()
+        .arg("--check")
+        .arg(deck("chk.dgibi", "erre 5 ;"))
+        .output()
+        .unwrap();
+    assert_eq!(c.status.code(), Some(0));
+    let c = gibi()
+        .arg("--check")
+        .arg(deck("chk2.dgibi", "x = (1 ;"))
+        .output()
+        .unwrap();
+    assert_eq!(c.status.code(), Some(65));
+}
+
+#[test]
+fn catalogue_is_json() {
+    let out = gibi().arg("--list-operators").output().unwrap();
+    let s = String::from_utf8_lossy(&out.stdout);
+    assert!(s.trim_start().starts_with('[') && s.trim_end().ends_with(']'));
+    assert!(s.contains("\"name\": \"PROG\""));
+}

@@ -1,0 +1,68 @@
+//! The embedding API: sinks, typed reads, custom operators, file policy.
+
+use gibi::{Capture, FilePolicy, Interpreter, OpSpec, Value};
+use std::rc::Rc;
+
+#[test]
+fn library_prints_nothing_by_default_and_objects_persist() {
+    let mut g = Interpreter::new();
+    g.run_str("a", "mess 'hidden' ; x = 2 ;").unwrap();
+    g.run_str("b", "y = x * 3 ;").unwrap();
+    assert_eq!(g.get_f64("y"), Some(6.0));
+}
+
+#[test]
+fn typed_reads_and_writes() {
+    let mut g = Interpreter::new();
+    g.set("n", Value::Int(4));
+    g.set("w", "UX");
+    g.run_str("t", "l = prog 1. pas 1. n ; m = w et 'Y' ;")
+        .unwrap();
+    let l: Rc<Vec<f64>> = g.get_as("l").unwrap();
+    assert_eq!(*l, vec![1.0, 2.0, 3.0, 4.0]);
+    let m: String = g.get_as("m").unwrap();
+    assert_eq!(m, "UXY");
+    let e = g.get_as::<f64>("m").unwrap_err();
+    assert!(e.message.contains("MOT"));
+}
+
+#[test]
+fn custom_operator_reads_arguments_by_type_on_both_sides() {
+    let out = Capture::default();
+    let mut g = Interpreter::builder()
+        .output(out.clone())
+        .operator(OpSpec::host(
+            "SCAL",
+            "SCAL LISTREEL FLOTTANT",
+            "Scale a list.",
+            |a| {
+                let l: Rc<Vec<f64>> = a.req()?;
+                let s = a.req_num()?;
+                Ok(vec![Value::ListReel(Rc::new(
+                    l.iter().map(|x| x * s).collect(),
+                ))])
+            },
+        ))
+        .build();
+    g.run_str(
+        "t",
+        "a = scal (prog 1. 2.) 3 ; b = (prog 1.) scal 2. ; c = extr a 2 ;",
+    )
+    .unwrap();
+    assert_eq!(g.get_f64("c"), Some(6.0));
+    let e = g.run_str("t", "d = scal 2. ;").unwrap_err();
+    assert!(
+        e.render().contains("SCAL: expected LISTREEL"),
+        "{}",
+        e.render()
+    );
+    assert!(e.render().contains("usage: SCAL LISTREEL FLOTTANT"));
+}
+
+#[test]
+fn file_policy_defaults_to_nothing() {
+    assert!(FilePolicy::Nothing.check("a.txt").is_err());
+    let root = std::env::temp_dir();
+    assert!(FilePolicy::Under(root.clone()).check("sub/a.txt").is_ok());
+    assert!(FilePolicy::Under(root).check("../a.txt").is_err());
+}
