@@ -1,0 +1,3 @@
+//! Tests with real numbers for the meshing operators.
+
+mod helpers;
