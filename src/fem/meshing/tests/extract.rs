@@ -53,10 +53,10 @@ fn cote_returns_the_four_sides() {
     ] {
         let mut n = Nodes::default();
         let (s, d) = square(&mut n, 2, ty);
-        for k in 0..4 {
+        for (k, side) in s.iter().enumerate() {
             assert_eq!(
-                cote(&d, k as i64 + 1).unwrap(),
-                s[k],
+                &cote(&d, k as i64 + 1).unwrap(),
+                side,
                 "{ty:?} side {}",
                 k + 1
             );
