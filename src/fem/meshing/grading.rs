@@ -86,6 +86,14 @@ pub fn fractions(
     if !(length.is_finite() && length > 0.0) {
         return fail(op, "the length to divide is zero (the end points coincide)");
     }
+    if let Some(n) = spacing.n {
+        if n.unsigned_abs() as usize > MAX_COUNT {
+            return fail(
+                op,
+                format!("{n} elements is more than the {MAX_COUNT} allowed"),
+            );
+        }
+    }
     let (d1, d2) = end_densities(spacing, node_d1, node_d2);
     let explicit = spacing.dini.is_some() || spacing.dfin.is_some();
     match spacing.n {
@@ -150,8 +158,8 @@ fn graded(n: usize, d1: f64, d2: f64) -> Vec<f64> {
     t
 }
 
-/// A count derived from densities above this is surely a typo (a density
-/// in the wrong unit); refusing it keeps memory safe.
+/// A count above this is surely a typo (or a density in the wrong unit);
+/// refusing it keeps memory safe.
 const MAX_COUNT: usize = 10_000_000;
 
 /// `round(∫_0^L ds / d(s))`, at least 1; `None` above [`MAX_COUNT`].

@@ -183,5 +183,5 @@ fn select(nodes: &Nodes, mesh: &Mesh, keep: impl Fn(V3) -> bool) -> Mesh {
         .into_iter()
         .filter(|&n| keep(nodes.get(n)))
         .collect();
-    Mesh::points(&picked)
+    super::mesh_of(vec![(ElemType::Poi1, picked)])
 }

@@ -145,3 +145,20 @@ fn cerc_quarter_arc_stays_on_the_circle() {
     let e = cerc(&mut n, a, o, a, &Spacing::count(2), ElemType::Seg2).unwrap_err();
     assert!(e.to_string().starts_with("CERC:"));
 }
+
+#[test]
+fn absurd_counts_are_refused() {
+    let mut n = Nodes::default();
+    let (a, b) = (pt(&mut n, 0.0, 0.0), pt(&mut n, 1.0, 0.0));
+    let e = droi(&mut n, a, b, &Spacing::count(1 << 40), ElemType::Seg2).unwrap_err();
+    assert!(e.to_string().contains("allowed"), "{e}");
+    let e = droi(
+        &mut n,
+        a,
+        b,
+        &Spacing::default().densities(1e-12, 1e-12),
+        ElemType::Seg2,
+    )
+    .unwrap_err();
+    assert!(e.to_string().contains("more than"), "{e}");
+}
