@@ -100,3 +100,76 @@ fn poin_forms() {
     assert!(poin_nth(&d, 10).is_err());
     assert!(poin_init(&d).is_err());
 }
+
+#[test]
+fn cont_of_a_ring_has_two_loops() {
+    // A 3x3 QUA4 grid with the centre element removed.
+    let mut n = Nodes::default();
+    let (_, d) = square(&mut n, 3, ElemType::Qua4);
+    let ring = diff(&d, &elem_numbers(&d, None, &[5]).unwrap());
+    assert_eq!(nbel(&ring), 8);
+    let c = cont(&ring).unwrap();
+    assert_eq!(nbel(&c), 16);
+    assert!(close(lengths(&n, &c).iter().sum::<f64>(), 4.0 + 4.0 / 3.0));
+    // The outer loop comes first (it holds element 1's first edge) and is
+    // one closed chain of 12 edges.
+    let outer = elem_numbers(&c, None, &(1..=12).collect::<Vec<_>>()).unwrap();
+    assert_eq!(
+        cont(&outer).unwrap().n_elements(),
+        0,
+        "closed line: no end points"
+    );
+    assert!(
+        cote(&ring, 1).is_err(),
+        "two boundaries: not a DALL surface"
+    );
+}
+
+#[test]
+fn clockwise_contour_gives_clockwise_elements_and_3d_dall_works() {
+    let mut n = Nodes::default();
+    let p: Vec<usize> = [[0.0, 0.0], [0.0, 1.0], [1.0, 1.0], [1.0, 0.0]]
+        .iter()
+        .map(|x| pt(&mut n, x[0], x[1]))
+        .collect();
+    let s: Vec<Mesh> = (0..4)
+        .map(|k| {
+            droi(
+                &mut n,
+                p[k],
+                p[(k + 1) % 4],
+                &Spacing::count(2),
+                ElemType::Seg2,
+            )
+            .unwrap()
+        })
+        .collect();
+    let d = dall(&mut n, [&s[0], &s[1], &s[2], &s[3]], ElemType::Qua4).unwrap();
+    assert!(areas(&n, &d).iter().all(|&a| close(a, -0.25)));
+    // A tilted square in 3D: the interior node is at its centre.
+    let q: Vec<usize> = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 1.0],
+        [1.0, 1.0, 1.0],
+        [0.0, 1.0, 0.0],
+    ]
+    .iter()
+    .map(|x| n.push(*x, 0.0))
+    .collect();
+    let s: Vec<Mesh> = (0..4)
+        .map(|k| {
+            droi(
+                &mut n,
+                q[k],
+                q[(k + 1) % 4],
+                &Spacing::count(2),
+                ElemType::Seg2,
+            )
+            .unwrap()
+        })
+        .collect();
+    let before = n.len();
+    dall(&mut n, [&s[0], &s[1], &s[2], &s[3]], ElemType::Qua4).unwrap();
+    let c = n.get(before);
+    assert!(close(c[0], 0.5) && close(c[1], 0.5) && close(c[2], 0.5));
+}

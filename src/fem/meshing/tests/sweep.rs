@@ -156,3 +156,25 @@ fn volu_between_two_surfaces() {
     assert!(close(total, 3.0));
     assert_eq!(&v.parts[0].elem(2)[4..], top.parts[0].elem(0));
 }
+
+#[test]
+fn cote_of_a_qua8_tran_surface_and_sweep_errors() {
+    let mut n = Nodes::default();
+    let (a, b) = (pt(&mut n, 0.0, 0.0), pt(&mut n, 1.0, 0.0));
+    let l = droi(&mut n, a, b, &Spacing::count(2), ElemType::Seg3).unwrap();
+    let s = tran(&mut n, &l, &Spacing::count(2), [0.0, 1.0, 0.0]).unwrap();
+    assert_eq!(cote(&s, 1).unwrap(), l);
+    let c3 = cote(&s, 3).unwrap();
+    assert_eq!(c3.parts[0].ty, ElemType::Seg3);
+    assert!(close(n.get(poin_init(&c3).unwrap())[0], 1.0));
+    // Quadratic surfaces have no quadratic volume to sweep into.
+    let e = tran(&mut n, &s, &Spacing::count(1), [0.0, 0.0, 1.0]).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "TRAN: cannot sweep QUA8 elements (no matching element type)"
+    );
+    let e = rota(&mut n, &l, &Spacing::count(1), 400.0, [0.0; 3], None).unwrap_err();
+    assert!(e.to_string().starts_with("ROTA: the angle"));
+    let other = droi(&mut n, a, b, &Spacing::count(3), ElemType::Seg2).unwrap();
+    assert!(volu(&mut n, &l, &other, &Spacing::count(1)).is_err());
+}
