@@ -1,0 +1,8 @@
+//! Tests with real numbers for the meshing operators.
+
+mod dall;
+mod edit;
+mod extract;
+mod helpers;
+mod line;
+mod sweep;
