@@ -38,13 +38,7 @@ pub struct Error {
 
 impl Error {
     pub fn new(kind: ErrorKind, message: impl Into<String>) -> Self {
-        Error {
-            kind,
-            message: message.into(),
-            span: None,
-            source: None,
-            notes: Vec::new(),
-        }
+        Error { kind, message: message.into(), span: None, source: None, notes: Vec::new() }
     }
     pub fn runtime(message: impl Into<String>) -> Self {
         Error::new(ErrorKind::Runtime, message)
@@ -93,32 +87,15 @@ impl Error {
         match (&self.source, self.span) {
             (Some(src), Some(span)) => {
                 let (line, col) = src.line_col(span.start);
-                out.push_str(&format!(
-                    "{}:{}:{}: {}: {}\n",
-                    src.name, line, col, label, self.message
-                ));
+                out.push_str(&format!("{}:{}:{}: {}: {}\n", src.name, line, col, label, self.message));
                 let text = src.line_text(line);
                 let gutter = line.to_string().len();
                 out.push_str(&format!("{:w$} |\n", "", w = gutter));
                 out.push_str(&format!("{} | {}\n", line, text));
                 let (end_line, end_col) = src.line_col(span.end.max(span.start + 1) - 1);
-                let width = if end_line == line {
-                    end_col + 1 - col
-                } else {
-                    text.chars().count() + 1 - col
-                };
-                let pad: String = text
-                    .chars()
-                    .take(col - 1)
-                    .map(|c| if c == '\t' { '\t' } else { ' ' })
-                    .collect();
-                out.push_str(&format!(
-                    "{:w$} | {}{}\n",
-                    "",
-                    pad,
-                    "^".repeat(width.max(1)),
-                    w = gutter
-                ));
+                let width = if end_line == line { end_col + 1 - col } else { text.chars().count() + 1 - col };
+                let pad: String = text.chars().take(col - 1).map(|c| if c == '\t' { '\t' } else { ' ' }).collect();
+                out.push_str(&format!("{:w$} | {}{}\n", "", pad, "^".repeat(width.max(1)), w = gutter));
             }
             _ => out.push_str(&format!("{}: {}\n", label, self.message)),
         }

@@ -158,27 +158,20 @@ impl Interpreter {
     /// Run an already parsed program (the REPL parses to know whether the
     /// input is complete).
     pub fn run_parsed(&mut self, prog: &syntax::ast::Program, src: Rc<Source>) -> Result<Outcome> {
-        let fin = self
-            .interp
-            .run_program(prog, src.clone())
-            .map_err(|mut e| {
-                if e.source.is_none() {
-                    e.source = Some(src);
-                }
-                e
-            })?;
-        Ok(if fin {
-            Outcome::Finished
-        } else {
-            Outcome::EndOfInput
-        })
+        let fin = self.interp.run_program(prog, src.clone()).map_err(|mut e| {
+            if e.source.is_none() {
+                e.source = Some(src);
+            }
+            e
+        })?;
+        Ok(if fin { Outcome::Finished } else { Outcome::EndOfInput })
     }
 
     /// Read and run a file (named as given in error locations).
     pub fn run_file(&mut self, path: impl AsRef<Path>) -> Result<Outcome> {
         let path = path.as_ref();
-        let text = std::fs::read_to_string(path)
-            .map_err(|e| Error::io(format!("cannot read {}: {}", path.display(), e)))?;
+        let text =
+            std::fs::read_to_string(path).map_err(|e| Error::io(format!("cannot read {}: {}", path.display(), e)))?;
         self.run_str(&path.display().to_string(), &text)
     }
 
@@ -194,16 +187,9 @@ impl Interpreter {
 
     /// Read an object as a typed Rust value.
     pub fn get_as<T: ops::FromArg>(&self, name: &str) -> Result<T> {
-        let v = self
-            .get(name)
-            .ok_or_else(|| Error::runtime(format!("no object named {}", name.to_uppercase())))?;
+        let v = self.get(name).ok_or_else(|| Error::runtime(format!("no object named {}", name.to_uppercase())))?;
         T::from_value(&v).ok_or_else(|| {
-            Error::runtime(format!(
-                "{} is a {}, not a {}",
-                name.to_uppercase(),
-                v.type_name(),
-                T::EXPECT
-            ))
+            Error::runtime(format!("{} is a {}, not a {}", name.to_uppercase(), v.type_name(), T::EXPECT))
         })
     }
 

@@ -17,28 +17,15 @@ fn deck(name: &str, text: &str) -> std::path::PathBuf {
 
 #[test]
 fn exit_codes() {
-    let ok = gibi()
-        .arg(deck(
-            "ok.dgibi",
-            "mess 'hello' ; fin ; mess 'not printed' ;",
-        ))
-        .output()
-        .unwrap();
+    let ok = gibi().arg(deck("ok.dgibi", "mess 'hello' ; fin ; mess 'not printed' ;")).output().unwrap();
     assert_eq!(ok.status.code(), Some(0));
     assert_eq!(String::from_utf8_lossy(&ok.stdout), "hello\n");
 
-    let syn = gibi()
-        .current_dir(std::env::temp_dir())
-        .arg(deck("syn.dgibi", "a = 1 ;\nb = 'x ;\n"))
-        .output()
-        .unwrap();
+    let syn = gibi().current_dir(std::env::temp_dir()).arg(deck("syn.dgibi", "a = 1 ;\nb = 'x ;\n")).output().unwrap();
     assert_eq!(syn.status.code(), Some(65));
     assert!(String::from_utf8_lossy(&syn.stderr).contains("syn.dgibi:2:5:"));
 
-    let run = gibi()
-        .arg(deck("run.dgibi", "a = 1 ;\nerre 5 ;\n"))
-        .output()
-        .unwrap();
+    let run = gibi().arg(deck("run.dgibi", "a = 1 ;\nerre 5 ;\n")).output().unwrap();
     assert_eq!(run.status.code(), Some(70));
     assert!(String::from_utf8_lossy(&run.stderr).contains("run.dgibi:2:1:"));
 
@@ -48,37 +35,17 @@ fn exit_codes() {
 
 #[test]
 fn eval_stdin_and_check() {
-    let e = gibi()
-        .args(["-e", "x = 1 + 2 * 3 ; mess x ;"])
-        .output()
-        .unwrap();
+    let e = gibi().args(["-e", "x = 1 + 2 * 3 ; mess x ;"]).output().unwrap();
     assert_eq!(String::from_utf8_lossy(&e.stdout), "9\n");
 
-    let mut child = gibi()
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .spawn()
-        .unwrap();
-    child
-        .stdin
-        .take()
-        .unwrap()
-        .write_all(b"mess 'piped' ;\n")
-        .unwrap();
+    let mut child = gibi().stdin(Stdio::piped()).stdout(Stdio::piped()).spawn().unwrap();
+    child.stdin.take().unwrap().write_all(b"mess 'piped' ;\n").unwrap();
     let out = child.wait_with_output().unwrap();
     assert_eq!(String::from_utf8_lossy(&out.stdout), "piped\n");
 
-    let c = gibi()
-        .arg("--check")
-        .arg(deck("chk.dgibi", "erre 5 ;"))
-        .output()
-        .unwrap();
+    let c = gibi().arg("--check").arg(deck("chk.dgibi", "erre 5 ;")).output().unwrap();
     assert_eq!(c.status.code(), Some(0));
-    let c = gibi()
-        .arg("--check")
-        .arg(deck("chk2.dgibi", "x = (1 ;"))
-        .output()
-        .unwrap();
+    let c = gibi().arg("--check").arg(deck("chk2.dgibi", "x = (1 ;")).output().unwrap();
     assert_eq!(c.status.code(), Some(65));
 }
 

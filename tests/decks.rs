@@ -9,10 +9,7 @@ use std::path::Path;
 fn run_deck(path: &Path) -> String {
     let out = Capture::default();
     let dir = path.parent().unwrap().canonicalize().unwrap();
-    let mut gibi = Interpreter::builder()
-        .output(out.clone())
-        .files(FilePolicy::Under(dir))
-        .build();
+    let mut gibi = Interpreter::builder().output(out.clone()).files(FilePolicy::Under(dir)).build();
     let name = path.file_name().unwrap().to_string_lossy().to_string();
     let text = std::fs::read_to_string(path).unwrap();
     let result = gibi.run_str(&name, &text);
@@ -37,9 +34,24 @@ fn test_decks() {
     });
 }
 
+/// The example decks users run (`scripts/<theme>/*.dgibi`).
 #[test]
 fn script_decks() {
-    insta::glob!("../scripts", "**/*.dgibi", |path| {
-        insta::assert_snapshot!(run_deck(path));
-    });
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("scripts");
+    let mut decks = Vec::new();
+    for theme in std::fs::read_dir(&root).unwrap().flatten() {
+        if let Ok(files) = std::fs::read_dir(theme.path()) {
+            decks.extend(files.flatten().map(|f| f.path()).filter(|p| p.extension().is_some_and(|e| e == "dgibi")));
+        }
+    }
+    decks.sort();
+    assert!(!decks.is_empty());
+    for deck in decks {
+        let theme = deck.parent().unwrap().file_name().unwrap().to_string_lossy().to_string();
+        let name = format!("{}__{}", theme, deck.file_stem().unwrap().to_string_lossy());
+        let mut settings = insta::Settings::clone_current();
+        settings.set_snapshot_suffix(name);
+        settings.set_input_file(&deck);
+        settings.bind(|| insta::assert_snapshot!(run_deck(&deck)));
+    }
 }

@@ -16,8 +16,7 @@ fn typed_reads_and_writes() {
     let mut g = Interpreter::new();
     g.set("n", Value::Int(4));
     g.set("w", "UX");
-    g.run_str("t", "l = prog 1. pas 1. n ; m = w et 'Y' ;")
-        .unwrap();
+    g.run_str("t", "l = prog 1. pas 1. n ; m = w et 'Y' ;").unwrap();
     let l: Rc<Vec<f64>> = g.get_as("l").unwrap();
     assert_eq!(*l, vec![1.0, 2.0, 3.0, 4.0]);
     let m: String = g.get_as("m").unwrap();
@@ -31,31 +30,16 @@ fn custom_operator_reads_arguments_by_type_on_both_sides() {
     let out = Capture::default();
     let mut g = Interpreter::builder()
         .output(out.clone())
-        .operator(OpSpec::host(
-            "SCAL",
-            "SCAL LISTREEL FLOTTANT",
-            "Scale a list.",
-            |a| {
-                let l: Rc<Vec<f64>> = a.req()?;
-                let s = a.req_num()?;
-                Ok(vec![Value::ListReel(Rc::new(
-                    l.iter().map(|x| x * s).collect(),
-                ))])
-            },
-        ))
+        .operator(OpSpec::host("SCAL", "SCAL LISTREEL FLOTTANT", "Scale a list.", |a| {
+            let l: Rc<Vec<f64>> = a.req()?;
+            let s = a.req_num()?;
+            Ok(vec![Value::ListReel(Rc::new(l.iter().map(|x| x * s).collect()))])
+        }))
         .build();
-    g.run_str(
-        "t",
-        "a = scal (prog 1. 2.) 3 ; b = (prog 1.) scal 2. ; c = extr a 2 ;",
-    )
-    .unwrap();
+    g.run_str("t", "a = scal (prog 1. 2.) 3 ; b = (prog 1.) scal 2. ; c = extr a 2 ;").unwrap();
     assert_eq!(g.get_f64("c"), Some(6.0));
     let e = g.run_str("t", "d = scal 2. ;").unwrap_err();
-    assert!(
-        e.render().contains("SCAL: expected LISTREEL"),
-        "{}",
-        e.render()
-    );
+    assert!(e.render().contains("SCAL: expected LISTREEL"), "{}", e.render());
     assert!(e.render().contains("usage: SCAL LISTREEL FLOTTANT"));
 }
 

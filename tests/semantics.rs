@@ -12,8 +12,7 @@ fn run(src: &str) -> Interpreter {
 }
 
 fn num(g: &Interpreter, n: &str) -> f64 {
-    g.get_f64(n)
-        .unwrap_or_else(|| panic!("{} is not a number: {:?}", n, g.get(n)))
+    g.get_f64(n).unwrap_or_else(|| panic!("{} is not a number: {:?}", n, g.get(n)))
 }
 
 #[test]
@@ -34,9 +33,7 @@ fn integer_division_truncates_and_mixing_gives_float() {
 
 #[test]
 fn arguments_on_either_side() {
-    let g = run(
-        "a = (2. - 5.) abs ; b = abs (2. - 5.) ; c = '-' 10 4 ; l = prog 3. 8. 1. ; d = l maxi ;",
-    );
+    let g = run("a = (2. - 5.) abs ; b = abs (2. - 5.) ; c = '-' 10 4 ; l = prog 3. 8. 1. ; d = l maxi ;");
     assert_eq!(num(&g, "a"), 3.0);
     assert_eq!(num(&g, "b"), 3.0);
     assert_eq!(num(&g, "c"), 6.0);
@@ -63,9 +60,7 @@ fn word_versus_object() {
 
 #[test]
 fn four_letter_matching() {
-    let g = run(
-        "a = maximum (prog 1. 5.) ; b = MAXI (prog 1. 5.) ; opti dimension 2 ; c = vale dime ;",
-    );
+    let g = run("a = maximum (prog 1. 5.) ; b = MAXI (prog 1. 5.) ; opti dimension 2 ; c = vale dime ;");
     assert_eq!(num(&g, "a"), 5.0);
     assert_eq!(num(&g, "b"), 5.0);
     assert_eq!(num(&g, "c"), 2.0);
@@ -85,22 +80,18 @@ fn sign_rule_in_evaluation() {
 
 #[test]
 fn procedure_scope_is_read_only() {
-    let g = run(
-        "a = 9 ; debproc f x*flottant ; a = 1000 ; y = x + a ; finproc y ;\n\
-         r = f 1. ; s = a ;",
-    );
+    let g = run("a = 9 ; debproc f x*flottant ; a = 1000 ; y = x + a ; finproc y ;\n\
+         r = f 1. ; s = a ;");
     assert_eq!(num(&g, "r"), 1001.0);
     assert_eq!(num(&g, "s"), 9.0);
 }
 
 #[test]
 fn procedure_arguments_by_type_on_both_sides() {
-    let g = run(
-        "debproc modulo a*entier b*entier ; r = a - (a / b * b) ; finproc r ;\n\
+    let g = run("debproc modulo a*entier b*entier ; r = a - (a / b * b) ; finproc r ;\n\
          k = 8 modulo 3 ; l = modulo 8 3 ;\n\
          debproc opt x*flottant n/entier ; si (non (exis n)) ; n = 2 ; finsi ; finproc (x * n) ;\n\
-         m = opt 3. ; o = opt 3. 5 ;",
-    );
+         m = opt 3. ; o = opt 3. 5 ;");
     assert_eq!(num(&g, "k"), 2.0);
     assert_eq!(num(&g, "l"), 2.0);
     assert_eq!(num(&g, "m"), 6.0);
@@ -109,21 +100,18 @@ fn procedure_arguments_by_type_on_both_sides() {
 
 #[test]
 fn respro_argu_and_quitter_out_of_a_procedure() {
-    let g = run(
-        "debproc p ; argu x*entier ; respro (x + 1) ; si (x > 0) ; quitter p ; finsi ; respro 99 ; finproc ;\n\
-         a = p 5 ; b c = p -1 ;",
-    );
+    let g =
+        run("debproc p ; argu x*entier ; respro (x + 1) ; si (x > 0) ; quitter p ; finsi ; respro 99 ; finproc ;\n\
+         a = p 5 ; b c = p -1 ;");
     assert_eq!(num(&g, "a"), 6.0);
     assert_eq!((num(&g, "b"), num(&g, "c")), (0.0, 99.0));
 }
 
 #[test]
 fn tables_alias_and_keys_of_several_types() {
-    let g = run(
-        "t = table ; t . 'K' = 2.5 ; t . 1 = 'UN' ; t2 = t ; t2 . 2 = 7 ; t3 = tabl t ; t3 . vrai = 1 ;\n\
+    let g = run("t = table ; t . 'K' = 2.5 ; t . 1 = 'UN' ; t2 = t ; t2 . 2 = 7 ; t3 = tabl t ; t3 . vrai = 1 ;\n\
          a = t . 2 ; b = t.1 ; i = 2 ; c = t . i ; d = dime t ; s = tabl 'VECTEUR' ; e = s . 'SOUSTYPE' ;\n\
-         u = table ; u . 'A' = table ; u . 'A' . 3 = 4. ; f = u . 'A' . 3 ;",
-    );
+         u = table ; u . 'A' = table ; u . 'A' . 3 = 4. ; f = u . 'A' . 3 ;");
     assert_eq!(num(&g, "a"), 7.0);
     assert_eq!(g.get("b").unwrap().as_mot(), Some("UN"));
     assert_eq!(num(&g, "c"), 7.0);
@@ -134,13 +122,11 @@ fn tables_alias_and_keys_of_several_types() {
 
 #[test]
 fn loop_forms() {
-    let g = run(
-        "s = 0 ; repeter b 4 ; s = s + &b ; fin b ;\n\
+    let g = run("s = 0 ; repeter b 4 ; s = s + &b ; fin b ;\n\
          t = 0 ; repeter 3 c ; t = t + 1 ; fin c ;\n\
          n = 0 ; repeter d ; n = n + 1 ; si (n >eg 5) ; quitter d ; finsi ; fin d ;\n\
          z = 0 ; repeter e 0 ; z = 1 ; fin e ;\n\
-         k = 0 ; repeter o 3 ; repeter i 3 ; si (&i ega 2) ; iterer i ; finsi ; k = k + 1 ; fin i ; fin o ;",
-    );
+         k = 0 ; repeter o 3 ; repeter i 3 ; si (&i ega 2) ; iterer i ; finsi ; k = k + 1 ; fin i ; fin o ;");
     assert_eq!(num(&g, "s"), 10.0);
     assert_eq!(num(&g, "t"), 3.0);
     assert_eq!(num(&g, "n"), 5.0);
@@ -151,9 +137,7 @@ fn loop_forms() {
 #[test]
 fn fin_ends_the_run() {
     let mut g = Interpreter::new();
-    let r = g
-        .run_str("t", "a = 1 ; si (a ega 1) ; fin ; finsi ; a = 2 ;")
-        .unwrap();
+    let r = g.run_str("t", "a = 1 ; si (a ega 1) ; fin ; finsi ; a = 2 ;").unwrap();
     assert_eq!(r, gibi::Outcome::Finished);
     assert_eq!(g.get_f64("a"), Some(1.0));
 }
@@ -192,7 +176,9 @@ fn lists_words_and_math() {
 
 #[test]
 fn comparisons_and_logic() {
-    let g = run("a = (1 < 2) et (2 >eg 2) ; b = non ((3 <eg 2) ou faux) ; c = 'AB  ' ega 'AB' ; d = 1 ega 1.0000001 1.e-3 ;");
+    let g = run(
+        "a = (1 < 2) et (2 >eg 2) ; b = non ((3 <eg 2) ou faux) ; c = 'AB  ' ega 'AB' ; d = 1 ega 1.0000001 1.e-3 ;",
+    );
     for n in ["a", "b", "c", "d"] {
         assert!(matches!(g.get(n), Some(Value::Bool(true))), "{}", n);
     }
@@ -211,8 +197,7 @@ fn type_exis_oubl() {
 fn messages_go_to_the_sink() {
     let out = Capture::default();
     let mut g = Interpreter::builder().output(out.clone()).build();
-    g.run_str("t", "mess 'x =' 1.5 2 vrai ; x = chai 'a' 1 ' ' 2.5 ;")
-        .unwrap();
+    g.run_str("t", "mess 'x =' 1.5 2 vrai ; x = chai 'a' 1 ' ' 2.5 ;").unwrap();
     assert_eq!(out.text(), "x = 1.50000E+00 2 VRAI\n");
     assert_eq!(g.get("x").unwrap().as_mot(), Some("a1 2.50000E+00"));
 }
@@ -220,15 +205,9 @@ fn messages_go_to_the_sink() {
 #[test]
 fn errors_point_at_the_operator_with_usage() {
     let mut g = Interpreter::new();
-    let e = g
-        .run_str("deck.dgibi", "a = 1 ;\nb = 2 + 'x' ;\n")
-        .unwrap_err();
+    let e = g.run_str("deck.dgibi", "a = 1 ;\nb = 2 + 'x' ;\n").unwrap_err();
     let r = e.render();
-    assert!(
-        r.starts_with("deck.dgibi:2:7: error: +: cannot combine ENTIER and MOT"),
-        "{}",
-        r
-    );
+    assert!(r.starts_with("deck.dgibi:2:7: error: +: cannot combine ENTIER and MOT"), "{}", r);
     assert!(r.contains("usage: OBJ1 + OBJ2"), "{}", r);
     // Objects defined before the error survive.
     assert_eq!(g.get_f64("a"), Some(1.0));

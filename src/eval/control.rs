@@ -23,12 +23,7 @@ impl Interp {
                 self.exec_instr(ins)?;
                 Ok(Flow::Next)
             }
-            Stmt::If {
-                cond,
-                then,
-                otherwise,
-                ..
-            } => {
+            Stmt::If { cond, then, otherwise, .. } => {
                 self.echo(cond);
                 let c = self.condition(cond)?;
                 if c {
@@ -39,9 +34,7 @@ impl Interp {
                     Ok(Flow::Next)
                 }
             }
-            Stmt::Loop {
-                name, count, body, ..
-            } => self.exec_loop(name, count.as_ref(), body),
+            Stmt::Loop { name, count, body, .. } => self.exec_loop(name, count.as_ref(), body),
             Stmt::Quit { name, .. } => Ok(Flow::Quit(name.clone())),
             Stmt::Iter { name, .. } => Ok(Flow::Iter(name.clone())),
             Stmt::End { .. } => Ok(Flow::End),
@@ -54,13 +47,10 @@ impl Interp {
                 Ok(Flow::Next)
             }
             Stmt::Respro(ins) => {
-                let vals = self
-                    .eval_items_raw(&ins.items)
-                    .map_err(|e| e.with_span_if_missing(ins.span, &self.source))?;
+                let vals =
+                    self.eval_items_raw(&ins.items).map_err(|e| e.with_span_if_missing(ins.span, &self.source))?;
                 if self.store.top().proc_name.is_none() {
-                    return Err(
-                        Error::runtime("RESPRO is only allowed inside a procedure").at(ins.span)
-                    );
+                    return Err(Error::runtime("RESPRO is only allowed inside a procedure").at(ins.span));
                 }
                 self.store.top_mut().results.extend(vals);
                 Ok(Flow::Next)
@@ -70,30 +60,17 @@ impl Interp {
 
     fn echo(&mut self, ins: &Instr) {
         if self.opts.echo >= 1 {
-            let text = self
-                .source
-                .slice(ins.span)
-                .split_whitespace()
-                .collect::<Vec<_>>()
-                .join(" ");
+            let text = self.source.slice(ins.span).split_whitespace().collect::<Vec<_>>().join(" ");
             self.println(&format!("$ {}", text));
         }
     }
 
     fn condition(&mut self, cond: &Instr) -> Result<bool> {
-        let vals = self
-            .eval_items(&cond.items)
-            .map_err(|e| e.with_span_if_missing(cond.span, &self.source))?;
+        let vals = self.eval_items(&cond.items).map_err(|e| e.with_span_if_missing(cond.span, &self.source))?;
         match vals.as_slice() {
             [Value::Bool(b)] => Ok(*b),
-            [v] => Err(
-                Error::runtime(format!("SI needs a LOGIQUE, found {}", v.type_name()))
-                    .at(cond.span),
-            ),
-            _ => Err(
-                Error::runtime(format!("SI needs one LOGIQUE, found {} values", vals.len()))
-                    .at(cond.span),
-            ),
+            [v] => Err(Error::runtime(format!("SI needs a LOGIQUE, found {}", v.type_name())).at(cond.span)),
+            _ => Err(Error::runtime(format!("SI needs one LOGIQUE, found {} values", vals.len())).at(cond.span)),
         }
     }
 
@@ -111,11 +88,7 @@ impl Interp {
                     ))
                     .at(c.span))
                 }
-                _ => {
-                    return Err(
-                        Error::runtime(format!("REPETER {}: one count expected", name)).at(c.span),
-                    )
-                }
+                _ => return Err(Error::runtime(format!("REPETER {}: one count expected", name)).at(c.span)),
             },
         };
         self.store.set(name, Value::Bloc(name.into()));
@@ -145,9 +118,7 @@ impl Interp {
     pub fn exec_instr(&mut self, ins: &Instr) -> Result<()> {
         self.echo(ins);
         self.called_proc = false;
-        let mut vals = self
-            .eval_items(&ins.items)
-            .map_err(|e| e.with_span_if_missing(ins.span, &self.source))?;
+        let mut vals = self.eval_items(&ins.items).map_err(|e| e.with_span_if_missing(ins.span, &self.source))?;
         if ins.targets.is_empty() {
             return Ok(());
         }
@@ -156,42 +127,29 @@ impl Interp {
         }
         if vals.len() != ins.targets.len() {
             let msg = if vals.len() > ins.targets.len() {
-                format!(
-                    "{} results for {} name(s): a result is left over (error 11)",
-                    vals.len(),
-                    ins.targets.len()
-                )
+                format!("{} results for {} name(s): a result is left over (error 11)", vals.len(), ins.targets.len())
             } else {
                 format!("{} result(s) for {} names", vals.len(), ins.targets.len())
             };
             let types: Vec<String> = vals.iter().map(|v| v.type_name()).collect();
-            let mut e = Error::runtime(msg)
-                .at(ins.span)
-                .with_span_if_missing(ins.span, &self.source);
+            let mut e = Error::runtime(msg).at(ins.span).with_span_if_missing(ins.span, &self.source);
             if !types.is_empty() {
                 e = e.note(format!("results: {}", types.join(" ")));
             }
             return Err(e);
         }
         for (t, v) in ins.targets.iter().zip(vals) {
-            self.assign(t, v)
-                .map_err(|e| e.with_span_if_missing(t.span, &self.source))?;
+            self.assign(t, v).map_err(|e| e.with_span_if_missing(t.span, &self.source))?;
         }
         Ok(())
     }
 
     fn assign(&mut self, t: &Target, v: Value) -> Result<()> {
         if let Some(ty) = &t.typed {
-            let want =
-                Ty::from_name(ty).ok_or_else(|| Error::runtime(format!("unknown type {}", ty)))?;
+            let want = Ty::from_name(ty).ok_or_else(|| Error::runtime(format!("unknown type {}", ty)))?;
             let ok = v.ty() == want || (want == Ty::Flottant && v.ty() == Ty::Entier);
             if !ok {
-                return Err(Error::runtime(format!(
-                    "{} is declared {} but receives a {}",
-                    t.name,
-                    ty,
-                    v.type_name()
-                )));
+                return Err(Error::runtime(format!("{} is declared {} but receives a {}", t.name, ty, v.type_name())));
             }
         }
         if t.keys.is_empty() {
@@ -199,20 +157,18 @@ impl Interp {
             return Ok(());
         }
         // T . k1 . k2 = v : walk to the last table, then set in place.
-        let mut cur = self.store.get(&t.name).cloned().ok_or_else(|| {
-            Error::runtime(format!("{} is not a TABLE (it does not exist)", t.name))
-        })?;
+        let mut cur = self
+            .store
+            .get(&t.name)
+            .cloned()
+            .ok_or_else(|| Error::runtime(format!("{} is not a TABLE (it does not exist)", t.name)))?;
         let n = t.keys.len();
         for (i, kit) in t.keys.iter().enumerate() {
             let key = self.key_value(kit)?;
             let table = match &cur {
                 Value::Table(tb) => tb.clone(),
                 other => {
-                    return Err(Error::runtime(format!(
-                        "'.' indexes a TABLE, not a {}",
-                        other.type_name()
-                    ))
-                    .at(kit.span))
+                    return Err(Error::runtime(format!("'.' indexes a TABLE, not a {}", other.type_name())).at(kit.span))
                 }
             };
             if i + 1 == n {

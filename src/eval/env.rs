@@ -29,9 +29,7 @@ pub struct Store {
 
 impl Default for Store {
     fn default() -> Self {
-        Store {
-            frames: vec![Frame::default()],
-        }
+        Store { frames: vec![Frame::default()] }
     }
 }
 
@@ -60,19 +58,12 @@ impl Store {
     }
 
     pub fn top_mut(&mut self) -> &mut Frame {
-        self.frames
-            .last_mut()
-            .expect("the global frame always exists")
+        self.frames.last_mut().expect("the global frame always exists")
     }
 
     pub fn counter(&self, name: &str) -> Option<i64> {
         let name = truncate(name);
-        self.top()
-            .loops
-            .iter()
-            .rev()
-            .find(|(n, _)| *n == name)
-            .map(|(_, i)| *i)
+        self.top().loops.iter().rev().find(|(n, _)| *n == name).map(|(_, i)| *i)
     }
 
     /// Names visible from the current frame, sorted, with their values.

@@ -53,21 +53,12 @@ impl Interp {
     /// three numbers remain).
     pub fn eval_items(&mut self, items: &[Item]) -> Result<Vec<Value>> {
         let toks = self.tokens(items)?;
-        let span = items
-            .iter()
-            .map(|i| i.span)
-            .reduce(Span::join)
-            .unwrap_or_default();
+        let span = items.iter().map(|i| i.span).reduce(Span::join).unwrap_or_default();
         let (mut vals, ran_operator) = self.run_tokens(toks)?;
         // Numbers left over become a POINT only when they were written as
         // operands: `x y = coor p` keeps the two results of COOR.
-        if !ran_operator
-            && (vals.len() == 2 || vals.len() == 3)
-            && vals.iter().all(Value::is_number)
-        {
-            vals = vec![self
-                .make_point(&vals)
-                .map_err(|e| e.with_span_if_missing(span, &self.source))?];
+        if !ran_operator && (vals.len() == 2 || vals.len() == 3) && vals.iter().all(Value::is_number) {
+            vals = vec![self.make_point(&vals).map_err(|e| e.with_span_if_missing(span, &self.source))?];
         }
         Ok(vals)
     }
@@ -75,9 +66,7 @@ impl Interp {
     fn make_point(&mut self, nums: &[Value]) -> Result<Value> {
         let dim = self.opts.dime;
         if dim == 0 {
-            return Err(Error::runtime(
-                "two or three numbers make a POINT, which needs OPTI DIME first (error 14)",
-            ));
+            return Err(Error::runtime("two or three numbers make a POINT, which needs OPTI DIME first (error 14)"));
         }
         let f: Vec<f64> = nums.iter().filter_map(Value::as_f64).collect();
         if f.len() < dim {
@@ -90,11 +79,7 @@ impl Interp {
         }
         let mut x = [0.0; 3];
         x[..dim].copy_from_slice(&f[..dim]);
-        let dens = if f.len() > dim {
-            f[dim]
-        } else {
-            self.opts.dens
-        };
+        let dens = if f.len() > dim { f[dim] } else { self.opts.dens };
         Ok(Value::Point(self.nodes.push(x, dens)))
     }
 
@@ -113,34 +98,22 @@ impl Interp {
             let span = it.span;
             match &it.kind {
                 ItemKind::Dot => {
-                    let key_item = items.get(i + 1).ok_or_else(|| {
-                        Error::runtime("'.' must be followed by a table key").at(span)
-                    })?;
+                    let key_item = items
+                        .get(i + 1)
+                        .ok_or_else(|| Error::runtime("'.' must be followed by a table key").at(span))?;
                     let table = match out.pop() {
-                        Some(Tok {
-                            kind: TokKind::Val(v),
-                            span: s,
-                            ..
-                        }) => (v, s),
+                        Some(Tok { kind: TokKind::Val(v), span: s, .. }) => (v, s),
                         _ => return Err(Error::runtime("'.' must follow a TABLE").at(span)),
                     };
                     let key = self.key_value(key_item)?;
                     let v = index(&table.0, &key).map_err(|e| e.at(table.1.join(key_item.span)))?;
-                    out.push(Tok {
-                        kind: TokKind::Val(v),
-                        span: table.1.join(key_item.span),
-                        name: None,
-                    });
+                    out.push(Tok { kind: TokKind::Val(v), span: table.1.join(key_item.span), name: None });
                     i += 2;
                     continue;
                 }
                 ItemKind::Group(g) => {
                     for v in self.eval_items(g)? {
-                        out.push(Tok {
-                            kind: TokKind::Val(v),
-                            span,
-                            name: None,
-                        });
+                        out.push(Tok { kind: TokKind::Val(v), span, name: None });
                     }
                 }
                 kind => {
@@ -171,9 +144,7 @@ impl Interp {
             ItemKind::Counter(n) => match self.store.counter(n) {
                 Some(c) => TokKind::Val(Value::Int(c)),
                 None => {
-                    return Err(
-                        Error::runtime(format!("&{}: no REPETER {} is running", n, n)).at(span),
-                    );
+                    return Err(Error::runtime(format!("&{}: no REPETER {} is running", n, n)).at(span));
                 }
             },
             ItemKind::Sym(s) => TokKind::Sym(s),
@@ -202,10 +173,7 @@ impl Interp {
 
     /// Read tokens left to right, running operators as they come.
     pub fn run_tokens(&mut self, toks: Vec<Tok>) -> Result<(Vec<Value>, bool)> {
-        let mut st = GroupState {
-            left: Vec::new(),
-            right: toks.into(),
-        };
+        let mut st = GroupState { left: Vec::new(), right: toks.into() };
         let mut ran = false;
         while let Some(t) = st.right.pop_front() {
             ran |= !matches!(t.kind, TokKind::Val(ref v) if !matches!(v, Value::Proc(_)));
@@ -226,11 +194,7 @@ impl Interp {
                 },
                 TokKind::Sym(s) => match self.registry.find(s) {
                     Some(op) => self.invoke(op, &mut st, t.span)?,
-                    None => {
-                        return Err(
-                            Error::runtime(format!("'{}' is not an operator here", s)).at(t.span)
-                        )
-                    }
+                    None => return Err(Error::runtime(format!("'{}' is not an operator here", s)).at(t.span)),
                 },
             }
         }
@@ -256,19 +220,11 @@ impl Interp {
 /// `T . k`: the entry of a table (or of an object that acts like one).
 pub fn index(v: &Value, key: &Value) -> Result<Value> {
     match v {
-        Value::Table(t) => t
-            .borrow()
-            .get(&Key::from_value(key))
-            .cloned()
-            .ok_or_else(|| {
-                Error::runtime(format!(
-                    "the TABLE has no entry {}",
-                    crate::value::list_value_short(key)
-                ))
-            }),
-        other => Err(Error::runtime(format!(
-            "'.' indexes a TABLE, not a {}",
-            other.type_name()
-        ))),
+        Value::Table(t) => {
+            t.borrow().get(&Key::from_value(key)).cloned().ok_or_else(|| {
+                Error::runtime(format!("the TABLE has no entry {}", crate::value::list_value_short(key)))
+            })
+        }
+        other => Err(Error::runtime(format!("'.' indexes a TABLE, not a {}", other.type_name()))),
     }
 }

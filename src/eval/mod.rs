@@ -88,10 +88,9 @@ impl Interp {
                 Ok(true)
             }
             Flow::Next => Ok(false),
-            Flow::Quit(n) | Flow::Iter(n) => Err(Error::new(
-                ErrorKind::Runtime,
-                format!("QUITTER/ITERER {}: no such block is running", n),
-            )),
+            Flow::Quit(n) | Flow::Iter(n) => {
+                Err(Error::new(ErrorKind::Runtime, format!("QUITTER/ITERER {}: no such block is running", n)))
+            }
         }
     }
 }

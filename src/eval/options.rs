@@ -56,28 +56,17 @@ impl FilePolicy {
         let p = Path::new(path);
         match self {
             FilePolicy::Anywhere => Ok(p.to_path_buf()),
-            FilePolicy::Nothing => Err(Error::io(format!(
-                "file access to '{}' is not allowed by the host application",
-                path
-            ))),
+            FilePolicy::Nothing => {
+                Err(Error::io(format!("file access to '{}' is not allowed by the host application", path)))
+            }
             FilePolicy::Under(root) => {
-                let full = if p.is_absolute() {
-                    p.to_path_buf()
-                } else {
-                    root.join(p)
-                };
-                let ok = !p
-                    .components()
-                    .any(|c| matches!(c, std::path::Component::ParentDir))
-                    && full.starts_with(root);
+                let full = if p.is_absolute() { p.to_path_buf() } else { root.join(p) };
+                let ok =
+                    !p.components().any(|c| matches!(c, std::path::Component::ParentDir)) && full.starts_with(root);
                 if ok {
                     Ok(full)
                 } else {
-                    Err(Error::io(format!(
-                        "'{}' is outside the directory this run may use ({})",
-                        path,
-                        root.display()
-                    )))
+                    Err(Error::io(format!("'{}' is outside the directory this run may use ({})", path, root.display())))
                 }
             }
         }

@@ -13,30 +13,16 @@ use super::env::Frame;
 use super::machine::{GroupState, TokKind};
 
 impl Interp {
-    pub fn call_proc(
-        &mut self,
-        p: Rc<ProcDef>,
-        st: &mut GroupState,
-        span: Span,
-    ) -> Result<Vec<Value>> {
+    pub fn call_proc(&mut self, p: Rc<ProcDef>, st: &mut GroupState, span: Span) -> Result<Vec<Value>> {
         if self.store.frames.len() > 200 {
-            return Err(Error::runtime(format!(
-                "{}: procedures nested more than 200 deep",
-                p.name
-            ))
-            .at(span));
+            return Err(Error::runtime(format!("{}: procedures nested more than 200 deep", p.name)).at(span));
         }
-        let mut frame = Frame {
-            proc_name: Some(p.name.clone()),
-            ..Frame::default()
-        };
+        let mut frame = Frame { proc_name: Some(p.name.clone()), ..Frame::default() };
         for param in &p.params {
             if let Some(v) = take_param(st, param, &self.registry)? {
                 frame.vars.insert(param.name.clone(), v);
             } else if !param.optional {
-                return Err(missing(&p.name, param)
-                    .at(span)
-                    .with_span_if_missing(span, &self.source));
+                return Err(missing(&p.name, param).at(span).with_span_if_missing(span, &self.source));
             }
         }
         frame.pending = std::mem::take(st);
@@ -61,30 +47,25 @@ impl Interp {
                 self.finished = true;
                 Err(Error::new(crate::error::ErrorKind::Finished, "FIN"))
             }
-            Flow::Quit(n) | Flow::Iter(n) => Err(Error::runtime(format!(
-                "{}: QUITTER/ITERER {} leaves no running block",
-                p.name, n
-            ))
-            .at(span)),
+            Flow::Quit(n) | Flow::Iter(n) => {
+                Err(Error::runtime(format!("{}: QUITTER/ITERER {} leaves no running block", p.name, n)).at(span))
+            }
         }
     }
 
     /// ARGU: read more arguments of the current call.
     pub fn bind_argu(&mut self, params: &[Param], span: Span) -> Result<()> {
-        let name =
-            self.store.top().proc_name.clone().ok_or_else(|| {
-                Error::runtime("ARGU is only allowed inside a procedure").at(span)
-            })?;
+        let name = self
+            .store
+            .top()
+            .proc_name
+            .clone()
+            .ok_or_else(|| Error::runtime("ARGU is only allowed inside a procedure").at(span))?;
         let mut st = std::mem::take(&mut self.store.top_mut().pending);
         let mut r = Ok(());
         for p in params {
             match take_param(&mut st, p, &self.registry) {
-                Ok(Some(v)) => self
-                    .store
-                    .top_mut()
-                    .vars
-                    .insert(p.name.clone(), v)
-                    .map_or((), |_| ()),
+                Ok(Some(v)) => self.store.top_mut().vars.insert(p.name.clone(), v).map_or((), |_| ()),
                 Ok(None) if p.optional => {}
                 Ok(None) => {
                     r = Err(missing(&name, p).at(span));
@@ -112,16 +93,9 @@ fn missing(proc_name: &str, p: &Param) -> Error {
 
 /// One argument of a given type: among the pushed operands first (oldest
 /// first), else the next token on the right.
-fn take_param(
-    st: &mut GroupState,
-    p: &Param,
-    registry: &crate::ops::Registry,
-) -> Result<Option<Value>> {
+fn take_param(st: &mut GroupState, p: &Param, registry: &crate::ops::Registry) -> Result<Option<Value>> {
     let want = match &p.ty {
-        Some(t) => Some(
-            Ty::from_name(t)
-                .ok_or_else(|| Error::runtime(format!("unknown type {} for {}", t, p.name)))?,
-        ),
+        Some(t) => Some(Ty::from_name(t).ok_or_else(|| Error::runtime(format!("unknown type {} for {}", t, p.name)))?),
         None => None,
     };
     let fits = |v: &Value| match want {

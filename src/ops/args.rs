@@ -89,20 +89,14 @@ pub fn keyword_matches(word: &str, choice: &str) -> bool {
 
 impl<'a> Args<'a> {
     pub fn new(op: &'a OpSpec, st: &'a mut GroupState, registry: &'a Registry, span: Span) -> Self {
-        Args {
-            op,
-            st,
-            registry,
-            span,
-        }
+        Args { op, st, registry, span }
     }
 
     // ---- errors: every wording lives here -------------------------------
 
     /// `OP: message` with the operator's usage as a note.
     pub fn err(&self, msg: impl std::fmt::Display) -> Error {
-        Error::runtime(format!("{}: {}", self.op.name, msg))
-            .note(format!("usage: {}", self.op.signature))
+        Error::runtime(format!("{}: {}", self.op.name, msg)).note(format!("usage: {}", self.op.signature))
     }
 
     /// A required argument is missing: says what was found instead.
@@ -245,8 +239,7 @@ impl<'a> Args<'a> {
 
     /// Like [`keyword`](Self::keyword) but the word must be there.
     pub fn req_keyword(&mut self, choices: &[&'static str]) -> Result<&'static str> {
-        self.keyword(choices)
-            .ok_or_else(|| self.missing(&format!("one of {}", choices.join(" "))))
+        self.keyword(choices).ok_or_else(|| self.missing(&format!("one of {}", choices.join(" "))))
     }
 
     /// Any word on the right (not a symbol), consumed.
@@ -294,10 +287,7 @@ fn article(ty: &str) -> &'static str {
 impl Args<'_> {
     /// A `*` on the right (the `n*value` repeat of PROG, LECT, MOTS).
     pub fn sign_like_star(&mut self) -> bool {
-        if matches!(
-            self.st.right.front().map(|t| &t.kind),
-            Some(TokKind::Sym("*"))
-        ) {
+        if matches!(self.st.right.front().map(|t| &t.kind), Some(TokKind::Sym("*"))) {
             self.st.right.pop_front();
             true
         } else {

@@ -9,17 +9,53 @@ use crate::value::Value;
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
-    OpDef { name: "+", signature: "OBJ1 + OBJ2", doc: "Sum: numbers, lists element-wise, points, fields, rigidities.", example: "x = 1 + 2 ;", f: plus },
-    OpDef { name: "-", signature: "OBJ1 - OBJ2", doc: "Difference: numbers, lists element-wise, points, fields, rigidities.", example: "x = 5 - 2 ;", f: minus },
-    OpDef { name: "*", signature: "OBJ1 * OBJ2", doc: "Product: numbers, lists element-wise, scaling; RIGIDITE * CHPOINT is the matrix-vector product.", example: "x = 2 * 3. ;", f: times },
-    OpDef { name: "/", signature: "OBJ1 / OBJ2", doc: "Quotient; ENTIER / ENTIER truncates.", example: "x = 7 / 2 ;", f: divide },
+    OpDef {
+        name: "+",
+        signature: "OBJ1 + OBJ2",
+        doc: "Sum: numbers, lists element-wise, points, fields, rigidities.",
+        example: "x = 1 + 2 ;",
+        f: plus,
+    },
+    OpDef {
+        name: "-",
+        signature: "OBJ1 - OBJ2",
+        doc: "Difference: numbers, lists element-wise, points, fields, rigidities.",
+        example: "x = 5 - 2 ;",
+        f: minus,
+    },
+    OpDef {
+        name: "*",
+        signature: "OBJ1 * OBJ2",
+        doc: "Product: numbers, lists element-wise, scaling; RIGIDITE * CHPOINT is the matrix-vector product.",
+        example: "x = 2 * 3. ;",
+        f: times,
+    },
+    OpDef {
+        name: "/",
+        signature: "OBJ1 / OBJ2",
+        doc: "Quotient; ENTIER / ENTIER truncates.",
+        example: "x = 7 / 2 ;",
+        f: divide,
+    },
     OpDef { name: "**", signature: "OBJ1 ** OBJ2", doc: "Power.", example: "x = 2. ** 0.5 ;", f: power },
     OpDef { name: "<", signature: "NUM1 < NUM2", doc: "Less than.", example: "si (x < 1.) ;", f: lt },
     OpDef { name: ">", signature: "NUM1 > NUM2", doc: "Greater than.", example: "si (x > 1.) ;", f: gt },
     OpDef { name: "<EG", signature: "NUM1 <EG NUM2", doc: "Less than or equal.", example: "si (x <EG 1.) ;", f: le },
     OpDef { name: ">EG", signature: "NUM1 >EG NUM2", doc: "Greater than or equal.", example: "si (x >EG 1.) ;", f: ge },
-    OpDef { name: "EGA", signature: "OBJ1 EGA OBJ2 (TOLERANCE)", doc: "Equality of numbers, words, logicals, points, integer lists.", example: "si (i ega 3) ;", f: ega },
-    OpDef { name: "NEG", signature: "OBJ1 NEG OBJ2 (TOLERANCE)", doc: "Inequality (the negation of EGA).", example: "si (m neg 'TOTO') ;", f: neg },
+    OpDef {
+        name: "EGA",
+        signature: "OBJ1 EGA OBJ2 (TOLERANCE)",
+        doc: "Equality of numbers, words, logicals, points, integer lists.",
+        example: "si (i ega 3) ;",
+        f: ega,
+    },
+    OpDef {
+        name: "NEG",
+        signature: "OBJ1 NEG OBJ2 (TOLERANCE)",
+        doc: "Inequality (the negation of EGA).",
+        example: "si (m neg 'TOTO') ;",
+        f: neg,
+    },
     OpDef { name: "OU", signature: "LOG1 OU LOG2", doc: "Logical or.", example: "si ((x > 1) ou (y > 1)) ;", f: ou },
     OpDef { name: "NON", signature: "NON LOG1", doc: "Logical negation.", example: "si (non (exis t 1)) ;", f: non },
 ];
@@ -71,8 +107,7 @@ fn int_op(a: &Args, op: Bin, x: i64, y: i64) -> Result<Value> {
             u32::try_from(y).ok().and_then(|e| x.checked_pow(e))
         }
     };
-    Ok(r.map(Value::Int)
-        .unwrap_or_else(|| Value::Float(float_op(op, x as f64, y as f64))))
+    Ok(r.map(Value::Int).unwrap_or_else(|| Value::Float(float_op(op, x as f64, y as f64))))
 }
 
 fn binary(it: &mut Interp, a: &mut Args, op: Bin) -> Result<Vec<Value>> {
@@ -84,25 +119,14 @@ pub(crate) fn apply(it: &mut Interp, a: &Args, op: Bin, x: Value, y: Value) -> R
     use Value::*;
     Ok(match (&x, &y) {
         (Int(i), Int(j)) => int_op(a, op, *i, *j)?,
-        (Int(_) | Float(_), Int(_) | Float(_)) => Float(float_op(
-            op,
-            x.as_f64().unwrap_or(0.0),
-            y.as_f64().unwrap_or(0.0),
-        )),
+        (Int(_) | Float(_), Int(_) | Float(_)) => {
+            Float(float_op(op, x.as_f64().unwrap_or(0.0), y.as_f64().unwrap_or(0.0)))
+        }
         (ListReel(l), ListReel(m)) => {
             if l.len() != m.len() {
-                return Err(a.err(format!(
-                    "lists of different lengths ({} and {})",
-                    l.len(),
-                    m.len()
-                )));
+                return Err(a.err(format!("lists of different lengths ({} and {})", l.len(), m.len())));
             }
-            ListReel(Rc::new(
-                l.iter()
-                    .zip(m.iter())
-                    .map(|(p, q)| float_op(op, *p, *q))
-                    .collect(),
-            ))
+            ListReel(Rc::new(l.iter().zip(m.iter()).map(|(p, q)| float_op(op, *p, *q)).collect()))
         }
         (ListReel(l), Int(_) | Float(_)) => {
             let s = y.as_f64().unwrap_or(0.0);
@@ -152,13 +176,7 @@ pub(crate) fn apply(it: &mut Interp, a: &Args, op: Bin, x: Value, y: Value) -> R
         }
         _ => match super::union::fields_binary(it, a, op, &x, &y)? {
             Some(v) => v,
-            None => {
-                return Err(a.err(format!(
-                    "cannot combine {} and {}",
-                    x.type_name(),
-                    y.type_name()
-                )))
-            }
+            None => return Err(a.err(format!("cannot combine {} and {}", x.type_name(), y.type_name()))),
         },
     })
 }
@@ -183,11 +201,7 @@ fn compare(a: &mut Args, f: fn(f64, f64) -> bool) -> Result<Vec<Value>> {
     let (x, y) = operands(a)?;
     match (x.as_f64(), y.as_f64()) {
         (Some(p), Some(q)) => Ok(vec![Value::Bool(f(p, q))]),
-        _ => Err(a.err(format!(
-            "compares numbers, found {} and {}",
-            x.type_name(),
-            y.type_name()
-        ))),
+        _ => Err(a.err(format!("compares numbers, found {} and {}", x.type_name(), y.type_name()))),
     }
 }
 fn lt(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
@@ -206,17 +220,11 @@ fn ge(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 /// EGA/NEG equality, with an optional absolute tolerance for numbers.
 fn equal(it: &Interp, a: &mut Args) -> Result<bool> {
     let (x, y) = operands(a)?;
-    let tol = if x.is_number() {
-        a.opt_num_right().unwrap_or(0.0)
-    } else {
-        0.0
-    };
+    let tol = if x.is_number() { a.opt_num_right().unwrap_or(0.0) } else { 0.0 };
     use Value::*;
     Ok(match (&x, &y) {
         (Int(i), Int(j)) => i == j,
-        (Int(_) | Float(_), Int(_) | Float(_)) => {
-            (x.as_f64().unwrap_or(0.0) - y.as_f64().unwrap_or(0.0)).abs() <= tol
-        }
+        (Int(_) | Float(_), Int(_) | Float(_)) => (x.as_f64().unwrap_or(0.0) - y.as_f64().unwrap_or(0.0)).abs() <= tol,
         (Mot(s), Mot(t)) => s.trim_end() == t.trim_end(),
         (Bool(p), Bool(q)) => p == q,
         (Point(p), Point(q)) => p == q || it.nodes.get(*p) == it.nodes.get(*q),
@@ -224,11 +232,7 @@ fn equal(it: &Interp, a: &mut Args) -> Result<bool> {
         (ListReel(l), ListReel(m)) => l == m,
         (ListMots(l), ListMots(m)) => l == m,
         _ => {
-            return Err(a.err(format!(
-                "cannot compare {} with {}",
-                x.type_name(),
-                y.type_name()
-            )));
+            return Err(a.err(format!("cannot compare {} with {}", x.type_name(), y.type_name())));
         }
     })
 }
@@ -243,11 +247,7 @@ fn ou(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let (x, y) = operands(a)?;
     match (x, y) {
         (Value::Bool(p), Value::Bool(q)) => Ok(vec![Value::Bool(p || q)]),
-        (x, y) => Err(a.err(format!(
-            "needs two LOGIQUE, found {} and {}",
-            x.type_name(),
-            y.type_name()
-        ))),
+        (x, y) => Err(a.err(format!("needs two LOGIQUE, found {} and {}", x.type_name(), y.type_name()))),
     }
 }
 

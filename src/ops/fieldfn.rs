@@ -10,12 +10,7 @@ pub(crate) fn abs(_it: &mut Interp, _v: &Value) -> Option<Value> {
     None
 }
 
-pub(crate) fn extremum(
-    _it: &mut Interp,
-    _a: &mut Args,
-    _max: bool,
-    _abs: bool,
-) -> Result<Option<Value>> {
+pub(crate) fn extremum(_it: &mut Interp, _a: &mut Args, _max: bool, _abs: bool) -> Result<Option<Value>> {
     Ok(None)
 }
 

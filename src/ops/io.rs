@@ -7,20 +7,68 @@ use crate::eval::Interp;
 use crate::value::{fmt_float, list_value, Value};
 
 pub(crate) const OPS: &[OpDef] = &[
-    OpDef { name: "OPTI", signature: "OPTI (DIME n) (ELEM type) (MODE mode) (ECHO n) (DENS x) (ERRE w) (TRAC w) (NORM w) (IMPI n) (RESO w) …", doc: "Set options: space dimension, element type, analysis mode, echo, density, …", example: "opti dime 2 elem qua4 mode plan cont ;", f: opti },
-    OpDef { name: "VALE", signature: "VALE ('PREC'|'DIME'|'MODE'|'ELEM'|'DENS'|'ECHO'|'RESO')", doc: "The value of an option (PREC: machine precision).", example: "tol = (vale prec) ** 0.5 ;", f: vale },
-    OpDef { name: "MESS", signature: "MESS OBJ1 OBJ2 …", doc: "Print words and numbers on one line.", example: "mess 'u =' u ;", f: mess },
-    OpDef { name: "LIST", signature: "LIST (OBJ) | LIST ;", doc: "Print an object; alone, list every object.", example: "list u ;", f: list },
-    OpDef { name: "SAUT", signature: "SAUT (n) (LIGN|PAGE)", doc: "Print blank lines.", example: "saut 2 lign ;", f: saut },
-    OpDef { name: "TITR", signature: "TITR OBJ1 …", doc: "Set the title (72 characters at most).", example: "titr 'Cantilever' ;", f: titr },
-    OpDef { name: "TEMP", signature: "TEMP ('IMPR'|'ZERO')", doc: "Print the time spent per operator and per solver phase.", example: "temp ;", f: temp },
-    OpDef { name: "ERRE", signature: "ERRE n | ERRE 'text'", doc: "Raise an error: ERRE 0 does nothing, ERRE 5 aborts the run.", example: "si (err > 1.e-6) ; erre 5 ; finsi ;", f: erre },
+    OpDef {
+        name: "OPTI",
+        signature:
+            "OPTI (DIME n) (ELEM type) (MODE mode) (ECHO n) (DENS x) (ERRE w) (TRAC w) (NORM w) (IMPI n) (RESO w) …",
+        doc: "Set options: space dimension, element type, analysis mode, echo, density, …",
+        example: "opti dime 2 elem qua4 mode plan cont ;",
+        f: opti,
+    },
+    OpDef {
+        name: "VALE",
+        signature: "VALE ('PREC'|'DIME'|'MODE'|'ELEM'|'DENS'|'ECHO'|'RESO')",
+        doc: "The value of an option (PREC: machine precision).",
+        example: "tol = (vale prec) ** 0.5 ;",
+        f: vale,
+    },
+    OpDef {
+        name: "MESS",
+        signature: "MESS OBJ1 OBJ2 …",
+        doc: "Print words and numbers on one line.",
+        example: "mess 'u =' u ;",
+        f: mess,
+    },
+    OpDef {
+        name: "LIST",
+        signature: "LIST (OBJ) | LIST ;",
+        doc: "Print an object; alone, list every object.",
+        example: "list u ;",
+        f: list,
+    },
+    OpDef {
+        name: "SAUT",
+        signature: "SAUT (n) (LIGN|PAGE)",
+        doc: "Print blank lines.",
+        example: "saut 2 lign ;",
+        f: saut,
+    },
+    OpDef {
+        name: "TITR",
+        signature: "TITR OBJ1 …",
+        doc: "Set the title (72 characters at most).",
+        example: "titr 'Cantilever' ;",
+        f: titr,
+    },
+    OpDef {
+        name: "TEMP",
+        signature: "TEMP ('IMPR'|'ZERO')",
+        doc: "Print the time spent per operator and per solver phase.",
+        example: "temp ;",
+        f: temp,
+    },
+    OpDef {
+        name: "ERRE",
+        signature: "ERRE n | ERRE 'text'",
+        doc: "Raise an error: ERRE 0 does nothing, ERRE 5 aborts the run.",
+        example: "si (err > 1.e-6) ; erre 5 ; finsi ;",
+        f: erre,
+    },
 ];
 
 const OPTI_KEYS: &[&str] = &[
-    "DIME", "ELEM", "MODE", "ECHO", "DENS", "ERRE", "TRAC", "NORM", "IMPI", "RESO", "EPSI", "SORT",
-    "LOCA", "SAUV", "REST", "DONN", "LECT", "IMPR", "VERI", "PARA", "ACQU", "POTR", "CALC", "INCO",
-    "COUL", "DEBU", "FTRA",
+    "DIME", "ELEM", "MODE", "ECHO", "DENS", "ERRE", "TRAC", "NORM", "IMPI", "RESO", "EPSI", "SORT", "LOCA", "SAUV",
+    "REST", "DONN", "LECT", "IMPR", "VERI", "PARA", "ACQU", "POTR", "CALC", "INCO", "COUL", "DEBU", "FTRA",
 ];
 
 fn opti(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
@@ -47,10 +95,7 @@ fn opti(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 it.opts.elem = e.to_uppercase();
             }
             "MODE" => {
-                let m = a
-                    .word()
-                    .ok_or_else(|| a.missing("an analysis mode"))?
-                    .to_uppercase();
+                let m = a.word().ok_or_else(|| a.missing("an analysis mode"))?.to_uppercase();
                 let mode = if m.starts_with("PLAN") {
                     let sub = a.req_keyword(&["CONT", "DEFO", "GENE"])?;
                     format!("PLAN {}", sub)
@@ -63,17 +108,8 @@ fn opti(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             }
             "ECHO" => it.opts.echo = a.req::<i64>()?,
             "DENS" => it.opts.dens = a.req_num()?,
-            "ERRE" => {
-                it.opts.erre = a
-                    .word()
-                    .ok_or_else(|| a.missing("NORMAL, FATAL, CONTROLE or IGNORE"))?
-            }
-            "RESO" => {
-                it.opts.reso = a
-                    .word()
-                    .ok_or_else(|| a.missing("DIRECTE or ITERATIVE"))?
-                    .to_uppercase()
-            }
+            "ERRE" => it.opts.erre = a.word().ok_or_else(|| a.missing("NORMAL, FATAL, CONTROLE or IGNORE"))?,
+            "RESO" => it.opts.reso = a.word().ok_or_else(|| a.missing("DIRECTE or ITERATIVE"))?.to_uppercase(),
             other => {
                 // Accepted for compatibility (graphics device, scaling,
                 // debug level, …): keep the value for VALE.
@@ -95,9 +131,7 @@ fn opti(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 fn vale(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let k = a.req_keyword(&[
-        "PREC", "DIME", "MODE", "ELEM", "DENS", "ECHO", "RESO", "ERRE",
-    ])?;
+    let k = a.req_keyword(&["PREC", "DIME", "MODE", "ELEM", "DENS", "ECHO", "RESO", "ERRE"])?;
     Ok(vec![match k {
         "PREC" => Value::Float(f64::EPSILON),
         "DIME" => Value::Int(it.opts.dime as i64),
@@ -120,11 +154,7 @@ pub(crate) fn show(it: &Interp, v: &Value) -> String {
         Value::Point(p) => {
             let x = it.nodes.get(*p);
             let d = it.opts.dime.max(1);
-            x[..d]
-                .iter()
-                .map(|c| fmt_float(*c))
-                .collect::<Vec<_>>()
-                .join(" ")
+            x[..d].iter().map(|c| fmt_float(*c)).collect::<Vec<_>>().join(" ")
         }
         other => format!("<{}>", other.type_name()),
     }
@@ -186,20 +216,14 @@ fn temp(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         return Ok(vec![]);
     }
     a.keyword(&["IMPR", "SGAC", "NOEC"]);
-    let mut lines = vec![format!(
-        "{:<10} {:>8} {:>12}",
-        "operator", "calls", "seconds"
-    )];
+    let mut lines = vec![format!("{:<10} {:>8} {:>12}", "operator", "calls", "seconds")];
     let mut ops: Vec<_> = it.timers.by_op.iter().map(|(k, v)| (*k, *v)).collect();
-    ops.sort_by(|x, y| y.1 .1.cmp(&x.1 .1));
+    ops.sort_by_key(|x| std::cmp::Reverse(x.1 .1));
     for (k, (n, d)) in ops {
         lines.push(format!("{:<10} {:>8} {:>12.6}", k, n, d.as_secs_f64()));
     }
     if !it.timers.phases.is_empty() {
-        lines.push(format!(
-            "{:<24} {:>8} {:>12}",
-            "solver phase", "count", "seconds"
-        ));
+        lines.push(format!("{:<24} {:>8} {:>12}", "solver phase", "count", "seconds"));
         for (k, (n, d)) in &it.timers.phases {
             lines.push(format!("{:<24} {:>8} {:>12.6}", k, n, d.as_secs_f64()));
         }
@@ -216,14 +240,8 @@ fn erre(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     if let Some(n) = a.opt::<i64>() {
         return match n {
             0 => Ok(vec![]),
-            5 => Err(Error::new(
-                ErrorKind::Abort,
-                "ERRE 5: the deck's own check failed (abnormal error, severity 3)",
-            )),
-            n => Err(Error::runtime(format!(
-                "ERRE {}: error raised by the deck",
-                n
-            ))),
+            5 => Err(Error::new(ErrorKind::Abort, "ERRE 5: the deck's own check failed (abnormal error, severity 3)")),
+            n => Err(Error::runtime(format!("ERRE {}: error raised by the deck", n))),
         };
     }
     let mut parts = Vec::new();

@@ -50,40 +50,26 @@ fn sequence(a: &mut Args, int: bool) -> Result<Vec<f64>> {
     loop {
         if let Some(x) = a.opt_num_right() {
             if a.sign_like_star() {
-                let v = a
-                    .opt_num_right()
-                    .ok_or_else(|| a.missing("a value after '*'"))?;
+                let v = a.opt_num_right().ok_or_else(|| a.missing("a value after '*'"))?;
                 if x < 0.0 || x.fract() != 0.0 {
-                    return Err(a.err(format!(
-                        "a repeat count must be a non-negative ENTIER, found {}",
-                        x
-                    )));
+                    return Err(a.err(format!("a repeat count must be a non-negative ENTIER, found {}", x)));
                 }
                 out.extend(std::iter::repeat_n(v, x as usize));
             } else if a.keyword(&["PAS"]).is_some() {
-                let step = a
-                    .opt_num_right()
-                    .ok_or_else(|| a.missing("the step after PAS"))?;
+                let step = a.opt_num_right().ok_or_else(|| a.missing("the step after PAS"))?;
                 if a.keyword(&["NPAS"]).is_some() {
-                    let n = a
-                        .opt_num_right()
-                        .ok_or_else(|| a.missing("the count after NPAS"))?;
+                    let n = a.opt_num_right().ok_or_else(|| a.missing("the count after NPAS"))?;
                     for k in 0..=(n.max(0.0) as usize) {
                         out.push(x + k as f64 * step);
                     }
                 } else {
-                    let end = a
-                        .opt_num_right()
-                        .ok_or_else(|| a.missing("the last value after PAS"))?;
+                    let end = a.opt_num_right().ok_or_else(|| a.missing("the last value after PAS"))?;
                     if step == 0.0 || (end - x) * step < 0.0 {
                         return Err(a.err(format!("PAS {} cannot go from {} to {}", step, x, end)));
                     }
                     let n = ((end - x) / step + 1e-9).floor();
                     if int && ((end - x) / step - n).abs() > 1e-9 {
-                        return Err(a.err(format!(
-                            "PAS {} does not divide the interval from {} to {}",
-                            step, x, end
-                        )));
+                        return Err(a.err(format!("PAS {} does not divide the interval from {} to {}", step, x, end)));
                     }
                     if n > 1.0e8 {
                         return Err(a.err("too many values"));
@@ -115,9 +101,7 @@ fn lect(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     if let Some(x) = v.iter().find(|x| x.fract() != 0.0) {
         return Err(a.err(format!("LECT takes integers, found {}", x)));
     }
-    Ok(vec![Value::ListEnti(Rc::new(
-        v.into_iter().map(|x| x as i64).collect(),
-    ))])
+    Ok(vec![Value::ListEnti(Rc::new(v.into_iter().map(|x| x as i64).collect()))])
 }
 
 fn mots(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
@@ -173,14 +157,7 @@ fn extr(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         let i = idx(a, chars.len())?;
         let j = match a.opt::<i64>() {
             Some(j) if j as usize > i && j as usize <= chars.len() => j as usize,
-            Some(j) => {
-                return Err(a.err(format!(
-                    "end index {} is outside {}..{}",
-                    j,
-                    i + 1,
-                    chars.len()
-                )))
-            }
+            Some(j) => return Err(a.err(format!("end index {} is outside {}..{}", j, i + 1, chars.len()))),
             None => i + 1,
         };
         return Ok(vec![Value::mot(chars[i..j].iter().collect::<String>())]);
@@ -196,8 +173,9 @@ fn dime(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         Value::ListMots(l) => l.len() as i64,
         Value::Mot(s) => s.chars().count() as i64,
         Value::Table(t) => t.borrow().len() as i64,
-        other => crate::ops::fieldfn::dime(other)
-            .ok_or_else(|| a.err(format!("no size for a {}", other.type_name())))?,
+        other => {
+            crate::ops::fieldfn::dime(other).ok_or_else(|| a.err(format!("no size for a {}", other.type_name())))?
+        }
     };
     Ok(vec![Value::Int(n)])
 }

@@ -14,13 +14,7 @@ pub(crate) const OPS: &[OpDef] = &[
         example: "e = abs (x - 1.) ;",
         f: abs,
     },
-    OpDef {
-        name: "SIN",
-        signature: "SIN NUM",
-        doc: "Sine of an angle in degrees.",
-        example: "s = sin 30. ;",
-        f: sin,
-    },
+    OpDef { name: "SIN", signature: "SIN NUM", doc: "Sine of an angle in degrees.", example: "s = sin 30. ;", f: sin },
     OpDef {
         name: "COS",
         signature: "COS NUM",
@@ -35,20 +29,8 @@ pub(crate) const OPS: &[OpDef] = &[
         example: "t = tan 45. ;",
         f: tan,
     },
-    OpDef {
-        name: "ASIN",
-        signature: "ASIN NUM",
-        doc: "Arc sine, in degrees.",
-        example: "a = asin 0.5 ;",
-        f: asin,
-    },
-    OpDef {
-        name: "ACOS",
-        signature: "ACOS NUM",
-        doc: "Arc cosine, in degrees.",
-        example: "a = acos 0.5 ;",
-        f: acos,
-    },
+    OpDef { name: "ASIN", signature: "ASIN NUM", doc: "Arc sine, in degrees.", example: "a = asin 0.5 ;", f: asin },
+    OpDef { name: "ACOS", signature: "ACOS NUM", doc: "Arc cosine, in degrees.", example: "a = acos 0.5 ;", f: acos },
     OpDef {
         name: "ATG",
         signature: "ATG NUM (NUM2)",
@@ -56,20 +38,8 @@ pub(crate) const OPS: &[OpDef] = &[
         example: "a = atg 1. ;",
         f: atg,
     },
-    OpDef {
-        name: "EXP",
-        signature: "EXP NUM",
-        doc: "Exponential.",
-        example: "e = exp 1. ;",
-        f: exp,
-    },
-    OpDef {
-        name: "LOG",
-        signature: "LOG NUM",
-        doc: "Natural logarithm.",
-        example: "l = log 10. ;",
-        f: log,
-    },
+    OpDef { name: "EXP", signature: "EXP NUM", doc: "Exponential.", example: "e = exp 1. ;", f: exp },
+    OpDef { name: "LOG", signature: "LOG NUM", doc: "Natural logarithm.", example: "l = log 10. ;", f: log },
     OpDef {
         name: "ENTI",
         signature: "ENTI NUM ('INFE'|'SUPE'|'PROC')",
@@ -77,13 +47,7 @@ pub(crate) const OPS: &[OpDef] = &[
         example: "i = enti 3.7 ;",
         f: enti,
     },
-    OpDef {
-        name: "PI",
-        signature: "PI",
-        doc: "The number pi.",
-        example: "l = 2. * pi ;",
-        f: pi,
-    },
+    OpDef { name: "PI", signature: "PI", doc: "The number pi.", example: "l = 2. * pi ;", f: pi },
     OpDef {
         name: "MAXI",
         signature: "MAXI (ABS) LISTREEL|LISTENTI|NUM1 NUM2 ...|CHPOINT",
@@ -123,9 +87,7 @@ fn unary(a: &mut Args, f: fn(f64) -> f64) -> Result<Vec<Value>> {
 fn abs(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let v = match a.left_value() {
         Some(v) => v,
-        None => a
-            .right_any()
-            .ok_or_else(|| a.missing("a number, list or field"))?,
+        None => a.right_any().ok_or_else(|| a.missing("a number, list or field"))?,
     };
     Ok(vec![match v {
         Value::Int(i) => Value::Int(i.abs()),
@@ -193,12 +155,7 @@ fn extremum(it: &mut Interp, a: &mut Args, max: bool) -> Result<Vec<Value>> {
     let pick = |x: f64, y: f64| if max { x.max(y) } else { x.min(y) };
     let conv = |x: f64| if use_abs { x.abs() } else { x };
     if let Some(l) = a.opt::<Rc<Vec<f64>>>() {
-        let v = l
-            .iter()
-            .copied()
-            .map(conv)
-            .reduce(pick)
-            .ok_or_else(|| a.err("empty list"))?;
+        let v = l.iter().copied().map(conv).reduce(pick).ok_or_else(|| a.err("empty list"))?;
         return Ok(vec![Value::Float(v)]);
     }
     if let Some(l) = a.opt::<Rc<Vec<i64>>>() {
@@ -216,9 +173,7 @@ fn extremum(it: &mut Interp, a: &mut Args, max: bool) -> Result<Vec<Value>> {
     if nums.is_empty() {
         return Err(a.missing("a list, numbers or a field"));
     }
-    Ok(vec![Value::Float(
-        nums.into_iter().map(conv).reduce(pick).unwrap_or(0.0),
-    )])
+    Ok(vec![Value::Float(nums.into_iter().map(conv).reduce(pick).unwrap_or(0.0))])
 }
 fn maxi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     extremum(it, a, true)

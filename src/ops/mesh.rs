@@ -8,9 +8,27 @@ use crate::value::Value;
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
-    OpDef { name: "COOR", signature: "COOR POINT | COOR n POINT | COOR n MAILLAGE", doc: "Coordinates of a point (one result per dimension), one of them, or a coordinate field on a mesh.", example: "x y = coor p ;", f: coor },
-    OpDef { name: "NBNO", signature: "NBNO MAILLAGE", doc: "Number of nodes of a mesh.", example: "n = nbno l ;", f: nbno },
-    OpDef { name: "NBEL", signature: "NBEL MAILLAGE", doc: "Number of elements of a mesh.", example: "n = nbel s ;", f: nbel },
+    OpDef {
+        name: "COOR",
+        signature: "COOR POINT | COOR n POINT | COOR n MAILLAGE",
+        doc: "Coordinates of a point (one result per dimension), one of them, or a coordinate field on a mesh.",
+        example: "x y = coor p ;",
+        f: coor,
+    },
+    OpDef {
+        name: "NBNO",
+        signature: "NBNO MAILLAGE",
+        doc: "Number of nodes of a mesh.",
+        example: "n = nbno l ;",
+        f: nbno,
+    },
+    OpDef {
+        name: "NBEL",
+        signature: "NBEL MAILLAGE",
+        doc: "Number of elements of a mesh.",
+        example: "n = nbel s ;",
+        f: nbel,
+    },
 ];
 
 fn coor(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
@@ -22,34 +40,19 @@ fn coor(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             None => Ok(x[..dim].iter().map(|c| Value::Float(*c)).collect()),
             Some(k) if (1..=dim as i64).contains(&k) => Ok(vec![Value::Float(x[k as usize - 1])]),
             Some(k) if k == dim as i64 + 1 => Ok(vec![Value::Float(it.nodes.density[p.0])]),
-            Some(k) => Err(a.err(format!(
-                "coordinate {} does not exist in dimension {}",
-                k, dim
-            ))),
+            Some(k) => Err(a.err(format!("coordinate {} does not exist in dimension {}", k, dim))),
         };
     }
     if let Some(m) = a.opt::<Rc<Mesh>>() {
         let k = which.ok_or_else(|| a.missing("the coordinate number"))?;
         let dim = it.opts.dime.max(1) as i64;
         if !(1..=dim + 1).contains(&k) {
-            return Err(a.err(format!(
-                "coordinate {} does not exist in dimension {}",
-                k, dim
-            )));
+            return Err(a.err(format!("coordinate {} does not exist in dimension {}", k, dim)));
         }
         let entries: Vec<(usize, f64)> = m
             .node_list()
             .into_iter()
-            .map(|n| {
-                (
-                    n,
-                    if k == dim + 1 {
-                        it.nodes.density[n]
-                    } else {
-                        it.nodes.get(n)[k as usize - 1]
-                    },
-                )
-            })
+            .map(|n| (n, if k == dim + 1 { it.nodes.density[n] } else { it.nodes.get(n)[k as usize - 1] }))
             .collect();
         let c = crate::value::Chpoint::from_entries(
             crate::value::Nature::Diffus,

@@ -89,13 +89,7 @@ impl OpSpec {
 
 impl From<&OpDef> for OpSpec {
     fn from(d: &OpDef) -> Self {
-        OpSpec {
-            name: d.name,
-            signature: d.signature,
-            doc: d.doc,
-            example: d.example,
-            imp: OpImpl::Builtin(d.f),
-        }
+        OpSpec { name: d.name, signature: d.signature, doc: d.doc, example: d.example, imp: OpImpl::Builtin(d.f) }
     }
 }
 
@@ -114,15 +108,7 @@ impl Registry {
     /// Every built-in family.
     pub fn standard() -> Self {
         let mut r = Registry::default();
-        for table in [
-            arith::OPS,
-            math::OPS,
-            lists::OPS,
-            objects::OPS,
-            io::OPS,
-            union::OPS,
-            mesh::OPS,
-        ] {
+        for table in [arith::OPS, math::OPS, lists::OPS, objects::OPS, io::OPS, union::OPS, mesh::OPS] {
             for d in table {
                 r.insert(OpSpec::from(d));
             }

@@ -103,7 +103,7 @@ fn exis(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             None => true,
         },
         Value::Chpo(c) => match a.opt_right::<String>() {
-            Some(comp) => c.components().iter().any(|x| *x == comp),
+            Some(comp) => c.components().contains(&comp),
             None => true,
         },
         _ => true,

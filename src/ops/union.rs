@@ -33,9 +33,7 @@ pub(crate) fn union(it: &mut Interp, a: &Args, x: Value, y: Value, noer: bool) -
     Ok(match (&x, &y) {
         (Bool(p), Bool(q)) => Bool(*p && *q),
         (Mot(s), Mot(t)) => Value::mot(format!("{}{}", s, t)),
-        (ListReel(l), ListReel(m)) => {
-            ListReel(Rc::new(l.iter().chain(m.iter()).copied().collect()))
-        }
+        (ListReel(l), ListReel(m)) => ListReel(Rc::new(l.iter().chain(m.iter()).copied().collect())),
         (ListReel(l), Int(_) | Float(_)) => {
             let mut v = (**l).clone();
             v.push(y.as_f64().unwrap_or(0.0));
@@ -46,9 +44,7 @@ pub(crate) fn union(it: &mut Interp, a: &Args, x: Value, y: Value, noer: bool) -
             v.extend(l.iter());
             ListReel(Rc::new(v))
         }
-        (ListEnti(l), ListEnti(m)) => {
-            ListEnti(Rc::new(l.iter().chain(m.iter()).copied().collect()))
-        }
+        (ListEnti(l), ListEnti(m)) => ListEnti(Rc::new(l.iter().chain(m.iter()).copied().collect())),
         (ListEnti(l), Int(j)) => {
             let mut v = (**l).clone();
             v.push(*j);
@@ -59,28 +55,18 @@ pub(crate) fn union(it: &mut Interp, a: &Args, x: Value, y: Value, noer: bool) -
             v.extend(l.iter());
             ListEnti(Rc::new(v))
         }
-        (ListMots(l), ListMots(m)) => {
-            ListMots(Rc::new(l.iter().chain(m.iter()).cloned().collect()))
-        }
+        (ListMots(l), ListMots(m)) => ListMots(Rc::new(l.iter().chain(m.iter()).cloned().collect())),
         (ListMots(l), Mot(s)) => {
             let mut v = (**l).clone();
             v.push(s.to_string());
             ListMots(Rc::new(v))
         }
-        (Point(_) | Mesh(_), Point(_) | Mesh(_)) => Mesh(Rc::new(
-            as_mesh(&x)
-                .unwrap_or_default()
-                .union(&as_mesh(&y).unwrap_or_default()),
-        )),
+        (Point(_) | Mesh(_), Point(_) | Mesh(_)) => {
+            Mesh(Rc::new(as_mesh(&x).unwrap_or_default().union(&as_mesh(&y).unwrap_or_default())))
+        }
         _ => match crate::ops::union::fields_union(it, a, &x, &y, noer)? {
             Some(v) => v,
-            None => {
-                return Err(a.err(format!(
-                    "cannot join {} and {}",
-                    x.type_name(),
-                    y.type_name()
-                )))
-            }
+            None => return Err(a.err(format!("cannot join {} and {}", x.type_name(), y.type_name()))),
         },
     })
 }
@@ -95,23 +81,11 @@ pub(crate) fn as_mesh(v: &Value) -> Option<Mesh> {
 }
 
 /// ET of FE objects (fields, rigidities, models, element fields).
-pub(crate) fn fields_union(
-    _it: &mut Interp,
-    _a: &Args,
-    _x: &Value,
-    _y: &Value,
-    _noer: bool,
-) -> Result<Option<Value>> {
+pub(crate) fn fields_union(_it: &mut Interp, _a: &Args, _x: &Value, _y: &Value, _noer: bool) -> Result<Option<Value>> {
     Ok(None)
 }
 
 /// `+ - * /` on FE objects.
-pub(crate) fn fields_binary(
-    _it: &mut Interp,
-    _a: &Args,
-    _op: Bin,
-    _x: &Value,
-    _y: &Value,
-) -> Result<Option<Value>> {
+pub(crate) fn fields_binary(_it: &mut Interp, _a: &Args, _op: Bin, _x: &Value, _y: &Value) -> Result<Option<Value>> {
     Ok(None)
 }

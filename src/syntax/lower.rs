@@ -30,11 +30,7 @@ pub fn instruction(p: Pair<Rule>) -> Result<Instr> {
             _ => push_item(&mut items, c)?,
         }
     }
-    Ok(Instr {
-        targets,
-        items,
-        span,
-    })
+    Ok(Instr { targets, items, span })
 }
 
 fn target(p: Pair<Rule>) -> Result<Target> {
@@ -53,12 +49,7 @@ fn target(p: Pair<Rule>) -> Result<Target> {
             _ => push_item(&mut keys, c)?,
         }
     }
-    Ok(Target {
-        name,
-        typed,
-        keys,
-        span,
-    })
+    Ok(Target { name, typed, keys, span })
 }
 
 /// Is this item a value that a following glued `-1` or `.1` attaches to?
@@ -75,9 +66,7 @@ fn value_like(it: &Item) -> bool {
 }
 
 fn glued_to_previous(items: &[Item], span: Span) -> bool {
-    items
-        .last()
-        .is_some_and(|prev| prev.span.end == span.start && value_like(prev))
+    items.last().is_some_and(|prev| prev.span.end == span.start && value_like(prev))
 }
 
 fn push_item(items: &mut Vec<Item>, p: Pair<Rule>) -> Result<()> {
@@ -88,15 +77,9 @@ fn push_item(items: &mut Vec<Item>, p: Pair<Rule>) -> Result<()> {
             // `T.1` is indexing, not the number .1: a leading dot glued to a
             // value is the `.` separator (language.md §1).
             if text.starts_with('.') && glued_to_previous(items, span) {
-                items.push(Item {
-                    kind: ItemKind::Dot,
-                    span: Span::new(span.start as usize, span.start as usize + 1),
-                });
+                items.push(Item { kind: ItemKind::Dot, span: Span::new(span.start as usize, span.start as usize + 1) });
                 let rest = Span::new(span.start as usize + 1, span.end as usize);
-                items.push(Item {
-                    kind: number(&text[1..], rest)?,
-                    span: rest,
-                });
+                items.push(Item { kind: number(&text[1..], rest)?, span: rest });
                 return Ok(());
             }
             number(text, span)?
@@ -112,10 +95,7 @@ fn push_item(items: &mut Vec<Item>, p: Pair<Rule>) -> Result<()> {
                     span: Span::new(span.start as usize, span.start as usize + 1),
                 });
                 let rest = Span::new(span.start as usize + 1, span.end as usize);
-                items.push(Item {
-                    kind: number(&text[1..], rest)?,
-                    span: rest,
-                });
+                items.push(Item { kind: number(&text[1..], rest)?, span: rest });
                 return Ok(());
             }
             match number(&text[1..], span)? {
@@ -129,10 +109,7 @@ fn push_item(items: &mut Vec<Item>, p: Pair<Rule>) -> Result<()> {
             ItemKind::Str(inner.replace("''", "'"))
         }
         Rule::counter => {
-            let n = p
-                .into_inner()
-                .next()
-                .map_or(String::new(), |n| n.as_str().to_uppercase());
+            let n = p.into_inner().next().map_or(String::new(), |n| n.as_str().to_uppercase());
             ItemKind::Counter(n)
         }
         Rule::name => ItemKind::Word(p.as_str().to_uppercase()),
@@ -180,17 +157,6 @@ fn number(text: &str, span: Span) -> Result<ItemKind> {
             .map(ItemKind::Int)
             .map_err(|_| Error::syntax(format!("'{}' is not a number", text), span));
     }
-    let norm: String = text
-        .chars()
-        .map(|c| {
-            if matches!(c, 'd' | 'D' | 'q' | 'Q') {
-                'E'
-            } else {
-                c
-            }
-        })
-        .collect();
-    norm.parse::<f64>()
-        .map(ItemKind::Float)
-        .map_err(|_| Error::syntax(format!("'{}' is not a number", text), span))
+    let norm: String = text.chars().map(|c| if matches!(c, 'd' | 'D' | 'q' | 'Q') { 'E' } else { c }).collect();
+    norm.parse::<f64>().map(ItemKind::Float).map_err(|_| Error::syntax(format!("'{}' is not a number", text), span))
 }

@@ -59,8 +59,7 @@ pub fn check_complete(text: &str) -> Completeness {
 
 fn parse_instructions(text: &str) -> Result<Vec<Instr>> {
     let prepared = prepass::prepare(text)?;
-    let pairs =
-        GibianeParser::parse(Rule::program, &prepared).map_err(|e| pest_error(e, &prepared))?;
+    let pairs = GibianeParser::parse(Rule::program, &prepared).map_err(|e| pest_error(e, &prepared))?;
     let mut out = Vec::new();
     for program in pairs {
         for p in program.into_inner() {
@@ -70,10 +69,7 @@ fn parse_instructions(text: &str) -> Result<Vec<Instr>> {
             let s = p.as_span();
             if prepass::squeezed_len(s.as_str()) > MAX_INSTRUCTION {
                 return Err(Error::syntax(
-                    format!(
-                        "an instruction cannot exceed {} characters (blanks squeezed)",
-                        MAX_INSTRUCTION
-                    ),
+                    format!("an instruction cannot exceed {} characters (blanks squeezed)", MAX_INSTRUCTION),
                     Span::new(s.start(), s.end()),
                 ));
             }
@@ -98,23 +94,16 @@ fn pest_error(e: pest::error::Error<Rule>, text: &str) -> Error {
         } else {
             "unexpected end of text: the instruction is not ended by ';'".to_string()
         };
-        return Error::syntax(
-            msg,
-            Span::new(text.trim_end().len(), text.trim_end().len() + 1),
-        );
+        return Error::syntax(msg, Span::new(text.trim_end().len(), text.trim_end().len() + 1));
     }
     let found = text[pos..].chars().next().unwrap_or(' ');
     let msg = match found {
         ')' => "this ')' closes no '('".to_string(),
-        ';' if paren_depth(&text[..pos]) > 0 => {
-            "';' ends the instruction while a '(' is still open".to_string()
-        }
+        ';' if paren_depth(&text[..pos]) > 0 => "';' ends the instruction while a '(' is still open".to_string(),
         '=' => "'=' may appear only once, after the names that receive the results".to_string(),
         _ => {
             let expected = match &e.variant {
-                pest::error::ErrorVariant::ParsingError { positives, .. }
-                    if !positives.is_empty() =>
-                {
+                pest::error::ErrorVariant::ParsingError { positives, .. } if !positives.is_empty() => {
                     let names: Vec<&str> = positives.iter().map(errors::rule_name).collect();
                     format!(", expected {}", names.join(" or "))
                 }

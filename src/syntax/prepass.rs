@@ -15,11 +15,7 @@ pub fn prepare(text: &str) -> Result<String> {
         if line.starts_with('*') {
             // Replace every byte but the end of line: lengths are preserved.
             for b in line.bytes() {
-                out.push(if b == b'\n' || b == b'\r' {
-                    b as char
-                } else {
-                    ' '
-                });
+                out.push(if b == b'\n' || b == b'\r' { b as char } else { ' ' });
             }
         } else {
             check_quotes(line, offset)?;

@@ -51,32 +51,15 @@ fn directive(ins: &Instr) -> Option<Directive> {
 }
 
 enum Open {
-    If {
-        cond: Instr,
-        then: Vec<Stmt>,
-        otherwise: Option<Vec<Stmt>>,
-        span: Span,
-    },
-    Loop {
-        name: String,
-        count: Option<Instr>,
-        body: Vec<Stmt>,
-        span: Span,
-    },
-    Proc {
-        name: String,
-        params: Vec<Param>,
-        body: Vec<Stmt>,
-        span: Span,
-    },
+    If { cond: Instr, then: Vec<Stmt>, otherwise: Option<Vec<Stmt>>, span: Span },
+    Loop { name: String, count: Option<Instr>, body: Vec<Stmt>, span: Span },
+    Proc { name: String, params: Vec<Param>, body: Vec<Stmt>, span: Span },
 }
 
 impl Open {
     fn body(&mut self) -> &mut Vec<Stmt> {
         match self {
-            Open::If {
-                then, otherwise, ..
-            } => otherwise.as_mut().unwrap_or(then),
+            Open::If { then, otherwise, .. } => otherwise.as_mut().unwrap_or(then),
             Open::Loop { body, .. } | Open::Proc { body, .. } => body,
         }
     }
@@ -97,14 +80,8 @@ impl Open {
 /// Rest of an instruction after its directive word.
 fn rest(ins: &Instr) -> Instr {
     let items = ins.items[1..].to_vec();
-    let span = items.iter().fold(None, |acc: Option<Span>, it| {
-        Some(acc.map_or(it.span, |a| a.join(it.span)))
-    });
-    Instr {
-        targets: vec![],
-        items,
-        span: span.unwrap_or(ins.span),
-    }
+    let span = items.iter().fold(None, |acc: Option<Span>, it| Some(acc.map_or(it.span, |a| a.join(it.span))));
+    Instr { targets: vec![], items, span: span.unwrap_or(ins.span) }
 }
 
 /// Names are significant to 24 characters (LONOM in Cast3M).
@@ -128,12 +105,7 @@ pub fn build(instrs: Vec<Instr>) -> Result<Program> {
         let stmt = match directive(&ins) {
             None => Some(Stmt::Instr(ins)),
             Some(Directive::Si) => {
-                stack.push(Open::If {
-                    cond: rest(&ins),
-                    then: vec![],
-                    otherwise: None,
-                    span,
-                });
+                stack.push(Open::If { cond: rest(&ins), then: vec![], otherwise: None, span });
                 None
             }
             Some(Directive::Sinon) => match stack.last_mut() {
@@ -144,31 +116,15 @@ pub fn build(instrs: Vec<Instr>) -> Result<Program> {
                 _ => return Err(Error::syntax("SINON without an open SI", span)),
             },
             Some(Directive::Finsi) => match stack.pop() {
-                Some(Open::If {
-                    cond,
-                    then,
-                    otherwise,
-                    span: s,
-                }) => Some(Stmt::If {
-                    cond,
-                    then,
-                    otherwise,
-                    span: s,
-                }),
+                Some(Open::If { cond, then, otherwise, span: s }) => Some(Stmt::If { cond, then, otherwise, span: s }),
                 Some(o) => return Err(mismatch("FINSI", &o, span)),
                 None => return Err(Error::syntax("FINSI without an open SI", span)),
             },
             Some(Directive::Repeter) => {
                 let r = rest(&ins);
-                let (name, count) = loop_header(&r).ok_or_else(|| {
-                    Error::syntax("REPETER needs a block name (REPETER name (count) ;)", span)
-                })?;
-                stack.push(Open::Loop {
-                    name,
-                    count,
-                    body: vec![],
-                    span,
-                });
+                let (name, count) = loop_header(&r)
+                    .ok_or_else(|| Error::syntax("REPETER needs a block name (REPETER name (count) ;)", span))?;
+                stack.push(Open::Loop { name, count, body: vec![], span });
                 None
             }
             Some(Directive::Fin) => {
@@ -177,31 +133,17 @@ pub fn build(instrs: Vec<Instr>) -> Result<Program> {
                     None if r.items.is_empty() => Some(Stmt::End { span }),
                     None => return Err(Error::syntax("FIN takes a block name or nothing", span)),
                     Some(n) => match stack.pop() {
-                        Some(Open::Loop {
-                            name,
-                            count,
-                            body,
-                            span: s,
-                        }) if name == n => Some(Stmt::Loop {
-                            name,
-                            count,
-                            body,
-                            span: s,
-                        }),
-                        Some(o) => return Err(mismatch(&format!("FIN {}", n), &o, span)),
-                        None => {
-                            return Err(Error::syntax(format!("FIN {} closes no REPETER", n), span))
+                        Some(Open::Loop { name, count, body, span: s }) if name == n => {
+                            Some(Stmt::Loop { name, count, body, span: s })
                         }
+                        Some(o) => return Err(mismatch(&format!("FIN {}", n), &o, span)),
+                        None => return Err(Error::syntax(format!("FIN {} closes no REPETER", n), span)),
                     },
                 }
             }
             Some(d @ (Directive::Iterer | Directive::Quitter)) => {
                 let name = ins.items.get(1).and_then(word_of).unwrap_or_default();
-                Some(if d == Directive::Iterer {
-                    Stmt::Iter { name, span }
-                } else {
-                    Stmt::Quit { name, span }
-                })
+                Some(if d == Directive::Iterer { Stmt::Iter { name, span } } else { Stmt::Quit { name, span } })
             }
             Some(Directive::Debproc) => {
                 let r = rest(&ins);
@@ -211,37 +153,18 @@ pub fn build(instrs: Vec<Instr>) -> Result<Program> {
                     .and_then(word_of)
                     .ok_or_else(|| Error::syntax("DEBPROC needs a procedure name", span))?;
                 let params = params(&r.items[1..])?;
-                stack.push(Open::Proc {
-                    name,
-                    params,
-                    body: vec![],
-                    span,
-                });
+                stack.push(Open::Proc { name, params, body: vec![], span });
                 None
             }
             Some(Directive::Finproc) => match stack.pop() {
-                Some(Open::Proc {
-                    name,
-                    params,
-                    body,
-                    span: s,
-                }) => {
+                Some(Open::Proc { name, params, body, span: s }) => {
                     let results = rest(&ins);
-                    Some(Stmt::Proc(Rc::new(ProcDef {
-                        name,
-                        params,
-                        body,
-                        results,
-                        span: s.join(span),
-                    })))
+                    Some(Stmt::Proc(Rc::new(ProcDef { name, params, body, results, span: s.join(span) })))
                 }
                 Some(o) => return Err(mismatch("FINPROC", &o, span)),
                 None => return Err(Error::syntax("FINPROC without DEBPROC", span)),
             },
-            Some(Directive::Argu) => Some(Stmt::Argu {
-                params: params(&ins.items[1..])?,
-                span,
-            }),
+            Some(Directive::Argu) => Some(Stmt::Argu { params: params(&ins.items[1..])?, span }),
             Some(Directive::Respro) => Some(Stmt::Respro(rest(&ins))),
         };
         if let Some(s) = stmt {
@@ -252,19 +175,13 @@ pub fn build(instrs: Vec<Instr>) -> Result<Program> {
         }
     }
     if let Some(o) = stack.pop() {
-        return Err(Error::syntax(
-            format!("{} is never closed", o.describe()),
-            o.span(),
-        ));
+        return Err(Error::syntax(format!("{} is never closed", o.describe()), o.span()));
     }
     Ok(Program { stmts: top })
 }
 
 fn mismatch(closer: &str, open: &Open, span: Span) -> Error {
-    Error::syntax(
-        format!("{} found while {} is still open", closer, open.describe()),
-        span,
-    )
+    Error::syntax(format!("{} found while {} is still open", closer, open.describe()), span)
 }
 
 /// `REPETER name (count)` or `REPETER count name`.
@@ -281,16 +198,8 @@ fn loop_header(r: &Instr) -> Option<(String, Option<Instr>)> {
     let count = if count_items.is_empty() {
         None
     } else {
-        let span = count_items
-            .iter()
-            .map(|i| i.span)
-            .reduce(Span::join)
-            .unwrap_or(r.span);
-        Some(Instr {
-            targets: vec![],
-            items: count_items,
-            span,
-        })
+        let span = count_items.iter().map(|i| i.span).reduce(Span::join).unwrap_or(r.span);
+        Some(Instr { targets: vec![], items: count_items, span })
     };
     Some((name, count))
 }
@@ -301,21 +210,13 @@ fn params(items: &[Item]) -> Result<Vec<Param>> {
     let mut i = 0;
     while i < items.len() {
         let it = &items[i];
-        let name =
-            word_of(it).ok_or_else(|| Error::syntax("expected a parameter name", it.span))?;
-        let mut p = Param {
-            name,
-            ty: None,
-            optional: false,
-            span: it.span,
-        };
+        let name = word_of(it).ok_or_else(|| Error::syntax("expected a parameter name", it.span))?;
+        let mut p = Param { name, ty: None, optional: false, span: it.span };
         if let Some(ItemKind::Sym(s @ ("*" | "/"))) = items.get(i + 1).map(|x| &x.kind) {
-            let ty = items.get(i + 2).and_then(word_of).ok_or_else(|| {
-                Error::syntax(
-                    format!("expected a type name after '{}'", s),
-                    items[i + 1].span,
-                )
-            })?;
+            let ty = items
+                .get(i + 2)
+                .and_then(word_of)
+                .ok_or_else(|| Error::syntax(format!("expected a type name after '{}'", s), items[i + 1].span))?;
             p.optional = *s == "/";
             p.ty = Some(ty);
             p.span = p.span.join(items[i + 2].span);

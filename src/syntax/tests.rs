@@ -19,29 +19,15 @@ fn sign_rule() {
     assert_eq!(items("A -1 ;"), vec![Word("A".into()), Int(-1)]);
     assert_eq!(items("A - 1 ;"), vec![Word("A".into()), Sym("-"), Int(1)]);
     assert_eq!(items("A-1 ;"), vec![Word("A".into()), Sym("-"), Int(1)]);
-    assert_eq!(
-        items("CRIT*-1 ;"),
-        vec![Word("CRIT".into()), Sym("*"), Int(-1)]
-    );
-    assert_eq!(
-        items("x + -0.5e1 ;"),
-        vec![Word("X".into()), Sym("+"), Float(-5.0)]
-    );
+    assert_eq!(items("CRIT*-1 ;"), vec![Word("CRIT".into()), Sym("*"), Int(-1)]);
+    assert_eq!(items("x + -0.5e1 ;"), vec![Word("X".into()), Sym("+"), Float(-5.0)]);
 }
 
 #[test]
 fn numbers() {
     assert_eq!(
         items("1. .5 1.e-5 1D-13 2.1E11 1E-5 12 ;"),
-        vec![
-            Float(1.0),
-            Float(0.5),
-            Float(1e-5),
-            Float(1e-13),
-            Float(2.1e11),
-            Float(1e-5),
-            Int(12)
-        ]
+        vec![Float(1.0), Float(0.5), Float(1e-5), Float(1e-13), Float(2.1e11), Float(1e-5), Int(12)]
     );
     // More than 9 digits turns an integer into a float.
     assert_eq!(items("1234567890 ;"), vec![Float(1234567890.0)]);
@@ -49,23 +35,14 @@ fn numbers() {
 
 #[test]
 fn upper_case_outside_quotes_and_quote_escape() {
-    assert_eq!(
-        items("bloq 'ux' 'it''s' ;"),
-        vec![Word("BLOQ".into()), Str("ux".into()), Str("it's".into())]
-    );
+    assert_eq!(items("bloq 'ux' 'it''s' ;"), vec![Word("BLOQ".into()), Str("ux".into()), Str("it's".into())]);
 }
 
 #[test]
 fn dots_index_tables() {
     assert_eq!(items("T.1 ;"), vec![Word("T".into()), Dot, Int(1)]);
-    assert_eq!(
-        items("T . 'K' . 2 ;"),
-        vec![Word("T".into()), Dot, Str("K".into()), Dot, Int(2)]
-    );
-    assert_eq!(
-        items("T . 3.68 ;"),
-        vec![Word("T".into()), Dot, Float(3.68)]
-    );
+    assert_eq!(items("T . 'K' . 2 ;"), vec![Word("T".into()), Dot, Str("K".into()), Dot, Int(2)]);
+    assert_eq!(items("T . 3.68 ;"), vec![Word("T".into()), Dot, Float(3.68)]);
 }
 
 #[test]
@@ -107,17 +84,8 @@ fn instruction_limit() {
 
 #[test]
 fn structure_is_rebuilt() {
-    let p = parse(
-        "si (a > 1) ; x = 1 ; sinon ; x = 2 ; finsi ; repeter b 3 ; fin b ; repeter 5 c ; fin c ;",
-    )
-    .unwrap();
-    assert!(matches!(
-        &p.stmts[0],
-        Stmt::If {
-            otherwise: Some(_),
-            ..
-        }
-    ));
+    let p = parse("si (a > 1) ; x = 1 ; sinon ; x = 2 ; finsi ; repeter b 3 ; fin b ; repeter 5 c ; fin c ;").unwrap();
+    assert!(matches!(&p.stmts[0], Stmt::If { otherwise: Some(_), .. }));
     assert!(matches!(&p.stmts[1], Stmt::Loop { name, count: Some(_), .. } if name == "B"));
     assert!(matches!(&p.stmts[2], Stmt::Loop { name, count: Some(_), .. } if name == "C"));
     let p = parse("debproc f x*flottant k/entier ; finproc x ;").unwrap();
@@ -133,10 +101,7 @@ fn structure_is_rebuilt() {
 
 #[test]
 fn unclosed_blocks_and_strays() {
-    assert!(parse("si (a) ; x = 1 ;")
-        .unwrap_err()
-        .message
-        .contains("never closed"));
+    assert!(parse("si (a) ; x = 1 ;").unwrap_err().message.contains("never closed"));
     assert!(parse("finsi ;").is_err());
     assert!(parse("repeter a ; fin b ;").is_err());
     assert!(parse("x = (1 + 2 ;").unwrap_err().message.contains("'('"));
@@ -146,21 +111,9 @@ fn unclosed_blocks_and_strays() {
 #[test]
 fn completeness_for_the_repl() {
     assert!(matches!(check_complete("x = 1"), Completeness::Incomplete));
-    assert!(matches!(
-        check_complete("si (x > 1) ;\n y = 2 ;"),
-        Completeness::Incomplete
-    ));
+    assert!(matches!(check_complete("si (x > 1) ;\n y = 2 ;"), Completeness::Incomplete));
     assert!(matches!(check_complete("x = (1"), Completeness::Incomplete));
-    assert!(matches!(
-        check_complete("x = 1 ;"),
-        Completeness::Complete(_)
-    ));
-    assert!(matches!(
-        check_complete("x = 1) ;"),
-        Completeness::Invalid(_)
-    ));
-    assert!(matches!(
-        check_complete("finsi ;"),
-        Completeness::Invalid(_)
-    ));
+    assert!(matches!(check_complete("x = 1 ;"), Completeness::Complete(_)));
+    assert!(matches!(check_complete("x = 1) ;"), Completeness::Invalid(_)));
+    assert!(matches!(check_complete("finsi ;"), Completeness::Invalid(_)));
 }

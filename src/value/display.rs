@@ -31,10 +31,7 @@ pub fn list_value_short(v: &Value) -> String {
 }
 
 fn floats(l: &[f64]) -> String {
-    l.iter()
-        .map(|x| fmt_float(*x))
-        .collect::<Vec<_>>()
-        .join(" ")
+    l.iter().map(|x| fmt_float(*x)).collect::<Vec<_>>().join(" ")
 }
 
 /// What LIST prints for one object.
@@ -52,14 +49,7 @@ pub fn list_value(it: &Interp, name: Option<&str>, v: &Value) -> String {
         }
         Value::ListReel(l) => format!("{} value(s): {}", l.len(), floats(l)),
         Value::ListEnti(l) => {
-            format!(
-                "{} value(s): {}",
-                l.len(),
-                l.iter()
-                    .map(|i| i.to_string())
-                    .collect::<Vec<_>>()
-                    .join(" ")
-            )
+            format!("{} value(s): {}", l.len(), l.iter().map(|i| i.to_string()).collect::<Vec<_>>().join(" "))
         }
         Value::ListMots(l) => format!("{} word(s): {}", l.len(), l.join(" ")),
         Value::Table(t) => table(&t.borrow()),
@@ -74,11 +64,7 @@ pub fn list_value(it: &Interp, name: Option<&str>, v: &Value) -> String {
 fn table(t: &Table) -> String {
     let mut s = format!("{} entr{}", t.len(), if t.len() == 1 { "y" } else { "ies" });
     for (k, v) in t.iter() {
-        s.push_str(&format!(
-            "\n  {} -> {}",
-            list_value_short(&k.to_value()),
-            list_value_short(v)
-        ));
+        s.push_str(&format!("\n  {} -> {}", list_value_short(&k.to_value()), list_value_short(v)));
     }
     s
 }

@@ -37,22 +37,12 @@ pub struct Chpoint {
 
 impl Chpoint {
     pub fn new(nature: Nature) -> Self {
-        Chpoint {
-            nature,
-            comps: vec![],
-            nodes: vec![],
-            values: vec![],
-            present: vec![],
-            index: HashMap::new(),
-        }
+        Chpoint { nature, comps: vec![], nodes: vec![], values: vec![], present: vec![], index: HashMap::new() }
     }
 
     /// Build from (node, component, value) entries; repeated entries add
     /// up for DISCRET fields and are overwritten otherwise.
-    pub fn from_entries<'a>(
-        nature: Nature,
-        entries: impl IntoIterator<Item = (usize, &'a str, f64)>,
-    ) -> Self {
+    pub fn from_entries<'a>(nature: Nature, entries: impl IntoIterator<Item = (usize, &'a str, f64)>) -> Self {
         let mut c = Chpoint::new(nature);
         for (n, comp, v) in entries {
             c.add(n, comp, v, nature == Nature::Discret);
@@ -87,10 +77,8 @@ impl Chpoint {
         let r = self.nodes.len();
         self.nodes.push(node);
         self.index.insert(node, r);
-        self.values
-            .extend(std::iter::repeat_n(0.0, self.comps.len()));
-        self.present
-            .extend(std::iter::repeat_n(false, self.comps.len()));
+        self.values.extend(std::iter::repeat_n(0.0, self.comps.len()));
+        self.present.extend(std::iter::repeat_n(false, self.comps.len()));
         r
     }
 

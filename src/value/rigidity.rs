@@ -79,12 +79,7 @@ pub struct Rigidite {
 
 impl Rigidite {
     pub fn new(subtype: Subtype) -> Self {
-        Rigidite {
-            subtype,
-            blocks: vec![],
-            conds: vec![],
-            cache: Default::default(),
-        }
+        Rigidite { subtype, blocks: vec![], conds: vec![], cache: Default::default() }
     }
     pub fn n_unilateral(&self) -> usize {
         self.conds.iter().filter(|c| c.kind.is_unilateral()).count()

@@ -10,11 +10,7 @@ use std::io::{IsTerminal, Read};
 use std::process::ExitCode;
 
 #[derive(Parser)]
-#[command(
-    name = "gibi",
-    version,
-    about = "An interpreter for Gibiane, the command language of Cast3M"
-)]
+#[command(name = "gibi", version, about = "An interpreter for Gibiane, the command language of Cast3M")]
 struct Cli {
     /// Deck files to run in order ('-' reads a deck from standard input).
     files: Vec<String>,
@@ -40,10 +36,7 @@ fn exit_code(kind: ErrorKind) -> u8 {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let cwd = std::env::current_dir().unwrap_or_else(|_| ".".into());
-    let mut gibi = Interpreter::builder()
-        .output(std::io::stdout())
-        .files(FilePolicy::Under(cwd))
-        .build();
+    let mut gibi = Interpreter::builder().output(std::io::stdout()).files(FilePolicy::Under(cwd)).build();
 
     if cli.list_operators {
         println!("{}", repl::catalogue_json(gibi.registry()));
@@ -57,16 +50,10 @@ fn main() -> ExitCode {
     for f in &cli.files {
         if f == "-" {
             let mut s = String::new();
-            let r = std::io::stdin()
-                .read_to_string(&mut s)
-                .map(|_| s)
-                .map_err(|e| e.to_string());
+            let r = std::io::stdin().read_to_string(&mut s).map(|_| s).map_err(|e| e.to_string());
             inputs.push(("<stdin>".into(), r));
         } else {
-            inputs.push((
-                f.clone(),
-                std::fs::read_to_string(f).map_err(|e| e.to_string()),
-            ));
+            inputs.push((f.clone(), std::fs::read_to_string(f).map_err(|e| e.to_string())));
         }
     }
     if inputs.is_empty() {
@@ -74,10 +61,7 @@ fn main() -> ExitCode {
             return repl::run(gibi);
         }
         let mut s = String::new();
-        let r = std::io::stdin()
-            .read_to_string(&mut s)
-            .map(|_| s)
-            .map_err(|e| e.to_string());
+        let r = std::io::stdin().read_to_string(&mut s).map(|_| s).map_err(|e| e.to_string());
         inputs.push(("<stdin>".into(), r));
     }
 
@@ -90,12 +74,10 @@ fn main() -> ExitCode {
             }
         };
         let r = if cli.check {
-            gibi::syntax::parse(&text)
-                .map(|_| Outcome::EndOfInput)
-                .map_err(|mut e| {
-                    e.source = Some(gibi::source::Source::new(name.clone(), text.clone()));
-                    e
-                })
+            gibi::syntax::parse(&text).map(|_| Outcome::EndOfInput).map_err(|mut e| {
+                e.source = Some(gibi::source::Source::new(name.clone(), text.clone()));
+                e
+            })
         } else {
             gibi.run_str(&name, &text)
         };

@@ -78,9 +78,7 @@ impl Validator for GibiHelper {
             return Ok(ValidationResult::Valid(None));
         }
         Ok(match check_complete(input) {
-            Completeness::Incomplete if !input.trim().starts_with(':') => {
-                ValidationResult::Incomplete
-            }
+            Completeness::Incomplete if !input.trim().starts_with(':') => ValidationResult::Incomplete,
             _ => ValidationResult::Valid(None),
         })
     }
@@ -88,15 +86,8 @@ impl Validator for GibiHelper {
 
 impl Completer for GibiHelper {
     type Candidate = Pair;
-    fn complete(
-        &self,
-        line: &str,
-        pos: usize,
-        _: &Context<'_>,
-    ) -> rustyline::Result<(usize, Vec<Pair>)> {
-        let start = line[..pos]
-            .rfind(|c: char| c.is_whitespace() || "=+-*/%();.'&<>".contains(c))
-            .map_or(0, |i| i + 1);
+    fn complete(&self, line: &str, pos: usize, _: &Context<'_>) -> rustyline::Result<(usize, Vec<Pair>)> {
+        let start = line[..pos].rfind(|c: char| c.is_whitespace() || "=+-*/%();.'&<>".contains(c)).map_or(0, |i| i + 1);
         let word = line[start..pos].to_uppercase();
         if word.is_empty() {
             return Ok((pos, vec![]));
@@ -109,10 +100,7 @@ impl Completer for GibiHelper {
             .filter(|n| n.starts_with(&word))
             .map(|n| {
                 let s = if lower { n.to_lowercase() } else { n.clone() };
-                Pair {
-                    display: n.clone(),
-                    replacement: s,
-                }
+                Pair { display: n.clone(), replacement: s }
             })
             .collect();
         out.dedup_by(|a, b| a.display == b.display);
@@ -128,12 +116,7 @@ fn history_path() -> Option<PathBuf> {
 }
 
 fn refresh_names(gibi: &Interpreter, names: &RefCell<Vec<String>>) {
-    let mut v: Vec<String> = gibi
-        .registry()
-        .all()
-        .iter()
-        .map(|o| o.name.to_string())
-        .collect();
+    let mut v: Vec<String> = gibi.registry().all().iter().map(|o| o.name.to_string()).collect();
     v.extend(gibi.objects().into_iter().map(|(n, _)| n));
     v.extend(KEYWORDS.iter().map(|s| s.to_string()));
     v.sort();
@@ -205,17 +188,12 @@ pub fn run(mut gibi: Interpreter) -> ExitCode {
             return ExitCode::from(70);
         }
     };
-    rl.set_helper(Some(GibiHelper {
-        names: names.clone(),
-    }));
+    rl.set_helper(Some(GibiHelper { names: names.clone() }));
     let hist = history_path();
     if let Some(h) = &hist {
         let _ = rl.load_history(h);
     }
-    println!(
-        "gibi {} — Gibiane interpreter. :help for help, Ctrl-D to leave.",
-        env!("CARGO_PKG_VERSION")
-    );
+    println!("gibi {} — Gibiane interpreter. :help for help, Ctrl-D to leave.", env!("CARGO_PKG_VERSION"));
     let mut n = 0;
     loop {
         match rl.readline("gibi> ") {

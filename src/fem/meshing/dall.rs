@@ -39,20 +39,10 @@ pub fn dall(nodes: &mut Nodes, sides: [&Mesh; 4], ty: ElemType) -> Result<Mesh, 
         ElemType::Qua4 | ElemType::Tri3 => false,
         ElemType::Qua8 | ElemType::Tri6 => true,
         other => {
-            return fail(
-                OP,
-                format!(
-                    "makes QUA4, TRI3, QUA8 or TRI6 elements, not {} (check OPTI ELEM)",
-                    other.name()
-                ),
-            )
+            return fail(OP, format!("makes QUA4, TRI3, QUA8 or TRI6 elements, not {} (check OPTI ELEM)", other.name()))
         }
     };
-    let want = if quadratic {
-        ElemType::Seg3
-    } else {
-        ElemType::Seg2
-    };
+    let want = if quadratic { ElemType::Seg3 } else { ElemType::Seg2 };
     let mut chains: Vec<Vec<usize>> = Vec::with_capacity(4);
     for (k, side) in sides.iter().enumerate() {
         check_nodes(OP, nodes, side)?;
@@ -68,8 +58,8 @@ pub fn dall(nodes: &mut Nodes, sides: [&Mesh; 4], ty: ElemType) -> Result<Mesh, 
                 ),
             );
         }
-        let c = line_chain(OP, side)
-            .map_err(|e| super::MeshError::new(OP, format!("side {}: {}", k + 1, e.message)))?;
+        let c =
+            line_chain(OP, side).map_err(|e| super::MeshError::new(OP, format!("side {}: {}", k + 1, e.message)))?;
         chains.push(c);
     }
     check_contour(nodes, &chains)?;
@@ -88,9 +78,7 @@ pub fn dall(nodes: &mut Nodes, sides: [&Mesh; 4], ty: ElemType) -> Result<Mesh, 
             );
         }
     }
-    let grid = Grid::build(nodes, &chains, |i, j| {
-        !(ty == ElemType::Qua8 && i % 2 == 1 && j % 2 == 1)
-    });
+    let grid = Grid::build(nodes, &chains, |i, j| !(ty == ElemType::Qua8 && i % 2 == 1 && j % 2 == 1));
     Ok(grid.elements(ty))
 }
 
@@ -107,10 +95,7 @@ fn check_contour(nodes: &Nodes, c: &[Vec<usize>]) -> Result<(), MeshError> {
         let hint = if dist(nodes.get(end), nodes.get(start)) == 0.0 {
             " (they are different points at the same place: merge them with ELIM)".to_string()
         } else if c[next].last() == Some(&end) {
-            format!(
-                " (side {} runs the other way: reverse it with INVE)",
-                next + 1
-            )
+            format!(" (side {} runs the other way: reverse it with INVE)", next + 1)
         } else {
             String::new()
         };
@@ -119,10 +104,7 @@ fn check_contour(nodes: &Nodes, c: &[Vec<usize>]) -> Result<(), MeshError> {
         } else {
             format!("side {} does not start where side {} ends", next + 1, k + 1)
         };
-        return fail(
-            OP,
-            format!("the four sides do not form a closed contour ({what}){hint}"),
-        );
+        return fail(OP, format!("the four sides do not form a closed contour ({what}){hint}"));
     }
     Ok(())
 }
@@ -158,16 +140,8 @@ impl Grid {
         // i (sides 1, 3) or j (sides 2, 4) direction.
         let u1 = arc_fractions(nodes, &c[0]);
         let v2 = arc_fractions(nodes, &c[1]);
-        let u3: Vec<f64> = arc_fractions(nodes, &c[2])
-            .iter()
-            .rev()
-            .map(|s| 1.0 - s)
-            .collect();
-        let v4: Vec<f64> = arc_fractions(nodes, &c[3])
-            .iter()
-            .rev()
-            .map(|s| 1.0 - s)
-            .collect();
+        let u3: Vec<f64> = arc_fractions(nodes, &c[2]).iter().rev().map(|s| 1.0 - s).collect();
+        let v4: Vec<f64> = arc_fractions(nodes, &c[3]).iter().rev().map(|s| 1.0 - s).collect();
         let p = |n: usize| (nodes.get(n), nodes.density[n]);
         let corners = [p(c[0][0]), p(c[1][0]), p(c[2][0]), p(c[3][0])];
         let mut new = Vec::new();
@@ -182,24 +156,13 @@ impl Grid {
                 let (du, dv) = (u3[i] - u1[i], v2[j] - v4[j]);
                 let u = (u1[i] + v4[j] * du) / (1.0 - du * dv);
                 let v = v4[j] + u * dv;
-                let sides = [
-                    p(ids[i]),
-                    p(ids[j * w + m1]),
-                    p(ids[m2 * w + i]),
-                    p(ids[j * w]),
-                ];
+                let sides = [p(ids[i]), p(ids[j * w + m1]), p(ids[m2 * w + i]), p(ids[j * w])];
                 let w_side = [1.0 - v, u, v, 1.0 - u];
                 let w_corner = [(1.0 - u) * (1.0 - v), u * (1.0 - v), u * v, (1.0 - u) * v];
                 let mut x: V3 = [0.0; 3];
                 let mut d = 0.0;
                 for k in 0..4 {
-                    x = add(
-                        x,
-                        sub(
-                            scale(sides[k].0, w_side[k]),
-                            scale(corners[k].0, w_corner[k]),
-                        ),
-                    );
+                    x = add(x, sub(scale(sides[k].0, w_side[k]), scale(corners[k].0, w_corner[k])));
                     d += w_side[k] * sides[k].1 - w_corner[k] * corners[k].1;
                 }
                 new.push((j * w + i, x, d));
@@ -214,11 +177,7 @@ impl Grid {
     /// Elements row by row on the grid of element corners (step 2 for
     /// quadratic types).
     fn elements(&self, ty: ElemType) -> Mesh {
-        let s = if matches!(ty, ElemType::Qua8 | ElemType::Tri6) {
-            2
-        } else {
-            1
-        };
+        let s = if matches!(ty, ElemType::Qua8 | ElemType::Tri6) { 2 } else { 1 };
         let h = s / 2;
         let mut conn = Vec::with_capacity(ty.nodes() * (self.m1 / s) * (self.m2 / s) * 2);
         for j in (0..self.m2).step_by(s) {
@@ -255,8 +214,5 @@ fn arc_fractions(nodes: &Nodes, chain: &[usize]) -> Vec<f64> {
     }
     let total = *s.last().unwrap_or(&0.0);
     let n = (chain.len() - 1).max(1) as f64;
-    s.iter()
-        .enumerate()
-        .map(|(k, &x)| if total > 0.0 { x / total } else { k as f64 / n })
-        .collect()
+    s.iter().enumerate().map(|(k, &x)| if total > 0.0 { x / total } else { k as f64 / n }).collect()
 }

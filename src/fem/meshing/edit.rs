@@ -38,10 +38,7 @@ impl NodeMap {
             parts: mesh
                 .parts
                 .iter()
-                .map(|p| Part {
-                    ty: p.ty,
-                    conn: p.conn.iter().map(|&n| self.get(n)).collect(),
-                })
+                .map(|p| Part { ty: p.ty, conn: p.conn.iter().map(|&n| self.get(n)).collect() })
                 .collect(),
         }
     }
@@ -56,10 +53,7 @@ impl NodeMap {
 pub fn elim(nodes: &Nodes, mesh: &Mesh, tol: f64) -> Result<(Mesh, NodeMap), MeshError> {
     check_nodes("ELIM", nodes, mesh)?;
     if !(tol >= 0.0 && tol.is_finite()) {
-        return fail(
-            "ELIM",
-            format!("the tolerance must be a non-negative number (got {tol})"),
-        );
+        return fail("ELIM", format!("the tolerance must be a non-negative number (got {tol})"));
     }
     let mut list = mesh.node_list();
     list.sort_unstable();
@@ -67,13 +61,7 @@ pub fn elim(nodes: &Nodes, mesh: &Mesh, tol: f64) -> Result<(Mesh, NodeMap), Mes
     // the 27 cells around a node. A zero tolerance buckets exact positions.
     let h = if tol > 0.0 { tol } else { 1.0 };
     let cell = |x: V3| -> [i64; 3] {
-        std::array::from_fn(|k| {
-            if tol > 0.0 {
-                (x[k] / h).floor() as i64
-            } else {
-                (x[k] + 0.0).to_bits() as i64
-            }
-        })
+        std::array::from_fn(|k| if tol > 0.0 { (x[k] / h).floor() as i64 } else { (x[k] + 0.0).to_bits() as i64 })
     };
     let mut grid: HashMap<[i64; 3], Vec<usize>> = HashMap::new();
     let mut map = NodeMap::default();
@@ -85,11 +73,7 @@ pub fn elim(nodes: &Nodes, mesh: &Mesh, tol: f64) -> Result<(Mesh, NodeMap), Mes
         for dx in -r..=r {
             for dy in -r..=r {
                 for dz in -r..=r {
-                    let key = [
-                        c[0].saturating_add(dx),
-                        c[1].saturating_add(dy),
-                        c[2].saturating_add(dz),
-                    ];
+                    let key = [c[0].saturating_add(dx), c[1].saturating_add(dy), c[2].saturating_add(dz)];
                     for &m in grid.get(&key).into_iter().flatten() {
                         if dist(nodes.get(m), x) <= tol && best.is_none_or(|b| m < b) {
                             best = Some(m);
@@ -117,20 +101,8 @@ fn elem_key(ty: ElemType, e: &[usize]) -> (ElemType, Vec<usize>) {
 }
 
 fn filter_elems(mesh: &Mesh, mut keep: impl FnMut(ElemType, &[usize]) -> bool) -> Mesh {
-    let parts = mesh
-        .parts
-        .iter()
-        .map(|p| {
-            (
-                p.ty,
-                p.elems()
-                    .filter(|e| keep(p.ty, e))
-                    .flatten()
-                    .copied()
-                    .collect(),
-            )
-        })
-        .collect();
+    let parts =
+        mesh.parts.iter().map(|p| (p.ty, p.elems().filter(|e| keep(p.ty, e)).flatten().copied().collect())).collect();
     mesh_of(parts)
 }
 
@@ -140,10 +112,7 @@ fn dedupe(mesh: &Mesh) -> Mesh {
 }
 
 fn key_set(mesh: &Mesh) -> HashSet<(ElemType, Vec<usize>)> {
-    mesh.parts
-        .iter()
-        .flat_map(|p| p.elems().map(move |e| elem_key(p.ty, e)))
-        .collect()
+    mesh.parts.iter().flat_map(|p| p.elems().map(move |e| elem_key(p.ty, e))).collect()
 }
 
 /// `G1 INTE G2`: the elements of `a` also in `b` (same type and nodes, in
@@ -192,10 +161,7 @@ pub fn inve(mesh: &Mesh) -> Result<Mesh, MeshError> {
             ElemType::Qua8 => &[0, 7, 6, 5, 4, 3, 2, 1],
             other => return fail("INVE", format!("cannot reverse {} elements", other.name())),
         };
-        let mut elems: Vec<Vec<usize>> = p
-            .elems()
-            .map(|e| perm.iter().map(|&k| e[k]).collect())
-            .collect();
+        let mut elems: Vec<Vec<usize>> = p.elems().map(|e| perm.iter().map(|&k| e[k]).collect()).collect();
         if p.ty.dim() <= 1 {
             elems.reverse();
         }
@@ -224,11 +190,7 @@ pub fn change_to_quadratic(nodes: &mut Nodes, mesh: &Mesh) -> Result<Mesh, MeshE
     let mut mid: HashMap<(usize, usize), usize> = HashMap::new();
     let key = |a: usize, b: usize| (a.min(b), a.max(b));
     for p in &mesh.parts {
-        let quad_edges: &[&[usize]] = if p.ty == ElemType::Seg3 {
-            &[&[0, 1, 2]]
-        } else {
-            edges(p.ty)
-        };
+        let quad_edges: &[&[usize]] = if p.ty == ElemType::Seg3 { &[&[0, 1, 2]] } else { edges(p.ty) };
         if matches!(p.ty, ElemType::Seg3 | ElemType::Tri6 | ElemType::Qua8) {
             for e in p.elems() {
                 for ed in quad_edges {
@@ -248,13 +210,7 @@ pub fn change_to_quadratic(nodes: &mut Nodes, mesh: &Mesh) -> Result<Mesh, MeshE
                 continue;
             }
             other => {
-                return fail(
-                    "CHAN",
-                    format!(
-                        "{} has no quadratic counterpart among the known elements",
-                        other.name()
-                    ),
-                )
+                return fail("CHAN", format!("{} has no quadratic counterpart among the known elements", other.name()))
             }
         };
         let mut conn = Vec::with_capacity(p.len() * ty.nodes());
@@ -290,12 +246,7 @@ pub fn change_to_linear(mesh: &Mesh) -> Mesh {
                 ElemType::Qua8 => (ElemType::Qua4, &[0, 2, 4, 6]),
                 t => return (t, p.conn.clone()),
             };
-            (
-                ty,
-                p.elems()
-                    .flat_map(|e| keep.iter().map(move |&k| e[k]))
-                    .collect(),
-            )
+            (ty, p.elems().flat_map(|e| keep.iter().map(move |&k| e[k])).collect())
         })
         .collect();
     merge_same_types(parts)
@@ -323,22 +274,11 @@ pub fn manu(nodes: &Nodes, ty: ElemType, pts: &[usize]) -> Result<Mesh, MeshErro
         return Ok(Mesh::points(pts));
     }
     if pts.len() != ty.nodes() {
-        return fail(
-            "MANU",
-            format!(
-                "a {} element needs {} points, got {}",
-                ty.name(),
-                ty.nodes(),
-                pts.len()
-            ),
-        );
+        return fail("MANU", format!("a {} element needs {} points, got {}", ty.name(), ty.nodes(), pts.len()));
     }
     let mut seen = HashSet::new();
     if let Some(&n) = pts.iter().find(|&&n| !seen.insert(n)) {
-        return fail(
-            "MANU",
-            format!("the {} element uses node {n} twice", ty.name()),
-        );
+        return fail("MANU", format!("the {} element uses node {n} twice", ty.name()));
     }
     Ok(mesh_of(vec![(ty, pts.to_vec())]))
 }

@@ -20,12 +20,7 @@ pub(crate) fn edges(ty: ElemType) -> &'static [&'static [usize]] {
 /// `GEO ELEM type`: the elements of one type, in their order (an empty
 /// mesh if there are none).
 pub fn elem_type(mesh: &Mesh, ty: ElemType) -> Mesh {
-    let conn = mesh
-        .parts
-        .iter()
-        .filter(|p| p.ty == ty)
-        .flat_map(|p| p.conn.iter().copied())
-        .collect();
+    let conn = mesh.parts.iter().filter(|p| p.ty == ty).flat_map(|p| p.conn.iter().copied()).collect();
     mesh_of(vec![(ty, conn)])
 }
 
@@ -45,13 +40,7 @@ pub fn elem_numbers(mesh: &Mesh, ty: Option<ElemType>, numbers: &[i64]) -> Resul
     for &k in numbers {
         if k < 1 || k as usize > pool.len() {
             let what = ty.map_or("elements".to_string(), |t| format!("{} elements", t.name()));
-            return fail(
-                "ELEM",
-                format!(
-                    "element number {k} is out of range (the mesh has {} {what})",
-                    pool.len()
-                ),
-            );
+            return fail("ELEM", format!("element number {k} is out of range (the mesh has {} {what})", pool.len()));
         }
         if !seen.insert(k) {
             continue;
@@ -134,22 +123,18 @@ pub fn cote(mesh: &Mesh, n: i64) -> Result<Mesh, MeshError> {
     let parts: Vec<&Part> = mesh.parts.iter().filter(|p| !p.is_empty()).collect();
     let p = match parts.as_slice() {
         [p] if p.ty.dim() == 2 => *p,
-        _ => {
-            return fail(
-                OP,
-                "needs a surface of a single element type, as DALL or TRAN make",
-            )
-        }
+        _ => return fail(OP, "needs a surface of a single element type, as DALL or TRAN make"),
     };
     let bnd = boundary_edges(&parts);
     let first = p.elem(0);
     let e0 = edges(p.ty)[0];
-    let starts_right = bnd
-        .first()
-        .is_some_and(|b| b[0] == first[e0[0]] && b[b.len() - 1] == first[e0[e0.len() - 1]]);
+    let starts_right = bnd.first().is_some_and(|b| b[0] == first[e0[0]] && b[b.len() - 1] == first[e0[e0.len() - 1]]);
     let loops = walk(&bnd);
     if !starts_right || loops.len() != 1 {
-        return fail(OP, "the surface does not have the structure of a DALL or TRAN surface (one boundary starting with element 1)");
+        return fail(
+            OP,
+            "the surface does not have the structure of a DALL or TRAN surface (one boundary starting with element 1)",
+        );
     }
     let mut count: HashMap<usize, usize> = HashMap::new();
     for e in p.elems() {
@@ -157,21 +142,14 @@ pub fn cote(mesh: &Mesh, n: i64) -> Result<Mesh, MeshError> {
             *count.entry(e[k]).or_default() += 1;
         }
     }
-    let limit = if matches!(p.ty, ElemType::Qua4 | ElemType::Qua8) {
-        1
-    } else {
-        2
-    };
+    let limit = if matches!(p.ty, ElemType::Qua4 | ElemType::Qua8) { 1 } else { 2 };
     let lp = &loops[0];
     let is_corner = |i: usize| count.get(&bnd[lp[i]][0]).is_some_and(|&c| c <= limit);
     let corners: Vec<usize> = (0..lp.len()).filter(|&i| is_corner(i)).collect();
     if corners.len() != 4 || corners[0] != 0 {
         return fail(
             OP,
-            format!(
-                "found {} corners on the boundary; COTE needs a four-sided DALL or TRAN surface",
-                corners.len()
-            ),
+            format!("found {} corners on the boundary; COTE needs a four-sided DALL or TRAN surface", corners.len()),
         );
     }
     let k = n as usize - 1;
@@ -184,11 +162,7 @@ pub fn cote(mesh: &Mesh, n: i64) -> Result<Mesh, MeshError> {
 }
 
 fn push_edge(out: &mut Vec<(ElemType, Vec<usize>)>, e: &[usize]) {
-    let ty = if e.len() == 3 {
-        ElemType::Seg3
-    } else {
-        ElemType::Seg2
-    };
+    let ty = if e.len() == 3 { ElemType::Seg3 } else { ElemType::Seg2 };
     match out.iter_mut().find(|(t, _)| *t == ty) {
         Some((_, c)) => c.extend_from_slice(e),
         None => out.push((ty, e.to_vec())),
@@ -205,13 +179,7 @@ pub(crate) fn boundary_edges(parts: &[&Part]) -> Vec<Vec<usize>> {
     let all: Vec<Vec<usize>> = parts
         .iter()
         .filter(|p| p.ty.dim() == 2)
-        .flat_map(|p| {
-            p.elems().flat_map(move |e| {
-                edges(p.ty)
-                    .iter()
-                    .map(move |ed| ed.iter().map(|&k| e[k]).collect())
-            })
-        })
+        .flat_map(|p| p.elems().flat_map(move |e| edges(p.ty).iter().map(move |ed| ed.iter().map(|&k| e[k]).collect())))
         .collect();
     let mut uses: HashMap<Vec<usize>, usize> = HashMap::new();
     for e in &all {
@@ -235,10 +203,7 @@ fn walk(edges: &[Vec<usize>]) -> Vec<Vec<usize>> {
         let mut lp = vec![seed];
         used[seed] = true;
         let mut at = edges[seed][edges[seed].len() - 1];
-        while let Some(&next) = by_start
-            .get(&at)
-            .and_then(|c| c.iter().find(|&&i| !used[i]))
-        {
+        while let Some(&next) = by_start.get(&at).and_then(|c| c.iter().find(|&&i| !used[i])) {
             used[next] = true;
             lp.push(next);
             at = edges[next][edges[next].len() - 1];

@@ -45,20 +45,12 @@ pub struct Spacing {
 impl Spacing {
     /// `n` equal elements.
     pub fn count(n: i64) -> Self {
-        Spacing {
-            n: Some(n),
-            dini: None,
-            dfin: None,
-        }
+        Spacing { n: Some(n), dini: None, dfin: None }
     }
 
     /// Add `'DINI' d1 'DFIN' d2`.
     pub fn densities(self, d1: f64, d2: f64) -> Self {
-        Spacing {
-            dini: Some(d1),
-            dfin: Some(d2),
-            ..self
-        }
+        Spacing { dini: Some(d1), dfin: Some(d2), ..self }
     }
 }
 
@@ -76,10 +68,7 @@ pub fn fractions(
     for (kw, d) in [("DINI", spacing.dini), ("DFIN", spacing.dfin)] {
         if let Some(d) = d {
             if !(d > 0.0 && d.is_finite()) {
-                return fail(
-                    op,
-                    format!("the density after '{kw}' must be positive (got {d})"),
-                );
+                return fail(op, format!("the density after '{kw}' must be positive (got {d})"));
             }
         }
     }
@@ -88,10 +77,7 @@ pub fn fractions(
     }
     if let Some(n) = spacing.n {
         if n.unsigned_abs() as usize > MAX_COUNT {
-            return fail(
-                op,
-                format!("{n} elements is more than the {MAX_COUNT} allowed"),
-            );
+            return fail(op, format!("{n} elements is more than the {MAX_COUNT} allowed"));
         }
     }
     let (d1, d2) = end_densities(spacing, node_d1, node_d2);
@@ -149,9 +135,7 @@ fn graded(n: usize, d1: f64, d2: f64) -> Vec<f64> {
     if (r - 1.0).abs() < 1e-12 {
         return uniform(n);
     }
-    let mut t: Vec<f64> = (0..=n)
-        .map(|k| (r.powf(k as f64 / n as f64) - 1.0) / (r - 1.0))
-        .collect();
+    let mut t: Vec<f64> = (0..=n).map(|k| (r.powf(k as f64 / n as f64) - 1.0) / (r - 1.0)).collect();
     // Pin the ends so the sizes add up to the length to the last bit.
     t[0] = 0.0;
     t[n] = 1.0;
@@ -164,11 +148,7 @@ const MAX_COUNT: usize = 10_000_000;
 
 /// `round(∫_0^L ds / d(s))`, at least 1; `None` above [`MAX_COUNT`].
 fn count_from_densities(length: f64, d1: f64, d2: f64) -> Option<usize> {
-    let x = if ((d2 - d1) / d1).abs() < 1e-12 {
-        length / d1
-    } else {
-        length * (d2 / d1).ln() / (d2 - d1)
-    };
+    let x = if ((d2 - d1) / d1).abs() < 1e-12 { length / d1 } else { length * (d2 / d1).ln() / (d2 - d1) };
     if !x.is_finite() || x > MAX_COUNT as f64 {
         None
     } else {

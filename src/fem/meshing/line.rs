@@ -32,21 +32,12 @@ pub fn line_type(ty: ElemType) -> ElemType {
 /// nodes are appended in order from `p1` to `p2` (for SEG3, middle nodes
 /// included, at the middle of each element); their density is the target
 /// size interpolated between the two ends.
-pub fn droi(
-    nodes: &mut Nodes,
-    p1: usize,
-    p2: usize,
-    spacing: &Spacing,
-    ty: ElemType,
-) -> Result<Mesh, MeshError> {
+pub fn droi(nodes: &mut Nodes, p1: usize, p2: usize, spacing: &Spacing, ty: ElemType) -> Result<Mesh, MeshError> {
     const OP: &str = "DROI";
     check_node(OP, nodes, p1)?;
     check_node(OP, nodes, p2)?;
     if p1 == p2 {
-        return fail(
-            OP,
-            format!("the two end points are the same point (node {p1})"),
-        );
+        return fail(OP, format!("the two end points are the same point (node {p1})"));
     }
     let (x1, x2) = (nodes.get(p1), nodes.get(p2));
     let (nd1, nd2) = (nodes.density[p1], nodes.density[p2]);
@@ -107,16 +98,10 @@ pub fn cerc(
     if norm(k) <= tol {
         let planar = [x1, xc, x2].iter().all(|x| x[2] == 0.0);
         if dot(a, b) > 0.0 {
-            return fail(
-                OP,
-                "the two end points lie in the same direction from the centre",
-            );
+            return fail(OP, "the two end points lie in the same direction from the centre");
         }
         if !planar {
-            return fail(
-                OP,
-                "the end points are opposite about the centre: the plane of the arc is undefined",
-            );
+            return fail(OP, "the end points are opposite about the centre: the plane of the arc is undefined");
         }
         k = [0.0, 0.0, 1.0];
     }

@@ -32,15 +32,13 @@ mod tests;
 
 pub use dall::dall;
 pub use edit::{
-    change_to_linear, change_to_poi1, change_to_quadratic, diff, elim, inte, inve, manu,
-    translate_copy, NodeMap,
+    change_to_linear, change_to_poi1, change_to_quadratic, diff, elim, inte, inve, manu, translate_copy, NodeMap,
 };
 pub use extract::{cont, cote, elem_appui, elem_numbers, elem_type};
 pub use grading::Spacing;
 pub use line::{cerc, droi, droi_extend, line_type};
 pub use query::{
-    line_chain, nbel, nbel_of_type, nbno, poin_droit, poin_final, poin_init, poin_nth, poin_plan,
-    poin_proc,
+    line_chain, nbel, nbel_of_type, nbno, poin_droit, poin_final, poin_init, poin_nth, poin_plan, poin_proc,
 };
 pub use sweep::{rota, tran, volu};
 
@@ -57,10 +55,7 @@ pub struct MeshError {
 
 impl MeshError {
     pub fn new(op: &'static str, message: impl Into<String>) -> Self {
-        MeshError {
-            op,
-            message: message.into(),
-        }
+        MeshError { op, message: message.into() }
     }
 }
 
@@ -74,19 +69,10 @@ pub(crate) fn fail<T>(op: &'static str, message: impl Into<String>) -> Result<T,
 pub(crate) fn check_nodes(op: &'static str, nodes: &Nodes, mesh: &Mesh) -> Result<(), MeshError> {
     for p in &mesh.parts {
         if p.conn.len() % p.ty.nodes() != 0 {
-            return fail(
-                op,
-                format!("a {} part has a truncated connectivity", p.ty.name()),
-            );
+            return fail(op, format!("a {} part has a truncated connectivity", p.ty.name()));
         }
         if let Some(&bad) = p.conn.iter().find(|&&n| n >= nodes.len()) {
-            return fail(
-                op,
-                format!(
-                    "node {bad} does not exist (the table has {} nodes)",
-                    nodes.len()
-                ),
-            );
+            return fail(op, format!("node {bad} does not exist (the table has {} nodes)", nodes.len()));
         }
     }
     Ok(())
@@ -95,13 +81,7 @@ pub(crate) fn check_nodes(op: &'static str, nodes: &Nodes, mesh: &Mesh) -> Resul
 /// Check a single node number.
 pub(crate) fn check_node(op: &'static str, nodes: &Nodes, n: usize) -> Result<(), MeshError> {
     if n >= nodes.len() {
-        return fail(
-            op,
-            format!(
-                "node {n} does not exist (the table has {} nodes)",
-                nodes.len()
-            ),
-        );
+        return fail(op, format!("node {n} does not exist (the table has {} nodes)", nodes.len()));
     }
     Ok(())
 }
@@ -109,11 +89,5 @@ pub(crate) fn check_node(op: &'static str, nodes: &Nodes, n: usize) -> Result<()
 /// Build a mesh from `(type, connectivity)` pairs, dropping empty parts and
 /// keeping the order given.
 pub(crate) fn mesh_of(parts: Vec<(ElemType, Vec<usize>)>) -> Mesh {
-    Mesh {
-        parts: parts
-            .into_iter()
-            .filter(|(_, c)| !c.is_empty())
-            .map(|(ty, conn)| Part { ty, conn })
-            .collect(),
-    }
+    Mesh { parts: parts.into_iter().filter(|(_, c)| !c.is_empty()).map(|(ty, conn)| Part { ty, conn }).collect() }
 }

@@ -22,11 +22,7 @@ pub fn nbel(mesh: &Mesh) -> usize {
 
 /// `NBEL GEO (MOTS ty)`: the number of elements of one type.
 pub fn nbel_of_type(mesh: &Mesh, ty: ElemType) -> usize {
-    mesh.parts
-        .iter()
-        .filter(|p| p.ty == ty)
-        .map(|p| p.len())
-        .sum()
+    mesh.parts.iter().filter(|p| p.ty == ty).map(|p| p.len()).sum()
 }
 
 /// The nodes of a line mesh in order along it, middle nodes of SEG3
@@ -41,20 +37,10 @@ pub fn line_chain(op: &'static str, mesh: &Mesh) -> Result<Vec<usize>, MeshError
     };
     let ty = first.ty;
     if ty.dim() != 1 {
-        return fail(
-            op,
-            format!("expected a line (SEG2 or SEG3), got {} elements", ty.name()),
-        );
+        return fail(op, format!("expected a line (SEG2 or SEG3), got {} elements", ty.name()));
     }
     if let Some(other) = parts.iter().find(|p| p.ty != ty) {
-        return fail(
-            op,
-            format!(
-                "the line mixes {} and {} elements",
-                ty.name(),
-                other.ty.name()
-            ),
-        );
+        return fail(op, format!("the line mixes {} and {} elements", ty.name(), other.ty.name()));
     }
     let mut out: Vec<usize> = Vec::new();
     let mut count = 0;
@@ -92,13 +78,7 @@ fn line_ends(line: &Mesh) -> Result<(usize, usize), MeshError> {
     const OP: &str = "POIN";
     let parts: Vec<_> = line.parts.iter().filter(|p| !p.is_empty()).collect();
     if let Some(p) = parts.iter().find(|p| p.ty.dim() != 1) {
-        return fail(
-            OP,
-            format!(
-                "'INIT' and 'FINAL' need a line, not {} elements",
-                p.ty.name()
-            ),
-        );
+        return fail(OP, format!("'INIT' and 'FINAL' need a line, not {} elements", p.ty.name()));
     }
     match (parts.first(), parts.last()) {
         (Some(f), Some(l)) => Ok((f.elem(0)[0], l.elem(l.len() - 1)[l.ty.nodes() - 1])),
@@ -111,13 +91,7 @@ fn line_ends(line: &Mesh) -> Result<(usize, usize), MeshError> {
 pub fn poin_nth(mesh: &Mesh, n: i64) -> Result<usize, MeshError> {
     let list = mesh.node_list();
     if n < 1 || n as usize > list.len() {
-        return fail(
-            "POIN",
-            format!(
-                "node number {n} is out of range (the mesh has {} nodes)",
-                list.len()
-            ),
-        );
+        return fail("POIN", format!("node number {n} is out of range (the mesh has {} nodes)", list.len()));
     }
     Ok(list[n as usize - 1])
 }
@@ -156,32 +130,18 @@ pub fn poin_droit(nodes: &Nodes, mesh: &Mesh, a: V3, b: V3, tol: f64) -> Result<
 /// `GEO POIN 'PLAN' P1 P2 P3 crit`: a POI1 mesh of the nodes of `mesh` at a
 /// distance at most `tol` from the plane through `a`, `b`, `c`, in node
 /// order.
-pub fn poin_plan(
-    nodes: &Nodes,
-    mesh: &Mesh,
-    a: V3,
-    b: V3,
-    c: V3,
-    tol: f64,
-) -> Result<Mesh, MeshError> {
+pub fn poin_plan(nodes: &Nodes, mesh: &Mesh, a: V3, b: V3, c: V3, tol: f64) -> Result<Mesh, MeshError> {
     check_nodes("POIN", nodes, mesh)?;
     let nrm = cross(sub(b, a), sub(c, a));
     let l = norm(nrm);
     if l == 0.0 {
-        return fail(
-            "POIN",
-            "'PLAN': the three points defining the plane are aligned",
-        );
+        return fail("POIN", "'PLAN': the three points defining the plane are aligned");
     }
     let keep = |x: V3| dot(nrm, sub(x, a)).abs() / l <= tol;
     Ok(select(nodes, mesh, keep))
 }
 
 fn select(nodes: &Nodes, mesh: &Mesh, keep: impl Fn(V3) -> bool) -> Mesh {
-    let picked: Vec<usize> = mesh
-        .node_list()
-        .into_iter()
-        .filter(|&n| keep(nodes.get(n)))
-        .collect();
+    let picked: Vec<usize> = mesh.node_list().into_iter().filter(|&n| keep(nodes.get(n))).collect();
     super::mesh_of(vec![(ElemType::Poi1, picked)])
 }

@@ -57,10 +57,7 @@ pub fn rota(
     const OP: &str = "ROTA";
     check_nodes(OP, nodes, mesh)?;
     if !(angle_deg.is_finite() && angle_deg != 0.0 && angle_deg.abs() <= 360.0 + 1e-9) {
-        return fail(
-            OP,
-            format!("the angle must be non-zero and at most 360 degrees (got {angle_deg})"),
-        );
+        return fail(OP, format!("the angle must be non-zero and at most 360 degrees (got {angle_deg})"));
     }
     let k = match axis_end {
         None => [0.0, 0.0, 1.0],
@@ -74,10 +71,7 @@ pub fn rota(
     };
     let radius = |x: V3| norm(cross(k, sub(x, centre)));
     let list = mesh.node_list();
-    let rmax = list
-        .iter()
-        .map(|&n| radius(nodes.get(n)))
-        .fold(0.0, f64::max);
+    let rmax = list.iter().map(|&n| radius(nodes.get(n))).fold(0.0, f64::max);
     if rmax == 0.0 {
         return fail(OP, "every node lies on the axis of rotation");
     }
@@ -85,11 +79,8 @@ pub fn rota(
     let d = mean_density(nodes, mesh);
     let t = fractions(OP, spacing, rmax * angle.abs(), d, d)?;
     let closed = (angle_deg.abs() - 360.0).abs() <= 1e-9;
-    let on_axis: std::collections::HashSet<usize> = list
-        .iter()
-        .copied()
-        .filter(|&n| radius(nodes.get(n)) <= 1e-12 * rmax)
-        .collect();
+    let on_axis: std::collections::HashSet<usize> =
+        list.iter().copied().filter(|&n| radius(nodes.get(n)) <= 1e-12 * rmax).collect();
     let place = |x: V3, _: usize, s: f64| rotate(x, centre, k, angle * s);
     sweep(OP, nodes, mesh, &t, place, |n| on_axis.contains(&n), closed)
 }
@@ -103,39 +94,20 @@ pub fn volu(nodes: &mut Nodes, s1: &Mesh, s2: &Mesh, spacing: &Spacing) -> Resul
     const OP: &str = "VOLU";
     check_nodes(OP, nodes, s1)?;
     check_nodes(OP, nodes, s2)?;
-    let types = |m: &Mesh| {
-        m.parts
-            .iter()
-            .filter(|p| !p.is_empty())
-            .map(|p| (p.ty, p.len()))
-            .collect::<Vec<_>>()
-    };
+    let types = |m: &Mesh| m.parts.iter().filter(|p| !p.is_empty()).map(|p| (p.ty, p.len())).collect::<Vec<_>>();
     if types(s1) != types(s2) {
-        return fail(
-            OP,
-            "the two surfaces do not have the same element types and counts",
-        );
+        return fail(OP, "the two surfaces do not have the same element types and counts");
     }
     let mut map: HashMap<usize, usize> = HashMap::new();
     let c1 = s1.parts.iter().flat_map(|p| p.conn.iter().copied());
     let c2 = s2.parts.iter().flat_map(|p| p.conn.iter().copied());
     for (a, b) in c1.zip(c2) {
         if *map.entry(a).or_insert(b) != b {
-            return fail(
-                OP,
-                format!("node {a} of the first surface faces two different nodes of the second"),
-            );
+            return fail(OP, format!("node {a} of the first surface faces two different nodes of the second"));
         }
     }
-    let targets: Vec<(usize, V3, f64)> = map
-        .iter()
-        .map(|(&a, &b)| (a, nodes.get(b), nodes.density[b]))
-        .collect();
-    let gap = targets
-        .iter()
-        .map(|(a, x, _)| dist(nodes.get(*a), *x))
-        .sum::<f64>()
-        / targets.len().max(1) as f64;
+    let targets: Vec<(usize, V3, f64)> = map.iter().map(|(&a, &b)| (a, nodes.get(b), nodes.density[b])).collect();
+    let gap = targets.iter().map(|(a, x, _)| dist(nodes.get(*a), *x)).sum::<f64>() / targets.len().max(1) as f64;
     let d = mean_density(nodes, s1);
     let t = fractions(OP, spacing, gap, d, d)?;
     let far: HashMap<usize, V3> = targets.iter().map(|(a, x, _)| (*a, *x)).collect();
@@ -161,15 +133,7 @@ fn sweep(
     closed: bool,
 ) -> Result<Mesh, MeshError> {
     let first = |n: usize| n;
-    sweep_to(
-        op,
-        nodes,
-        mesh,
-        t,
-        place,
-        fixed,
-        closed.then_some(&first as &dyn Fn(usize) -> usize),
-    )
+    sweep_to(op, nodes, mesh, t, place, fixed, closed.then_some(&first as &dyn Fn(usize) -> usize))
 }
 
 /// The sweep engine. `place(x, node, s)` is where `node` (at `x`) goes at
@@ -189,15 +153,7 @@ fn sweep_to(
         match p.ty {
             ElemType::Poi1 | ElemType::Seg2 | ElemType::Tri3 | ElemType::Qua4 => {}
             ElemType::Seg3 => halves_needed.extend(p.elems().flat_map(|e| [e[0], e[2]])),
-            other => {
-                return fail(
-                    op,
-                    format!(
-                        "cannot sweep {} elements (no matching element type)",
-                        other.name()
-                    ),
-                )
-            }
+            other => return fail(op, format!("cannot sweep {} elements (no matching element type)", other.name())),
         }
     }
     let list = mesh.node_list();
@@ -205,10 +161,7 @@ fn sweep_to(
         return fail(op, "the mesh to sweep is empty");
     }
     let n = t.len() - 1;
-    let origin: Vec<(V3, f64)> = list
-        .iter()
-        .map(|&a| (nodes.get(a), nodes.density[a]))
-        .collect();
+    let origin: Vec<(V3, f64)> = list.iter().map(|&a| (nodes.get(a), nodes.density[a])).collect();
     let copy = |nodes: &mut Nodes, k: usize, s: f64| -> usize {
         let (a, (x, d)) = (list[k], origin[k]);
         if fixed(a) {
@@ -224,13 +177,7 @@ fn sweep_to(
     for l in 1..=n {
         let s = 0.5 * (t[l - 1] + t[l]);
         let half = (0..list.len())
-            .map(|k| {
-                if halves_needed.contains(&list[k]) {
-                    copy(nodes, k, s)
-                } else {
-                    usize::MAX
-                }
-            })
+            .map(|k| if halves_needed.contains(&list[k]) { copy(nodes, k, s) } else { usize::MAX })
             .collect();
         halves.push(half);
         let layer = match (l == n, last) {

@@ -5,14 +5,8 @@ use crate::fem::meshing::*;
 /// The four sides of a quadrilateral with corners `c`, `m x n` elements.
 fn sides(n: &mut Nodes, c: [[f64; 2]; 4], m: i64, k: i64, ty: ElemType) -> [Mesh; 4] {
     let p: Vec<usize> = c.iter().map(|x| pt(n, x[0], x[1])).collect();
-    let d =
-        |n: &mut Nodes, a: usize, b: usize, c: i64| droi(n, a, b, &Spacing::count(c), ty).unwrap();
-    [
-        d(n, p[0], p[1], m),
-        d(n, p[1], p[2], k),
-        d(n, p[2], p[3], m),
-        d(n, p[3], p[0], k),
-    ]
+    let d = |n: &mut Nodes, a: usize, b: usize, c: i64| droi(n, a, b, &Spacing::count(c), ty).unwrap();
+    [d(n, p[0], p[1], m), d(n, p[1], p[2], k), d(n, p[2], p[3], m), d(n, p[3], p[0], k)]
 }
 
 const SQUARE: [[f64; 2]; 4] = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
@@ -43,25 +37,13 @@ fn unit_square_2x2_qua4() {
 #[test]
 fn distorted_quad_areas_sum_to_polygon_area() {
     let c = [[0.0, 0.0], [4.0, 0.5], [3.0, 3.0], [-0.5, 2.0]];
-    let poly = 0.5
-        * (0..4)
-            .map(|i| c[i][0] * c[(i + 1) % 4][1] - c[(i + 1) % 4][0] * c[i][1])
-            .sum::<f64>();
-    for ty in [
-        ElemType::Qua4,
-        ElemType::Tri3,
-        ElemType::Qua8,
-        ElemType::Tri6,
-    ] {
+    let poly = 0.5 * (0..4).map(|i| c[i][0] * c[(i + 1) % 4][1] - c[(i + 1) % 4][0] * c[i][1]).sum::<f64>();
+    for ty in [ElemType::Qua4, ElemType::Tri3, ElemType::Qua8, ElemType::Tri6] {
         let mut n = Nodes::default();
         let s = sides(&mut n, c, 3, 5, ty);
         let d = dall(&mut n, [&s[0], &s[1], &s[2], &s[3]], ty).unwrap();
         let a = areas(&n, &d);
-        let per = if matches!(ty, ElemType::Tri3 | ElemType::Tri6) {
-            2
-        } else {
-            1
-        };
+        let per = if matches!(ty, ElemType::Tri3 | ElemType::Tri6) { 2 } else { 1 };
         assert_eq!(a.len(), 15 * per);
         assert!(a.iter().all(|&x| x > 0.0), "{ty:?} counter-clockwise");
         assert!(close(a.iter().sum::<f64>(), poly), "{ty:?}");
@@ -100,10 +82,7 @@ fn graded_sides_stay_graded_inside() {
     let first_x = n.get(c1.parts[0].conn[1])[0];
     let before = n.len();
     let d = dall(&mut n, [&c1, &c2, &c3, &c4], ElemType::Qua4).unwrap();
-    assert!(
-        close(n.get(before)[0], first_x),
-        "interior row follows the grading"
-    );
+    assert!(close(n.get(before)[0], first_x), "interior row follows the grading");
     assert!(close(areas(&n, &d).iter().sum::<f64>(), 1.0));
 }
 
@@ -121,19 +100,11 @@ fn dall_refuses_open_contours_and_unequal_sides() {
     let e = dall(&mut n, [&s[1], &s[0], &s[2], &s[3]], ElemType::Qua4).unwrap_err();
     assert!(e.to_string().contains("closed contour"));
     let t = sides(&mut n, SQUARE, 2, 3, ElemType::Qua4);
-    let bad3 = droi(
-        &mut n,
-        t[2].parts[0].conn[0],
-        *t[3].parts[0].conn.first().unwrap(),
-        &Spacing::count(3),
-        ElemType::Seg2,
-    )
-    .unwrap();
+    let bad3 =
+        droi(&mut n, t[2].parts[0].conn[0], *t[3].parts[0].conn.first().unwrap(), &Spacing::count(3), ElemType::Seg2)
+            .unwrap();
     let e = dall(&mut n, [&t[0], &t[1], &bad3, &t[3]], ElemType::Qua4).unwrap_err();
-    assert!(
-        e.to_string().contains("side 3 has 3 but side 1 has 2"),
-        "{e}"
-    );
+    assert!(e.to_string().contains("side 3 has 3 but side 1 has 2"), "{e}");
     let e = dall(&mut n, [&s[0], &s[1], &s[2], &s[3]], ElemType::Qua8).unwrap_err();
     assert!(e.to_string().contains("need SEG3 sides"), "{e}");
 }

@@ -26,22 +26,10 @@ fn elim_merges_a_duplicated_line() {
 #[test]
 fn chan_qua8_shares_mid_nodes() {
     let mut n = Nodes::default();
-    let p: Vec<usize> = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]
-        .iter()
-        .map(|x| pt(&mut n, x[0], x[1]))
-        .collect();
-    let s: Vec<Mesh> = (0..4)
-        .map(|k| {
-            droi(
-                &mut n,
-                p[k],
-                p[(k + 1) % 4],
-                &Spacing::count(2),
-                ElemType::Seg2,
-            )
-            .unwrap()
-        })
-        .collect();
+    let p: Vec<usize> =
+        [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]].iter().map(|x| pt(&mut n, x[0], x[1])).collect();
+    let s: Vec<Mesh> =
+        (0..4).map(|k| droi(&mut n, p[k], p[(k + 1) % 4], &Spacing::count(2), ElemType::Seg2).unwrap()).collect();
     let d = dall(&mut n, [&s[0], &s[1], &s[2], &s[3]], ElemType::Qua4).unwrap();
     let before = n.len();
     let q = change_to_quadratic(&mut n, &d.union(&s[0])).unwrap();
@@ -65,10 +53,7 @@ fn inte_and_diff() {
     let g2 = seg(p[2], p[1]).union(&seg(p[2], p[3]));
     assert_eq!(inte(&g1, &g2), seg(p[1], p[2]));
     assert_eq!(diff(&g1, &g2), seg(p[0], p[1]).union(&seg(p[2], p[3])));
-    assert_eq!(
-        inte(&Mesh::points(&[1, 2]), &Mesh::points(&[2, 3])),
-        Mesh::points(&[2])
-    );
+    assert_eq!(inte(&Mesh::points(&[1, 2]), &Mesh::points(&[2, 3])), Mesh::points(&[2]));
 }
 
 #[test]
@@ -100,15 +85,9 @@ fn manu_checks_the_element() {
     let mut n = Nodes::default();
     let (a, b) = (pt(&mut n, 0.0, 0.0), pt(&mut n, 1.0, 0.0));
     assert_eq!(manu(&n, ElemType::Seg2, &[a, b]).unwrap().n_elements(), 1);
-    assert_eq!(
-        manu(&n, ElemType::Poi1, &[a, b]).unwrap(),
-        Mesh::points(&[a, b])
-    );
+    assert_eq!(manu(&n, ElemType::Poi1, &[a, b]).unwrap(), Mesh::points(&[a, b]));
     let e = manu(&n, ElemType::Tri3, &[a, b]).unwrap_err();
     assert_eq!(e.to_string(), "MANU: a TRI3 element needs 3 points, got 2");
-    assert!(manu(&n, ElemType::Seg2, &[a, a])
-        .unwrap_err()
-        .to_string()
-        .contains("twice"));
+    assert!(manu(&n, ElemType::Seg2, &[a, a]).unwrap_err().to_string().contains("twice"));
     assert!(manu(&n, ElemType::Seg2, &[a, 7]).is_err());
 }

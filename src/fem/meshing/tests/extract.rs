@@ -3,13 +3,8 @@ use crate::fem::mesh::{ElemType, Mesh, Nodes};
 use crate::fem::meshing::*;
 
 fn square(n: &mut Nodes, m: i64, ty: ElemType) -> ([Mesh; 4], Mesh) {
-    let p: Vec<usize> = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]
-        .iter()
-        .map(|x| pt(n, x[0], x[1]))
-        .collect();
-    let s: Vec<Mesh> = (0..4)
-        .map(|k| droi(n, p[k], p[(k + 1) % 4], &Spacing::count(m), ty).unwrap())
-        .collect();
+    let p: Vec<usize> = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]].iter().map(|x| pt(n, x[0], x[1])).collect();
+    let s: Vec<Mesh> = (0..4).map(|k| droi(n, p[k], p[(k + 1) % 4], &Spacing::count(m), ty).unwrap()).collect();
     let d = dall(n, [&s[0], &s[1], &s[2], &s[3]], ty).unwrap();
     ([s[0].clone(), s[1].clone(), s[2].clone(), s[3].clone()], d)
 }
@@ -45,21 +40,11 @@ fn cont_of_quadratic_and_triangle_surfaces() {
 
 #[test]
 fn cote_returns_the_four_sides() {
-    for ty in [
-        ElemType::Qua4,
-        ElemType::Tri3,
-        ElemType::Qua8,
-        ElemType::Tri6,
-    ] {
+    for ty in [ElemType::Qua4, ElemType::Tri3, ElemType::Qua8, ElemType::Tri6] {
         let mut n = Nodes::default();
         let (s, d) = square(&mut n, 2, ty);
         for (k, side) in s.iter().enumerate() {
-            assert_eq!(
-                &cote(&d, k as i64 + 1).unwrap(),
-                side,
-                "{ty:?} side {}",
-                k + 1
-            );
+            assert_eq!(&cote(&d, k as i64 + 1).unwrap(), side, "{ty:?} side {}", k + 1);
         }
     }
     let mut n = Nodes::default();
@@ -114,60 +99,24 @@ fn cont_of_a_ring_has_two_loops() {
     // The outer loop comes first (it holds element 1's first edge) and is
     // one closed chain of 12 edges.
     let outer = elem_numbers(&c, None, &(1..=12).collect::<Vec<_>>()).unwrap();
-    assert_eq!(
-        cont(&outer).unwrap().n_elements(),
-        0,
-        "closed line: no end points"
-    );
-    assert!(
-        cote(&ring, 1).is_err(),
-        "two boundaries: not a DALL surface"
-    );
+    assert_eq!(cont(&outer).unwrap().n_elements(), 0, "closed line: no end points");
+    assert!(cote(&ring, 1).is_err(), "two boundaries: not a DALL surface");
 }
 
 #[test]
 fn clockwise_contour_gives_clockwise_elements_and_3d_dall_works() {
     let mut n = Nodes::default();
-    let p: Vec<usize> = [[0.0, 0.0], [0.0, 1.0], [1.0, 1.0], [1.0, 0.0]]
-        .iter()
-        .map(|x| pt(&mut n, x[0], x[1]))
-        .collect();
-    let s: Vec<Mesh> = (0..4)
-        .map(|k| {
-            droi(
-                &mut n,
-                p[k],
-                p[(k + 1) % 4],
-                &Spacing::count(2),
-                ElemType::Seg2,
-            )
-            .unwrap()
-        })
-        .collect();
+    let p: Vec<usize> =
+        [[0.0, 0.0], [0.0, 1.0], [1.0, 1.0], [1.0, 0.0]].iter().map(|x| pt(&mut n, x[0], x[1])).collect();
+    let s: Vec<Mesh> =
+        (0..4).map(|k| droi(&mut n, p[k], p[(k + 1) % 4], &Spacing::count(2), ElemType::Seg2).unwrap()).collect();
     let d = dall(&mut n, [&s[0], &s[1], &s[2], &s[3]], ElemType::Qua4).unwrap();
     assert!(areas(&n, &d).iter().all(|&a| close(a, -0.25)));
     // A tilted square in 3D: the interior node is at its centre.
-    let q: Vec<usize> = [
-        [0.0, 0.0, 0.0],
-        [1.0, 0.0, 1.0],
-        [1.0, 1.0, 1.0],
-        [0.0, 1.0, 0.0],
-    ]
-    .iter()
-    .map(|x| n.push(*x, 0.0))
-    .collect();
-    let s: Vec<Mesh> = (0..4)
-        .map(|k| {
-            droi(
-                &mut n,
-                q[k],
-                q[(k + 1) % 4],
-                &Spacing::count(2),
-                ElemType::Seg2,
-            )
-            .unwrap()
-        })
-        .collect();
+    let q: Vec<usize> =
+        [[0.0, 0.0, 0.0], [1.0, 0.0, 1.0], [1.0, 1.0, 1.0], [0.0, 1.0, 0.0]].iter().map(|x| n.push(*x, 0.0)).collect();
+    let s: Vec<Mesh> =
+        (0..4).map(|k| droi(&mut n, q[k], q[(k + 1) % 4], &Spacing::count(2), ElemType::Seg2).unwrap()).collect();
     let before = n.len();
     dall(&mut n, [&s[0], &s[1], &s[2], &s[3]], ElemType::Qua4).unwrap();
     let c = n.get(before);

@@ -40,9 +40,7 @@ pub fn lengths(nodes: &Nodes, mesh: &Mesh) -> Vec<f64> {
     for p in mesh.parts.iter().filter(|p| p.ty.dim() == 1) {
         for e in p.elems() {
             let (a, b) = (nodes.get(e[0]), nodes.get(e[e.len() - 1]));
-            out.push(
-                ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt(),
-            );
+            out.push(((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt());
         }
     }
     out
@@ -53,21 +51,8 @@ pub fn lengths(nodes: &Nodes, mesh: &Mesh) -> Vec<f64> {
 /// the element is positively oriented).
 pub fn volume(nodes: &Nodes, ty: ElemType, e: &[usize]) -> f64 {
     let faces: &[&[usize]] = match ty {
-        ElemType::Cub8 => &[
-            &[0, 3, 2, 1],
-            &[4, 5, 6, 7],
-            &[0, 1, 5, 4],
-            &[1, 2, 6, 5],
-            &[2, 3, 7, 6],
-            &[3, 0, 4, 7],
-        ],
-        ElemType::Pri6 => &[
-            &[0, 2, 1],
-            &[3, 4, 5],
-            &[0, 1, 4, 3],
-            &[1, 2, 5, 4],
-            &[2, 0, 3, 5],
-        ],
+        ElemType::Cub8 => &[&[0, 3, 2, 1], &[4, 5, 6, 7], &[0, 1, 5, 4], &[1, 2, 6, 5], &[2, 3, 7, 6], &[3, 0, 4, 7]],
+        ElemType::Pri6 => &[&[0, 2, 1], &[3, 4, 5], &[0, 1, 4, 3], &[1, 2, 5, 4], &[2, 0, 3, 5]],
         _ => return 0.0,
     };
     let x: Vec<[f64; 3]> = e.iter().map(|&n| nodes.get(n)).collect();
@@ -81,8 +66,7 @@ pub fn volume(nodes: &Nodes, ty: ElemType, e: &[usize]) -> f64 {
         let u = [a[0] - c[0], a[1] - c[1], a[2] - c[2]];
         let v = [b[0] - c[0], b[1] - c[1], b[2] - c[2]];
         let w = [d[0] - c[0], d[1] - c[1], d[2] - c[2]];
-        (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0])
-            + u[2] * (v[0] * w[1] - v[1] * w[0]))
+        (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0]))
             / 6.0
     };
     let mut vol = 0.0;

@@ -37,14 +37,7 @@ fn droi_seg3_interleaves_middle_nodes() {
 fn dini_dfin_grading_sums_to_length_and_grows_geometrically() {
     let mut n = Nodes::default();
     let (a, b) = (pt(&mut n, 0.0, 0.0), pt(&mut n, 3.0, 4.0));
-    let l = droi(
-        &mut n,
-        a,
-        b,
-        &Spacing::count(5).densities(0.1, 2.0),
-        ElemType::Seg2,
-    )
-    .unwrap();
+    let l = droi(&mut n, a, b, &Spacing::count(5).densities(0.1, 2.0), ElemType::Seg2).unwrap();
     let h = lengths(&n, &l);
     assert_eq!(h.len(), 5);
     assert!(close(h.iter().sum::<f64>(), 5.0));
@@ -53,14 +46,7 @@ fn dini_dfin_grading_sums_to_length_and_grows_geometrically() {
         assert!(close(w[1] / w[0], q));
     }
     // Without a count: n = L ln(d2/d1) / (d2 - d1) rounded.
-    let l2 = droi(
-        &mut n,
-        a,
-        b,
-        &Spacing::default().densities(0.1, 2.0),
-        ElemType::Seg2,
-    )
-    .unwrap();
+    let l2 = droi(&mut n, a, b, &Spacing::default().densities(0.1, 2.0), ElemType::Seg2).unwrap();
     let expect = (5.0 * 20f64.ln() / 1.9).round() as usize;
     assert_eq!(nbel(&l2), expect);
     assert!(close(lengths(&n, &l2).iter().sum::<f64>(), 5.0));
@@ -94,25 +80,14 @@ fn droi_errors_are_clear() {
     assert!(e.to_string().contains("same point"));
     let e = droi(&mut n, a, 99, &Spacing::count(2), ElemType::Seg2).unwrap_err();
     assert!(e.to_string().contains("node 99 does not exist"));
-    let e = droi(
-        &mut n,
-        a,
-        b,
-        &Spacing::count(2).densities(-1.0, 1.0),
-        ElemType::Seg2,
-    )
-    .unwrap_err();
+    let e = droi(&mut n, a, b, &Spacing::count(2).densities(-1.0, 1.0), ElemType::Seg2).unwrap_err();
     assert!(e.to_string().contains("'DINI' must be positive"));
 }
 
 #[test]
 fn droi_extend_prolongs_a_line() {
     let mut n = Nodes::default();
-    let (a, b, c) = (
-        pt(&mut n, 0.0, 0.0),
-        pt(&mut n, 1.0, 0.0),
-        pt(&mut n, 1.0, 1.0),
-    );
+    let (a, b, c) = (pt(&mut n, 0.0, 0.0), pt(&mut n, 1.0, 0.0), pt(&mut n, 1.0, 1.0));
     let l = droi(&mut n, a, b, &Spacing::count(2), ElemType::Seg2).unwrap();
     let l2 = droi_extend(&mut n, &l, c, &Spacing::count(2), ElemType::Seg2).unwrap();
     assert_eq!(nbel(&l2), 4);
@@ -123,11 +98,7 @@ fn droi_extend_prolongs_a_line() {
 #[test]
 fn cerc_quarter_arc_stays_on_the_circle() {
     let mut n = Nodes::default();
-    let (a, o, b) = (
-        pt(&mut n, 2.0, 0.0),
-        pt(&mut n, 0.0, 0.0),
-        pt(&mut n, 0.0, 2.0),
-    );
+    let (a, o, b) = (pt(&mut n, 2.0, 0.0), pt(&mut n, 0.0, 0.0), pt(&mut n, 0.0, 2.0));
     let l = cerc(&mut n, a, o, b, &Spacing::count(6), ElemType::Seg3).unwrap();
     let chain = line_chain("T", &l).unwrap();
     assert_eq!(chain.len(), 13);
@@ -152,13 +123,6 @@ fn absurd_counts_are_refused() {
     let (a, b) = (pt(&mut n, 0.0, 0.0), pt(&mut n, 1.0, 0.0));
     let e = droi(&mut n, a, b, &Spacing::count(1 << 40), ElemType::Seg2).unwrap_err();
     assert!(e.to_string().contains("allowed"), "{e}");
-    let e = droi(
-        &mut n,
-        a,
-        b,
-        &Spacing::default().densities(1e-12, 1e-12),
-        ElemType::Seg2,
-    )
-    .unwrap_err();
+    let e = droi(&mut n, a, b, &Spacing::default().densities(1e-12, 1e-12), ElemType::Seg2).unwrap_err();
     assert!(e.to_string().contains("more than"), "{e}");
 }

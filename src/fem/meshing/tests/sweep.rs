@@ -32,13 +32,7 @@ fn tran_layers_follow_dini_dfin() {
     let mut n = Nodes::default();
     let (a, b) = (pt(&mut n, 0.0, 0.0), pt(&mut n, 1.0, 0.0));
     let l = droi(&mut n, a, b, &Spacing::count(1), ElemType::Seg2).unwrap();
-    let s = tran(
-        &mut n,
-        &l,
-        &Spacing::count(3).densities(0.1, 0.5),
-        [0.0, 0.0, 2.0],
-    )
-    .unwrap();
+    let s = tran(&mut n, &l, &Spacing::count(3).densities(0.1, 0.5), [0.0, 0.0, 2.0]).unwrap();
     let side = cote(&s, 2).unwrap();
     let h = lengths(&n, &side);
     assert!(h[0] < h[1] && h[1] < h[2]);
@@ -67,9 +61,7 @@ fn rota_of_a_line_90_degrees_is_a_quarter_annulus() {
     let chord = |r: f64| 4.0 * 0.5 * r * r * std::f64::consts::FRAC_PI_8.sin();
     assert!(close(ar, chord(3.0) - chord(1.0)), "{ar}");
     let far = cote(&s, 2).unwrap();
-    assert!(lengths(&n, &far)
-        .iter()
-        .all(|&h| close(h, 2.0 * 3.0 * (std::f64::consts::PI / 16.0).sin())));
+    assert!(lengths(&n, &far).iter().all(|&h| close(h, 2.0 * 3.0 * (std::f64::consts::PI / 16.0).sin())));
 }
 
 #[test]
@@ -89,15 +81,7 @@ fn rota_in_3d_about_an_axis() {
     let a = n.push([1.0, 0.0, 0.0], 0.0);
     let b = n.push([1.0, 0.0, 1.0], 0.0);
     let l = droi(&mut n, a, b, &Spacing::count(1), ElemType::Seg2).unwrap();
-    let s = rota(
-        &mut n,
-        &l,
-        &Spacing::count(1),
-        90.0,
-        [0.0; 3],
-        Some([0.0, 0.0, 5.0]),
-    )
-    .unwrap();
+    let s = rota(&mut n, &l, &Spacing::count(1), 90.0, [0.0; 3], Some([0.0, 0.0, 5.0])).unwrap();
     let e = s.parts[0].elem(0);
     let x = n.get(e[2]);
     assert!(close(x[0], 0.0) && close(x[1], 1.0) && close(x[2], 1.0));
@@ -106,10 +90,8 @@ fn rota_in_3d_about_an_axis() {
 #[test]
 fn tran_of_surfaces_makes_positive_volumes() {
     let mut n = Nodes::default();
-    let p: Vec<usize> = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]
-        .iter()
-        .map(|x| pt(&mut n, x[0], x[1]))
-        .collect();
+    let p: Vec<usize> =
+        [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]].iter().map(|x| pt(&mut n, x[0], x[1])).collect();
     let q = manu(&n, ElemType::Qua4, &[p[0], p[1], p[2], p[3]]).unwrap();
     let t = manu(&n, ElemType::Tri3, &[p[0], p[1], p[2]]).unwrap();
     for v in [[0.0, 0.0, 2.0], [0.0, 0.0, -2.0]] {
@@ -140,19 +122,14 @@ fn tran_seg3_gives_qua8_with_middle_layer() {
 #[test]
 fn volu_between_two_surfaces() {
     let mut n = Nodes::default();
-    let p: Vec<usize> = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]
-        .iter()
-        .map(|x| pt(&mut n, x[0], x[1]))
-        .collect();
+    let p: Vec<usize> =
+        [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]].iter().map(|x| pt(&mut n, x[0], x[1])).collect();
     let q = manu(&n, ElemType::Qua4, &[p[0], p[1], p[2], p[3]]).unwrap();
     let top = translate_copy(&mut n, &q, [0.0, 0.0, 3.0]).unwrap();
     let v = volu(&mut n, &q, &top, &Spacing::count(3)).unwrap();
     assert_eq!(nbel(&v), 3);
     assert_eq!(nbno(&v), 16);
-    let total: f64 = v.parts[0]
-        .elems()
-        .map(|e| volume(&n, ElemType::Cub8, e))
-        .sum();
+    let total: f64 = v.parts[0].elems().map(|e| volume(&n, ElemType::Cub8, e)).sum();
     assert!(close(total, 3.0));
     assert_eq!(&v.parts[0].elem(2)[4..], top.parts[0].elem(0));
 }
@@ -169,10 +146,7 @@ fn cote_of_a_qua8_tran_surface_and_sweep_errors() {
     assert!(close(n.get(poin_init(&c3).unwrap())[0], 1.0));
     // Quadratic surfaces have no quadratic volume to sweep into.
     let e = tran(&mut n, &s, &Spacing::count(1), [0.0, 0.0, 1.0]).unwrap_err();
-    assert_eq!(
-        e.to_string(),
-        "TRAN: cannot sweep QUA8 elements (no matching element type)"
-    );
+    assert_eq!(e.to_string(), "TRAN: cannot sweep QUA8 elements (no matching element type)");
     let e = rota(&mut n, &l, &Spacing::count(1), 400.0, [0.0; 3], None).unwrap_err();
     assert!(e.to_string().starts_with("ROTA: the angle"));
     let other = droi(&mut n, a, b, &Spacing::count(3), ElemType::Seg2).unwrap();
