@@ -125,3 +125,9 @@ impl From<SolveError> for Error {
 
 /// Shorthand used throughout the crate.
 pub type Result<T, E = Error> = std::result::Result<T, E>;
+
+impl From<crate::fem::meshing::MeshError> for Error {
+    fn from(e: crate::fem::meshing::MeshError) -> Self {
+        Error::runtime(e.to_string())
+    }
+}

@@ -1,34 +1,35 @@
-//! Geometry: points and meshes (COOR, POIN, MANU, DROI, … ; NBNO, NBEL).
+//! Geometry: points and meshes. The algorithms live in `fem::meshing`;
+//! this file reads Gibiane arguments and wraps results.
 
 use super::{Args, OpDef, PointId};
 use crate::error::Result;
 use crate::eval::Interp;
-use crate::fem::mesh::Mesh;
-use crate::value::Value;
+use crate::fem::mesh::{ElemType, Mesh};
+use crate::fem::meshing as mg;
+use crate::value::{Chpoint, Nature, Value};
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
-    OpDef {
-        name: "COOR",
-        signature: "COOR POINT | COOR n POINT | COOR n MAILLAGE",
-        doc: "Coordinates of a point (one result per dimension), one of them, or a coordinate field on a mesh.",
-        example: "x y = coor p ;",
-        f: coor,
-    },
-    OpDef {
-        name: "NBNO",
-        signature: "NBNO MAILLAGE",
-        doc: "Number of nodes of a mesh.",
-        example: "n = nbno l ;",
-        f: nbno,
-    },
-    OpDef {
-        name: "NBEL",
-        signature: "NBEL MAILLAGE",
-        doc: "Number of elements of a mesh.",
-        example: "n = nbel s ;",
-        f: nbel,
-    },
+    OpDef { name: "COOR", signature: "COOR POINT | COOR n POINT | COOR n MAILLAGE", doc: "Coordinates of a point (one result per dimension), one of them, or a coordinate field on a mesh.", example: "x y = coor p ;", f: coor },
+    OpDef { name: "NBNO", signature: "NBNO MAILLAGE", doc: "Number of nodes of a mesh.", example: "n = nbno l ;", f: nbno },
+    OpDef { name: "NBEL", signature: "NBEL MAILLAGE", doc: "Number of elements of a mesh.", example: "n = nbel s ;", f: nbel },
+    OpDef { name: "POIN", signature: "POIN x (y) (z) | MAILLAGE POIN n | MAILLAGE POIN ('INIT'|'FINAL') | MAILLAGE POIN 'PROC' POINT | MAILLAGE POIN ('DROIT' P1 P2 | 'PLAN' P1 P2 P3) (crit)", doc: "A point, or nodes of a mesh.", example: "p = l poin 'FINAL' ;", f: poin },
+    OpDef { name: "DROI", signature: "DROI (n) P1|LINE P2 ('DINI' d1) ('DFIN' d2)", doc: "A straight line of n elements (SEG2 or SEG3 per OPTI ELEM).", example: "l = droi 10 p1 p2 ;", f: droi },
+    OpDef { name: "CERC", signature: "CERC (n) P1 CENTRE P2 ('DINI' d1) ('DFIN' d2)", doc: "An arc of circle from P1 to P2 around CENTRE.", example: "c = cerc 8 p1 o p2 ;", f: cerc },
+    OpDef { name: "DALL", signature: "DALL LINE1 LINE2 LINE3 LINE4 ('PLAN')", doc: "A structured surface (OPTI ELEM QUA4, TRI3, QUA8, TRI6) from four sides forming a closed contour.", example: "s = dall bas dro hau gau ;", f: dall },
+    OpDef { name: "TRAN", signature: "GEO TRAN (n) ('DINI' d1) ('DFIN' d2) VECTOR", doc: "Sweep a line into a surface or a surface into a volume along a vector.", example: "s = l tran 4 (0. 1.) ;", f: tran },
+    OpDef { name: "ROTA", signature: "GEO ROTA (n) ANGLE CENTRE (AXIS_POINT)", doc: "Sweep by rotation (angle in degrees) about a point (2D) or an axis (3D).", example: "s = l rota 8 90. o ;", f: rota },
+    OpDef { name: "VOLU", signature: "VOLU (n) SURF1 SURF2", doc: "Volume between two compatible surfaces.", example: "v = volu 3 s1 s2 ;", f: volu },
+    OpDef { name: "ELEM", signature: "GEO ELEM TYPE | GEO ELEM n|LISTENTI | GEO ELEM 'APPU' ('STRI'|'LARG') GEO2", doc: "Elements of a mesh by type, by number, or resting on another mesh.", example: "q = s elem qua4 ;", f: elem },
+    OpDef { name: "COTE", signature: "COTE n SURFACE", doc: "Side n of a structured (DALL/TRAN) surface.", example: "b = cote 1 s ;", f: cote },
+    OpDef { name: "CONT", signature: "CONT GEO", doc: "Contour: boundary edges of a surface, end points of a line.", example: "c = cont s ;", f: cont },
+    OpDef { name: "ELIM", signature: "ELIM (crit) GEO", doc: "Merge nodes closer than crit, in every object.", example: "elim 1.e-5 l ;", f: elim },
+    OpDef { name: "INTE", signature: "GEO1 INTE GEO2", doc: "Elements common to two meshes.", example: "c = s1 inte s2 ;", f: inte },
+    OpDef { name: "DIFF", signature: "DIFF GEO1 GEO2", doc: "Symmetric difference of two meshes.", example: "d = diff s1 s2 ;", f: diff },
+    OpDef { name: "PLUS", signature: "OBJ PLUS VECTOR | GEO PLUS CHPOINT", doc: "A translated copy (geometric, not arithmetic), or the mesh moved by a displacement field.", example: "l2 = l plus (0. 1.) ;", f: plus },
+    OpDef { name: "MOIN", signature: "OBJ MOIN VECTOR", doc: "A copy translated by minus the vector.", example: "l2 = l moin (0. 1.) ;", f: moin },
+    OpDef { name: "INVE", signature: "INVE GEO", doc: "Reverse the orientation of a mesh.", example: "l2 = inve l ;", f: inve },
+    OpDef { name: "SURF", signature: "SURF LINE ('PLAN')", doc: "Free meshing — not available in gibi: use DALL, TRAN or ROTA, or import a Gmsh mesh.", example: "", f: surf },
 ];
 
 fn coor(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
@@ -49,33 +50,300 @@ fn coor(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         if !(1..=dim + 1).contains(&k) {
             return Err(a.err(format!("coordinate {} does not exist in dimension {}", k, dim)));
         }
-        let entries: Vec<(usize, f64)> = m
-            .node_list()
-            .into_iter()
-            .map(|n| (n, if k == dim + 1 { it.nodes.density[n] } else { it.nodes.get(n)[k as usize - 1] }))
-            .collect();
-        let c = crate::value::Chpoint::from_entries(
-            crate::value::Nature::Diffus,
-            entries.iter().map(|(n, v)| (*n, "SCAL", *v)),
+        let c = Chpoint::from_entries(
+            Nature::Diffus,
+            m.node_list()
+                .into_iter()
+                .map(|n| (n, "SCAL", if k == dim + 1 { it.nodes.density[n] } else { it.nodes.get(n)[k as usize - 1] })),
         );
         return Ok(vec![Value::Chpo(Rc::new(c))]);
     }
     Err(a.missing("POINT or MAILLAGE"))
 }
 
-fn mesh_arg(a: &mut Args) -> Result<Mesh> {
+/// A POINT (as a POI1 mesh) or a MAILLAGE.
+pub(crate) fn opt_geo(a: &mut Args) -> Option<Mesh> {
     if let Some(p) = a.opt::<PointId>() {
-        return Ok(Mesh::points(&[p.0]));
+        return Some(Mesh::points(&[p.0]));
     }
-    a.req::<Rc<Mesh>>().map(|m| (*m).clone())
+    a.opt::<Rc<Mesh>>().map(|m| (*m).clone())
+}
+
+pub(crate) fn req_geo(a: &mut Args) -> Result<Mesh> {
+    opt_geo(a).ok_or_else(|| a.missing("POINT or MAILLAGE"))
+}
+
+fn mesh_val(m: Mesh) -> Vec<Value> {
+    vec![Value::Mesh(Rc::new(m))]
 }
 
 fn nbno(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let m = mesh_arg(a)?;
-    Ok(vec![Value::Int(m.node_list().len() as i64)])
+    let m = req_geo(a)?;
+    Ok(vec![Value::Int(mg::nbno(&m) as i64)])
 }
 
 fn nbel(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let m = mesh_arg(a)?;
-    Ok(vec![Value::Int(m.n_elements() as i64)])
+    let m = req_geo(a)?;
+    Ok(vec![Value::Int(mg::nbel(&m) as i64)])
+}
+
+/// A POINT argument read as a vector.
+fn vector(it: &Interp, a: &mut Args) -> Option<[f64; 3]> {
+    a.opt::<PointId>().map(|p| it.nodes.get(p.0))
+}
+
+fn poin(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    if let Some(m) = a.opt::<Rc<Mesh>>() {
+        if let Some(k) = a.keyword(&["INIT", "FINAL", "PROC", "DROIT", "PLAN"]) {
+            return Ok(vec![match k {
+                "INIT" => Value::Point(mg::poin_init(&m)?),
+                "FINAL" => Value::Point(mg::poin_final(&m)?),
+                "PROC" => {
+                    let x = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
+                    Value::Point(mg::poin_proc(&it.nodes, &m, x)?)
+                }
+                "DROIT" => {
+                    let p1 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
+                    let p2 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
+                    let tol = a.opt_num().unwrap_or(1e-6 * it.opts.dens.max(1e-12));
+                    Value::Mesh(Rc::new(mg::poin_droit(&it.nodes, &m, p1, p2, tol)?))
+                }
+                _ => {
+                    let p1 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
+                    let p2 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
+                    let p3 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
+                    let tol = a.opt_num().unwrap_or(1e-6 * it.opts.dens.max(1e-12));
+                    Value::Mesh(Rc::new(mg::poin_plan(&it.nodes, &m, p1, p2, p3, tol)?))
+                }
+            }]);
+        }
+        let n = a.req::<i64>()?;
+        return Ok(vec![Value::Point(mg::poin_nth(&m, n)?)]);
+    }
+    // POIN x (y) (z): a point from numbers (the only way in DIME 1).
+    let mut x = [0.0; 3];
+    let dim = it.opts.dime.max(1);
+    for (k, c) in x.iter_mut().enumerate().take(dim) {
+        *c = if k == 0 { a.req_num()? } else { a.opt_num().unwrap_or(0.0) };
+    }
+    let d = it.opts.dens;
+    Ok(vec![Value::Point(it.nodes.push(x, d))])
+}
+
+/// `(n) … ('DINI' d1) ('DFIN' d2)` read in any order around the geometry.
+fn spacing(a: &mut Args) -> Result<mg::Spacing> {
+    let mut s = mg::Spacing { n: None, dini: None, dfin: None };
+    loop {
+        if let Some(k) = a.keyword(&["DINI", "DFIN"]) {
+            let d = a.req_num()?;
+            if k == "DINI" {
+                s.dini = Some(d)
+            } else {
+                s.dfin = Some(d)
+            }
+        } else if s.n.is_none() {
+            match a.opt::<i64>() {
+                Some(n) => s.n = Some(n),
+                None => break,
+            }
+        } else {
+            break;
+        }
+    }
+    Ok(s)
+}
+
+fn elem_type_opt(it: &Interp) -> ElemType {
+    ElemType::from_name(&it.opts.elem).unwrap_or(ElemType::Seg2)
+}
+
+fn droi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let mut sp = spacing(a)?;
+    let ty = elem_type_opt(it);
+    if let Some(line) = a.opt::<Rc<Mesh>>() {
+        let p2 = a.req::<PointId>()?;
+        let more = spacing(a)?;
+        merge(&mut sp, more);
+        return Ok(mesh_val(mg::droi_extend(&mut it.nodes, &line, p2.0, &sp, ty)?));
+    }
+    let p1 = a.req::<PointId>()?;
+    let p2 = a.req::<PointId>()?;
+    let more = spacing(a)?;
+    merge(&mut sp, more);
+    Ok(mesh_val(mg::droi(&mut it.nodes, p1.0, p2.0, &sp, ty)?))
+}
+
+fn merge(s: &mut mg::Spacing, more: mg::Spacing) {
+    s.n = s.n.or(more.n);
+    s.dini = s.dini.or(more.dini);
+    s.dfin = s.dfin.or(more.dfin);
+}
+
+fn cerc(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let mut sp = spacing(a)?;
+    let p1 = a.req::<PointId>()?;
+    let c = a.req::<PointId>()?;
+    let p2 = a.req::<PointId>()?;
+    merge(&mut sp, spacing(a)?);
+    let ty = elem_type_opt(it);
+    Ok(mesh_val(mg::cerc(&mut it.nodes, p1.0, c.0, p2.0, &sp, ty)?))
+}
+
+fn dall(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let mut sides = Vec::new();
+    for _ in 0..4 {
+        sides.push(a.req::<Rc<Mesh>>()?);
+    }
+    a.keyword(&["PLAN"]);
+    let ty = match ElemType::from_name(&it.opts.elem) {
+        Some(t @ (ElemType::Qua4 | ElemType::Tri3 | ElemType::Qua8 | ElemType::Tri6)) => t,
+        _ => ElemType::Qua4,
+    };
+    Ok(mesh_val(mg::dall(&mut it.nodes, [&sides[0], &sides[1], &sides[2], &sides[3]], ty)?))
+}
+
+fn tran(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let geo = req_geo(a)?;
+    let mut sp = spacing(a)?;
+    let v = vector(it, a).ok_or_else(|| a.missing("a vector (POINT)"))?;
+    merge(&mut sp, spacing(a)?);
+    Ok(mesh_val(mg::tran(&mut it.nodes, &geo, &sp, v)?))
+}
+
+fn rota(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let geo = req_geo(a)?;
+    let mut sp = spacing(a)?;
+    let angle = a.req_num()?;
+    let c = vector(it, a).ok_or_else(|| a.missing("the centre (POINT)"))?;
+    let axis = vector(it, a);
+    merge(&mut sp, spacing(a)?);
+    Ok(mesh_val(mg::rota(&mut it.nodes, &geo, &sp, angle, c, axis)?))
+}
+
+fn volu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let sp = spacing(a)?;
+    let s1 = a.req::<Rc<Mesh>>()?;
+    let s2 = a.req::<Rc<Mesh>>()?;
+    Ok(mesh_val(mg::volu(&mut it.nodes, &s1, &s2, &sp)?))
+}
+
+fn elem(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let m = a.req::<Rc<Mesh>>()?;
+    if a.keyword(&["APPU"]).is_some() {
+        let strict = a.keyword(&["STRI", "LARG"]) != Some("LARG");
+        let support = req_geo(a)?;
+        return Ok(mesh_val(mg::elem_appui(&m, &support, strict)));
+    }
+    if let Some(n) = a.opt::<i64>() {
+        return Ok(mesh_val(mg::elem_numbers(&m, None, &[n])?));
+    }
+    if let Some(l) = a.opt::<Rc<Vec<i64>>>() {
+        return Ok(mesh_val(mg::elem_numbers(&m, None, &l)?));
+    }
+    let w = a.word().ok_or_else(|| a.missing("an element type, a number or APPU"))?;
+    let ty = ElemType::from_name(&w.to_uppercase()).ok_or_else(|| a.err(format!("unknown element type {}", w)))?;
+    Ok(mesh_val(mg::elem_type(&m, ty)))
+}
+
+fn cote(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let n = a.req::<i64>()?;
+    let s = a.req::<Rc<Mesh>>()?;
+    Ok(mesh_val(mg::cote(&s, n)?))
+}
+
+fn cont(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let m = a.req::<Rc<Mesh>>()?;
+    Ok(mesh_val(mg::cont(&m)?))
+}
+
+/// ELIM works in place in Cast3M: every object holding a merged node sees
+/// the kept one. We rewrite every mesh and point in the store.
+fn elim(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let tol = a.opt_num();
+    let m = req_geo(a)?;
+    let tol = tol.unwrap_or(1e-6);
+    let (merged, map) = mg::elim(&it.nodes, &m, tol)?;
+    if !map.is_empty() {
+        for f in it.store.frames.iter_mut() {
+            for v in f.vars.values_mut() {
+                match v {
+                    Value::Mesh(x) => *x = Rc::new(map.apply(x)),
+                    Value::Point(p) => *p = map.get(*p),
+                    _ => {}
+                }
+            }
+        }
+    }
+    Ok(mesh_val(merged))
+}
+
+fn inte(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let x = req_geo(a)?;
+    let y = req_geo(a)?;
+    Ok(mesh_val(mg::inte(&x, &y)))
+}
+
+fn diff(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let x = req_geo(a)?;
+    let y = req_geo(a)?;
+    Ok(mesh_val(mg::diff(&x, &y)))
+}
+
+fn translate(it: &mut Interp, a: &mut Args, sign: f64) -> Result<Vec<Value>> {
+    // The object comes first; the vector after it (both may be points).
+    let obj = a.req::<Value>()?;
+    if let (Value::Mesh(m), Some(u)) = (&obj, a.opt::<Rc<Chpoint>>()) {
+        return Ok(mesh_val(moved_by_field(it, m, &u, sign)));
+    }
+    let v = vector(it, a).ok_or_else(|| a.missing("a vector (POINT)"))?.map(|c| c * sign);
+    Ok(match obj {
+        Value::Point(p) => {
+            let x = it.nodes.get(p);
+            let d = it.nodes.density[p];
+            vec![Value::Point(it.nodes.push([x[0] + v[0], x[1] + v[1], x[2] + v[2]], d))]
+        }
+        Value::Mesh(m) => mesh_val(mg::translate_copy(&mut it.nodes, &m, v)?),
+        other => return Err(a.err(format!("cannot translate a {}", other.type_name()))),
+    })
+}
+
+/// A copy of the mesh with nodes moved by a displacement field (deformed shape).
+fn moved_by_field(it: &mut Interp, m: &Mesh, u: &Chpoint, sign: f64) -> Mesh {
+    let names = [["UX", "UR"], ["UY", "UZ"], ["UZ", "UZ"]];
+    let axis = it.opts.mode.starts_with("AXIS") || it.opts.mode.starts_with("FOUR");
+    let mut map = std::collections::HashMap::new();
+    for n in m.node_list() {
+        let mut x = it.nodes.get(n);
+        for (k, xk) in x.iter_mut().enumerate().take(it.opts.dime.max(1)) {
+            let comp = if axis { names[k][1] } else { names[k][0] };
+            let comp = if axis && k == 0 { "UR" } else { comp };
+            *xk += sign * u.get(n, comp).unwrap_or(0.0);
+        }
+        let d = it.nodes.density[n];
+        map.insert(n, it.nodes.push(x, d));
+    }
+    let mut out = m.clone();
+    for p in out.parts.iter_mut() {
+        for n in p.conn.iter_mut() {
+            *n = map[n];
+        }
+    }
+    out
+}
+
+fn plus(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    translate(it, a, 1.0)
+}
+
+fn moin(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    translate(it, a, -1.0)
+}
+
+fn inve(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let m = a.req::<Rc<Mesh>>()?;
+    Ok(mesh_val(mg::inve(&m)?))
+}
+
+fn surf(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    Err(a.err("free meshing (SURF) is out of gibi's scope: mesh with DALL, TRAN or ROTA, or read a Gmsh mesh"))
 }
