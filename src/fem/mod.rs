@@ -1,2 +1,9 @@
 //! Elements, quadrature and assembly: knows meshes and materials, never the language.
+pub mod bar;
+pub mod beam;
+pub mod element;
+pub mod material;
 pub mod mesh;
+pub mod quadrature;
+pub mod shape;
+pub mod solid;
