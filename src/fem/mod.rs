@@ -7,3 +7,10 @@ pub mod mesh;
 pub mod quadrature;
 pub mod shape;
 pub mod solid;
+pub mod loads;
+pub mod stress;
+
+#[cfg(test)]
+mod test_support;
+#[cfg(test)]
+mod tests_patch;
