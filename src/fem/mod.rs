@@ -14,3 +14,5 @@ pub mod stress;
 mod test_support;
 #[cfg(test)]
 mod tests_patch;
+#[cfg(test)]
+mod tests_solid;
