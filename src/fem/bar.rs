@@ -33,7 +33,7 @@ fn axis(mode: Mode, x: &[[f64; 3]]) -> Result<(usize, [f64; 3], f64), FemError> 
     }
     let l = d.iter().map(|v| v * v).sum::<f64>().sqrt();
     let scale = x.iter().flatten().fold(0.0f64, |a, v| a.max(v.abs()));
-    if !(l > 1e-12 * scale.max(f64::MIN_POSITIVE)) || !l.is_finite() {
+    if l <= 1e-12 * scale.max(f64::MIN_POSITIVE) || !l.is_finite() {
         return Err(FemError::Degenerate {
             elem: "BARR",
             why: "zero-length element (both ends coincide)".into(),

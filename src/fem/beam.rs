@@ -59,7 +59,7 @@ fn frame(
     }
     let l = dot(d, d).sqrt();
     let scale = x.iter().flatten().fold(0.0f64, |a, v| a.max(v.abs()));
-    if !(l > 1e-12 * scale.max(f64::MIN_POSITIVE)) || !l.is_finite() {
+    if l <= 1e-12 * scale.max(f64::MIN_POSITIVE) || !l.is_finite() {
         return Err(FemError::Degenerate {
             elem,
             why: "zero-length element (both ends coincide)".into(),
@@ -75,7 +75,7 @@ fn frame(
         let p = dot(v, ex);
         let y = [v[0] - p * ex[0], v[1] - p * ex[1], v[2] - p * ex[2]];
         let ny = dot(y, y).sqrt();
-        if !(ny > 1e-8 * dot(v, v).sqrt()) {
+        if ny <= 1e-8 * dot(v, v).sqrt() || !ny.is_finite() {
             return Err(FemError::Degenerate {
                 elem,
                 why: "CARA VECT is parallel to the element axis (local y undefined)".into(),

@@ -70,12 +70,9 @@ pub fn pressure_load(
             ]
         }
     };
-    let centre = if edge {
-        [0.0; 3]
-    } else if face.nodes() % 3 == 0 {
-        [1.0 / 3.0, 1.0 / 3.0, 0.0]
-    } else {
-        [0.0; 3]
+    let centre = match face {
+        ElemType::Tri3 | ElemType::Tri6 => [1.0 / 3.0, 1.0 / 3.0, 0.0],
+        _ => [0.0; 3],
     };
     let sc = eval(face, centre);
     let nc = normal(&sc);
@@ -89,13 +86,13 @@ pub fn pressure_load(
     let side: f64 = (0..dims).map(|c| nc[c] * (inside[c] - xc[c])).sum();
     let len2: f64 = nc.iter().map(|v| v * v).sum();
     let dist2: f64 = (0..dims).map(|c| (inside[c] - xc[c]).powi(2)).sum();
-    if !(len2 > 0.0) {
+    if len2 <= 0.0 || !len2.is_finite() {
         return Err(FemError::Degenerate {
             elem: face.name(),
             why: "face of zero length or area".into(),
         });
     }
-    if !(side.abs() > 1e-10 * (len2 * dist2).sqrt()) {
+    if side.abs() <= 1e-10 * (len2 * dist2).sqrt() || !side.is_finite() {
         return Err(FemError::Degenerate {
             elem: face.name(),
             why: "the point given inside the solid lies on the face plane; the pressure side is undefined".into(),

@@ -132,9 +132,8 @@ pub(crate) fn elasticity(
             let d = lam + 2.0 * g;
             let mut k = vec![vec![0.0; 6]; 6];
             for i in 0..3 {
-                for j in 0..3 {
-                    k[i][j] = if i == j { d } else { lam };
-                }
+                k[i][..3].copy_from_slice(&[lam; 3]);
+                k[i][i] = d;
                 k[i + 3][i + 3] = g;
             }
             k

@@ -2,16 +2,18 @@
 pub mod bar;
 pub mod beam;
 pub mod element;
+pub mod loads;
 pub mod material;
 pub mod mesh;
 pub mod quadrature;
 pub mod shape;
 pub mod solid;
-pub mod loads;
 pub mod stress;
 
 #[cfg(test)]
 mod test_support;
+#[cfg(test)]
+mod tests_beam;
 #[cfg(test)]
 mod tests_patch;
 #[cfg(test)]

@@ -155,7 +155,7 @@ fn points(
             }
         }
         let (det, inv) = invert(&j, dim);
-        if !(det.abs() > tol) || (sign != 0.0 && det * sign < 0.0) {
+        if det.abs() <= tol || !det.is_finite() || (sign != 0.0 && det * sign < 0.0) {
             return Err(FemError::Degenerate {
                 elem: ty.name(),
                 why: format!("Jacobian {det:e} vanishes or changes sign (flat, folded or badly distorted element)"),

@@ -146,6 +146,8 @@ pub fn to_nodes(f: Formulation, ty: ElemType, g: &GaussField) -> Result<GaussFie
 }
 
 /// Small dense solve by Gaussian elimination with partial pivoting.
+// Index loops read best for elimination on rows k and i of one matrix.
+#[allow(clippy::needless_range_loop)]
 fn solve(mut a: Vec<Vec<f64>>, b: &mut [f64]) -> Option<Vec<f64>> {
     let n = b.len();
     for k in 0..n {

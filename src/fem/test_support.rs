@@ -64,6 +64,8 @@ pub fn solve_prescribed(k: &[Vec<f64>], f: &[f64], fixed: &BTreeMap<usize, f64>)
     u
 }
 
+// Index loops read best for elimination on rows k and i of one matrix.
+#[allow(clippy::needless_range_loop)]
 pub fn dense_solve(a: &mut [Vec<f64>], b: &mut [f64]) -> Vec<f64> {
     let n = b.len();
     for k in 0..n {

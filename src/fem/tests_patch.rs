@@ -8,14 +8,13 @@ use super::mesh::ElemType;
 use super::test_support::*;
 use std::collections::{BTreeMap, HashMap};
 
+/// Node coordinates and (geometry, connectivity) of each element.
+pub type PatchMesh = (Vec<[f64; 3]>, Vec<(ElemType, Vec<usize>)>);
+
 /// Structured (n×n) patch of `ty` on [0.5, 2.5] × [0, 2] with the interior
 /// nodes moved; with `curved`, the interior mid-side nodes move off their
 /// chord too.
-pub fn plane_mesh(
-    ty: ElemType,
-    n: usize,
-    curved: bool,
-) -> (Vec<[f64; 3]>, Vec<(ElemType, Vec<usize>)>) {
+pub fn plane_mesh(ty: ElemType, n: usize, curved: bool) -> PatchMesh {
     let h = 2.0 / n as f64;
     let mut coords = Vec::new();
     let id = |i: usize, j: usize| i + (n + 1) * j;
@@ -87,7 +86,7 @@ pub fn plane_mesh(
 /// Structured n×n×n patch on [0.5, 2.5] × [0, 2] × [0, 2], interior nodes
 /// moved, hexahedra split into Kuhn tetrahedra (mixed orientations) or two
 /// prisms as asked.
-pub fn solid_mesh(ty: ElemType, n: usize) -> (Vec<[f64; 3]>, Vec<(ElemType, Vec<usize>)>) {
+pub fn solid_mesh(ty: ElemType, n: usize) -> PatchMesh {
     let h = 2.0 / n as f64;
     let id = |i: usize, j: usize, k: usize| i + (n + 1) * (j + (n + 1) * k);
     let mut coords = Vec::new();

@@ -36,6 +36,8 @@ fn distorted(ty: ElemType) -> Vec<[f64; 3]> {
         .collect()
 }
 
+type RigidMode = Box<dyn Fn([f64; 3]) -> [f64; 3]>;
+
 fn matvec(k: &[f64], u: &[f64]) -> Vec<f64> {
     let n = u.len();
     (0..n)
@@ -54,7 +56,7 @@ fn rigid_modes_have_zero_energy() {
         let x = distorted(ty);
         let k = stiffness(Formulation::Solid, ty, mode, &x, &m).unwrap();
         let kmax = k.k.iter().fold(0.0f64, |a, v| a.max(v.abs()));
-        let modes: Vec<Box<dyn Fn([f64; 3]) -> [f64; 3]>> = match mode {
+        let modes: Vec<RigidMode> = match mode {
             Mode::Axis => vec![Box::new(|_| [0.0, 1.0, 0.0])],
             Mode::Trid => vec![
                 Box::new(|_| [1.0, 0.0, 0.0]),
@@ -122,10 +124,11 @@ fn q4ri_has_exactly_two_hourglass_modes() {
             continue;
         }
         a.swap(rank, p);
-        for i in rank + 1..8 {
-            let r = a[i][col] / a[rank][col];
-            for j in 0..8 {
-                a[i][j] -= r * a[rank][j];
+        let pivot = a[rank].clone();
+        for row in a.iter_mut().skip(rank + 1) {
+            let r = row[col] / pivot[col];
+            for (v, pv) in row.iter_mut().zip(&pivot) {
+                *v -= r * pv;
             }
         }
         rank += 1;
