@@ -18,3 +18,5 @@ mod tests_beam;
 mod tests_patch;
 #[cfg(test)]
 mod tests_solid;
+#[cfg(test)]
+mod tests_traction;
