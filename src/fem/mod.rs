@@ -1,4 +1,10 @@
 //! Elements, quadrature and assembly: knows meshes and materials, never the language.
+//!
+//! The element library is called per element through [`element`]:
+//! `stiffness`, `mass`, `stress`, `strain`, `gauss_points`; loads are in
+//! [`loads`] (pressure), post-processing in [`stress`] (VMIS, Gauss points
+//! to nodes). Conventions (dof order, AXIS per radian, output points) are
+//! documented at the top of [`element`] and [`quadrature`].
 pub mod bar;
 pub mod beam;
 pub mod element;
