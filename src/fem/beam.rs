@@ -32,26 +32,12 @@ fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
+    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 }
 
-fn frame(
-    elem: &'static str,
-    mode: Mode,
-    x: &[[f64; 3]],
-    m: &Material,
-    need_vect: bool,
-) -> Result<Frame, FemError> {
+fn frame(elem: &'static str, mode: Mode, x: &[[f64; 3]], m: &Material, need_vect: bool) -> Result<Frame, FemError> {
     if x.len() != 2 {
-        return Err(FemError::WrongNodeCount {
-            elem: "SEG2",
-            expected: 2,
-            got: x.len(),
-        });
+        return Err(FemError::WrongNodeCount { elem: "SEG2", expected: 2, got: x.len() });
     }
     let mut d = sub(x[1], x[0]);
     if mode != Mode::Trid {
@@ -60,18 +46,13 @@ fn frame(
     let l = dot(d, d).sqrt();
     let scale = x.iter().flatten().fold(0.0f64, |a, v| a.max(v.abs()));
     if l <= 1e-12 * scale.max(f64::MIN_POSITIVE) || !l.is_finite() {
-        return Err(FemError::Degenerate {
-            elem,
-            why: "zero-length element (both ends coincide)".into(),
-        });
+        return Err(FemError::Degenerate { elem, why: "zero-length element (both ends coincide)".into() });
     }
     let ex = [d[0] / l, d[1] / l, d[2] / l];
     let (ey, ez) = if mode != Mode::Trid {
         ([-ex[1], ex[0], 0.0], [0.0, 0.0, 1.0])
     } else if need_vect {
-        let v = m
-            .vect
-            .ok_or(FemError::MissingProperty { prop: "VECT", elem })?;
+        let v = m.vect.ok_or(FemError::MissingProperty { prop: "VECT", elem })?;
         let p = dot(v, ex);
         let y = [v[0] - p * ex[0], v[1] - p * ex[1], v[2] - p * ex[2]];
         let ny = dot(y, y).sqrt();
@@ -101,30 +82,13 @@ struct Section {
     phi_z: f64,
 }
 
-fn section(
-    elem: &'static str,
-    mode: Mode,
-    m: &Material,
-    timo: bool,
-    l: f64,
-) -> Result<Section, FemError> {
+fn section(elem: &'static str, mode: Mode, m: &Material, timo: bool, l: f64) -> Result<Section, FemError> {
     let e = m.young(elem)?;
     let a = m.positive(m.sect, "SECT", elem)?;
     let iz = m.positive(m.inrz, "INRZ", elem)?;
     let d3 = mode == Mode::Trid;
-    let g = if d3 || timo {
-        m.shear_modulus(elem)?
-    } else {
-        0.0
-    };
-    let (iy, j) = if d3 {
-        (
-            m.positive(m.inry, "INRY", elem)?,
-            m.positive(m.tors, "TORS", elem)?,
-        )
-    } else {
-        (0.0, 0.0)
-    };
+    let g = if d3 || timo { m.shear_modulus(elem)? } else { 0.0 };
+    let (iy, j) = if d3 { (m.positive(m.inry, "INRY", elem)?, m.positive(m.tors, "TORS", elem)?) } else { (0.0, 0.0) };
     let (mut phi_y, mut phi_z) = (0.0, 0.0);
     if timo {
         phi_y = 12.0 * e * iz / (g * m.positive(m.secy, "SECY", elem)? * l * l);
@@ -132,16 +96,7 @@ fn section(
             phi_z = 12.0 * e * iy / (g * m.positive(m.secz, "SECZ", elem)? * l * l);
         }
     }
-    Ok(Section {
-        e,
-        g,
-        a,
-        iy,
-        iz,
-        j,
-        phi_y,
-        phi_z,
-    })
+    Ok(Section { e, g, a, iy, iz, j, phi_y, phi_z })
 }
 
 /// Per-node local dof layout: index of (u, v, w, θx, θy, θz) in a node
@@ -175,12 +130,7 @@ fn add4(k: &mut [f64], n: usize, idx: [usize; 4], blk: [[f64; 4]; 4]) {
 /// and −1 for the xz plane (θy = −w').
 fn bending(ei: f64, l: f64, phi: f64, s: f64) -> [[f64; 4]; 4] {
     let c = ei / (l * l * l * (1.0 + phi));
-    let (a, b, d, e) = (
-        12.0 * c,
-        s * 6.0 * l * c,
-        (4.0 + phi) * l * l * c,
-        (2.0 - phi) * l * l * c,
-    );
+    let (a, b, d, e) = (12.0 * c, s * 6.0 * l * c, (4.0 + phi) * l * l * c, (2.0 - phi) * l * l * c);
     [[a, b, -a, b], [b, d, -b, e], [-a, -b, a, -b], [b, e, -b, d]]
 }
 
@@ -193,22 +143,12 @@ fn local_stiffness(sec: &Section, l: f64, d3: bool) -> (usize, Vec<f64>) {
     let ea = sec.e * sec.a / l;
     add2(&mut k, n, at(0), [[ea, -ea], [-ea, ea]]);
     let (v, tz) = (at(1), at(5));
-    add4(
-        &mut k,
-        n,
-        [v[0], tz[0], v[1], tz[1]],
-        bending(sec.e * sec.iz, l, sec.phi_y, 1.0),
-    );
+    add4(&mut k, n, [v[0], tz[0], v[1], tz[1]], bending(sec.e * sec.iz, l, sec.phi_y, 1.0));
     if d3 {
         let gj = sec.g * sec.j / l;
         add2(&mut k, n, at(3), [[gj, -gj], [-gj, gj]]);
         let (w, ty) = (at(2), at(4));
-        add4(
-            &mut k,
-            n,
-            [w[0], ty[0], w[1], ty[1]],
-            bending(sec.e * sec.iy, l, sec.phi_z, -1.0),
-        );
+        add4(&mut k, n, [w[0], ty[0], w[1], ty[1]], bending(sec.e * sec.iy, l, sec.phi_z, -1.0));
     }
     (n, k)
 }
@@ -261,18 +201,12 @@ pub fn dofs(mode: Mode) -> Result<&'static [&'static str], FemError> {
     match mode {
         Mode::PlanCont | Mode::PlanDefo => Ok(&["UX", "UY", "RZ"]),
         Mode::Trid => Ok(&["UX", "UY", "UZ", "RX", "RY", "RZ"]),
-        Mode::Axis => Err(FemError::Unsupported {
-            form: "POUT/TIMO",
-            elem: "SEG2",
-            mode: mode.name(),
-        }),
+        Mode::Axis => Err(FemError::Unsupported { form: "POUT/TIMO", elem: "SEG2", mode: mode.name() }),
     }
 }
 
 fn dof_list(names: &'static [&'static str]) -> Vec<(usize, &'static str)> {
-    (0..2)
-        .flat_map(|i| names.iter().map(move |&d| (i, d)))
-        .collect()
+    (0..2).flat_map(|i| names.iter().map(move |&d| (i, d))).collect()
 }
 
 fn elem_name(timo: bool) -> &'static str {
@@ -283,45 +217,27 @@ fn elem_name(timo: bool) -> &'static str {
     }
 }
 
-pub fn stiffness(
-    timo: bool,
-    mode: Mode,
-    x: &[[f64; 3]],
-    m: &Material,
-) -> Result<ElemMatrix, FemError> {
+pub fn stiffness(timo: bool, mode: Mode, x: &[[f64; 3]], m: &Material) -> Result<ElemMatrix, FemError> {
     let names = dofs(mode)?;
     let elem = elem_name(timo);
     let d3 = mode == Mode::Trid;
     let f = frame(elem, mode, x, m, d3)?;
     let sec = section(elem, mode, m, timo, f.l)?;
     let (n, kl) = local_stiffness(&sec, f.l, d3);
-    Ok(ElemMatrix {
-        dofs: dof_list(names),
-        k: to_global(&kl, n, &f, d3),
-    })
+    Ok(ElemMatrix { dofs: dof_list(names), k: to_global(&kl, n, &f, d3) })
 }
 
 /// Consistent (cubic Hermite, Euler–Bernoulli, also used for TIMO) or
 /// lumped (ρAL/2 per translation, ρAL³/78 per bending rotation — the HRZ
 /// values — and ρ(INRY+INRZ)L/2 in torsion) mass.
-pub fn mass(
-    timo: bool,
-    mode: Mode,
-    x: &[[f64; 3]],
-    m: &Material,
-    lumped: bool,
-) -> Result<ElemMatrix, FemError> {
+pub fn mass(timo: bool, mode: Mode, x: &[[f64; 3]], m: &Material, lumped: bool) -> Result<ElemMatrix, FemError> {
     let names = dofs(mode)?;
     let elem = elem_name(timo);
     let d3 = mode == Mode::Trid;
     let f = frame(elem, mode, x, m, d3)?;
     let rho = m.density(elem)?;
     let a = m.positive(m.sect, "SECT", elem)?;
-    let ip = if d3 {
-        m.positive(m.inry, "INRY", elem)? + m.positive(m.inrz, "INRZ", elem)?
-    } else {
-        0.0
-    };
+    let ip = if d3 { m.positive(m.inry, "INRY", elem)? + m.positive(m.inrz, "INRZ", elem)? } else { 0.0 };
     let l = f.l;
     let nb = names.len();
     let n = 2 * nb;
@@ -339,22 +255,11 @@ pub fn mass(
     let bend = |s: f64| -> [[f64; 4]; 4] {
         if lumped {
             let (p, q) = (mt / 2.0, mt * l * l / 78.0);
-            [
-                [p, 0., 0., 0.],
-                [0., q, 0., 0.],
-                [0., 0., p, 0.],
-                [0., 0., 0., q],
-            ]
+            [[p, 0., 0., 0.], [0., q, 0., 0.], [0., 0., p, 0.], [0., 0., 0., q]]
         } else {
             let c = mt / 420.0;
-            let (a, b, d, e, g, h) = (
-                156.0 * c,
-                s * 22.0 * l * c,
-                4.0 * l * l * c,
-                54.0 * c,
-                s * 13.0 * l * c,
-                -3.0 * l * l * c,
-            );
+            let (a, b, d, e, g, h) =
+                (156.0 * c, s * 22.0 * l * c, 4.0 * l * l * c, 54.0 * c, s * 13.0 * l * c, -3.0 * l * l * c);
             [[a, b, e, -g], [b, d, g, h], [e, g, a, -b], [-g, h, -b, d]]
         }
     };
@@ -366,10 +271,7 @@ pub fn mass(
         let (w, ty) = (at(2), at(4));
         add4(&mut kl, n, [w[0], ty[0], w[1], ty[1]], bend(-1.0));
     }
-    Ok(ElemMatrix {
-        dofs: dof_list(names),
-        k: to_global(&kl, n, &f, d3),
-    })
+    Ok(ElemMatrix { dofs: dof_list(names), k: to_global(&kl, n, &f, d3) })
 }
 
 /// Local end forces K_loc·T·u, turned into section resultants at both ends.
@@ -383,23 +285,15 @@ fn end_resultants(
     let names = dofs(mode)?;
     let elem = elem_name(timo);
     if u.len() != 2 * names.len() {
-        return Err(FemError::WrongDofCount {
-            elem,
-            expected: 2 * names.len(),
-            got: u.len(),
-        });
+        return Err(FemError::WrongDofCount { elem, expected: 2 * names.len(), got: u.len() });
     }
     let d3 = mode == Mode::Trid;
     let f = frame(elem, mode, x, m, d3)?;
     let sec = section(elem, mode, m, timo, f.l)?;
     let (n, kl) = local_stiffness(&sec, f.l, d3);
     let t = transform(n, &f, d3);
-    let ul: Vec<f64> = (0..n)
-        .map(|i| (0..n).map(|j| t[i * n + j] * u[j]).sum())
-        .collect();
-    let fl: Vec<f64> = (0..n)
-        .map(|i| (0..n).map(|j| kl[i * n + j] * ul[j]).sum())
-        .collect();
+    let ul: Vec<f64> = (0..n).map(|i| (0..n).map(|j| t[i * n + j] * u[j]).sum()).collect();
+    let fl: Vec<f64> = (0..n).map(|i| (0..n).map(|j| kl[i * n + j] * ul[j]).sum()).collect();
     let nb = names.len();
     let mut out = [[0.0; 6]; 2];
     for (c, slot) in layout(d3).iter().enumerate() {
@@ -411,13 +305,7 @@ fn end_resultants(
     Ok((sec, out))
 }
 
-pub fn stress(
-    timo: bool,
-    mode: Mode,
-    x: &[[f64; 3]],
-    m: &Material,
-    u: &[f64],
-) -> Result<GaussField, FemError> {
+pub fn stress(timo: bool, mode: Mode, x: &[[f64; 3]], m: &Material, u: &[f64]) -> Result<GaussField, FemError> {
     let (_, r) = end_resultants(timo, mode, x, m, u)?;
     Ok(if mode == Mode::Trid {
         GaussField {
@@ -425,31 +313,18 @@ pub fn stress(
             values: r.iter().map(|v| v.to_vec()).collect(),
         }
     } else {
-        GaussField {
-            comps: vec!["EFFX", "EFFY", "MOMZ"],
-            values: r.iter().map(|v| vec![v[0], v[1], v[5]]).collect(),
-        }
+        GaussField { comps: vec!["EFFX", "EFFY", "MOMZ"], values: r.iter().map(|v| vec![v[0], v[1], v[5]]).collect() }
     })
 }
 
 /// Generalised strains: axial EPSS = N/EA, shears GAXY GAXZ = V/(G·As)
 /// (0 for POUT, which has no shear strain), twist CURX = Mx/GJ and
 /// curvatures CURY CURZ = M/EI, at the two ends.
-pub fn strain(
-    timo: bool,
-    mode: Mode,
-    x: &[[f64; 3]],
-    m: &Material,
-    u: &[f64],
-) -> Result<GaussField, FemError> {
+pub fn strain(timo: bool, mode: Mode, x: &[[f64; 3]], m: &Material, u: &[f64]) -> Result<GaussField, FemError> {
     let (s, r) = end_resultants(timo, mode, x, m, u)?;
     let elem = elem_name(timo);
     let (gy, gz) = if timo {
-        let gz = if mode == Mode::Trid {
-            s.g * m.positive(m.secz, "SECZ", elem)?
-        } else {
-            1.0
-        };
+        let gz = if mode == Mode::Trid { s.g * m.positive(m.secz, "SECZ", elem)? } else { 1.0 };
         (s.g * m.positive(m.secy, "SECY", elem)?, gz)
     } else {
         (f64::INFINITY, f64::INFINITY)
@@ -457,14 +332,7 @@ pub fn strain(
     let e = |v: &[f64; 6]| -> [f64; 6] {
         let tw = if s.j > 0.0 { v[3] / (s.g * s.j) } else { 0.0 };
         let cy = if s.iy > 0.0 { v[4] / (s.e * s.iy) } else { 0.0 };
-        [
-            v[0] / (s.e * s.a),
-            v[1] / gy,
-            v[2] / gz,
-            tw,
-            cy,
-            v[5] / (s.e * s.iz),
-        ]
+        [v[0] / (s.e * s.a), v[1] / gy, v[2] / gz, tw, cy, v[5] / (s.e * s.iz)]
     };
     let vals: Vec<[f64; 6]> = r.iter().map(e).collect();
     Ok(if mode == Mode::Trid {

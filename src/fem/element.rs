@@ -65,37 +65,17 @@ impl Formulation {
 #[derive(Debug, Clone, Error, PartialEq)]
 pub enum FemError {
     #[error("material property {prop} missing for {elem}")]
-    MissingProperty {
-        prop: &'static str,
-        elem: &'static str,
-    },
+    MissingProperty { prop: &'static str, elem: &'static str },
     #[error("material property {prop} = {value} is invalid for {elem}: it {why}")]
-    InvalidProperty {
-        prop: &'static str,
-        value: f64,
-        elem: &'static str,
-        why: &'static str,
-    },
+    InvalidProperty { prop: &'static str, value: f64, elem: &'static str, why: &'static str },
     #[error("{form} elements on {elem} are not available in mode {mode}")]
-    Unsupported {
-        form: &'static str,
-        elem: &'static str,
-        mode: &'static str,
-    },
+    Unsupported { form: &'static str, elem: &'static str, mode: &'static str },
     #[error("degenerate {elem} element: {why}")]
     Degenerate { elem: &'static str, why: String },
     #[error("{elem} element needs {expected} nodes, got {got}")]
-    WrongNodeCount {
-        elem: &'static str,
-        expected: usize,
-        got: usize,
-    },
+    WrongNodeCount { elem: &'static str, expected: usize, got: usize },
     #[error("{elem} element has {expected} dofs, got {got} values")]
-    WrongDofCount {
-        elem: &'static str,
-        expected: usize,
-        got: usize,
-    },
+    WrongDofCount { elem: &'static str, expected: usize, got: usize },
 }
 
 /// An elementary matrix over the element's dofs, row-major.
@@ -166,11 +146,7 @@ fn check(f: Formulation, ty: ElemType, mode: Mode) -> Result<(), FemError> {
     if ok {
         Ok(())
     } else {
-        Err(FemError::Unsupported {
-            form: f.name(),
-            elem: ty.name(),
-            mode: mode.name(),
-        })
+        Err(FemError::Unsupported { form: f.name(), elem: ty.name(), mode: mode.name() })
     }
 }
 

@@ -24,23 +24,12 @@ pub fn pressure_load(
     inside: [f64; 3],
 ) -> Result<Vec<[f64; 3]>, FemError> {
     let edge = matches!(face, ElemType::Seg2 | ElemType::Seg3);
-    let surf = matches!(
-        face,
-        ElemType::Tri3 | ElemType::Tri6 | ElemType::Qua4 | ElemType::Qua8
-    );
+    let surf = matches!(face, ElemType::Tri3 | ElemType::Tri6 | ElemType::Qua4 | ElemType::Qua8);
     if !((edge && mode != Mode::Trid) || (surf && mode == Mode::Trid)) {
-        return Err(FemError::Unsupported {
-            form: "pressure",
-            elem: face.name(),
-            mode: mode.name(),
-        });
+        return Err(FemError::Unsupported { form: "pressure", elem: face.name(), mode: mode.name() });
     }
     if x.len() != face.nodes() {
-        return Err(FemError::WrongNodeCount {
-            elem: face.name(),
-            expected: face.nodes(),
-            got: x.len(),
-        });
+        return Err(FemError::WrongNodeCount { elem: face.name(), expected: face.nodes(), got: x.len() });
     }
     // Exact for the polynomial integrands of straight/flat faces, including
     // the extra factor r in AXIS.
@@ -63,11 +52,7 @@ pub fn pressure_load(
             [t[0][1], -t[0][0], 0.0]
         } else {
             let (a, b) = (t[0], t[1]);
-            [
-                a[1] * b[2] - a[2] * b[1],
-                a[2] * b[0] - a[0] * b[2],
-                a[0] * b[1] - a[1] * b[0],
-            ]
+            [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
         }
     };
     let centre = match face {
@@ -87,10 +72,7 @@ pub fn pressure_load(
     let len2: f64 = nc.iter().map(|v| v * v).sum();
     let dist2: f64 = (0..dims).map(|c| (inside[c] - xc[c]).powi(2)).sum();
     if len2 <= 0.0 || !len2.is_finite() {
-        return Err(FemError::Degenerate {
-            elem: face.name(),
-            why: "face of zero length or area".into(),
-        });
+        return Err(FemError::Degenerate { elem: face.name(), why: "face of zero length or area".into() });
     }
     if side.abs() <= 1e-10 * (len2 * dist2).sqrt() || !side.is_finite() {
         return Err(FemError::Degenerate {

@@ -34,22 +34,12 @@ pub struct Material {
 
 impl Material {
     /// A required, strictly positive property.
-    pub(crate) fn positive(
-        &self,
-        v: Option<f64>,
-        prop: &'static str,
-        elem: &'static str,
-    ) -> Result<f64, FemError> {
+    pub(crate) fn positive(&self, v: Option<f64>, prop: &'static str, elem: &'static str) -> Result<f64, FemError> {
         let x = v.ok_or(FemError::MissingProperty { prop, elem })?;
         if x.is_finite() && x > 0.0 {
             Ok(x)
         } else {
-            Err(FemError::InvalidProperty {
-                prop,
-                value: x,
-                elem,
-                why: "must be positive",
-            })
+            Err(FemError::InvalidProperty { prop, value: x, elem, why: "must be positive" })
         }
     }
 
@@ -60,18 +50,11 @@ impl Material {
     /// Poisson's ratio, kept inside (-1, 1/2) where the elasticity matrix
     /// is positive definite in every mode.
     pub(crate) fn poisson(&self, elem: &'static str) -> Result<f64, FemError> {
-        let nu = self
-            .nu
-            .ok_or(FemError::MissingProperty { prop: "NU", elem })?;
+        let nu = self.nu.ok_or(FemError::MissingProperty { prop: "NU", elem })?;
         if nu.is_finite() && nu > -1.0 && nu < 0.5 {
             Ok(nu)
         } else {
-            Err(FemError::InvalidProperty {
-                prop: "NU",
-                value: nu,
-                elem,
-                why: "must lie in (-1, 0.5)",
-            })
+            Err(FemError::InvalidProperty { prop: "NU", value: nu, elem, why: "must lie in (-1, 0.5)" })
         }
     }
 
@@ -100,11 +83,7 @@ impl Material {
 ///
 /// Plane stress keeps a zero zz row and column, so the same 4-strain B
 /// matrix serves every 2D mode and σzz comes out 0 by construction.
-pub(crate) fn elasticity(
-    mode: Mode,
-    m: &Material,
-    elem: &'static str,
-) -> Result<Vec<Vec<f64>>, FemError> {
+pub(crate) fn elasticity(mode: Mode, m: &Material, elem: &'static str) -> Result<Vec<Vec<f64>>, FemError> {
     let e = m.young(elem)?;
     let nu = m.poisson(elem)?;
     let g = e / (2.0 * (1.0 + nu));
@@ -112,21 +91,11 @@ pub(crate) fn elasticity(
     Ok(match mode {
         Mode::PlanCont => {
             let c = e / (1.0 - nu * nu);
-            vec![
-                vec![c, c * nu, 0.0, 0.0],
-                vec![c * nu, c, 0.0, 0.0],
-                vec![0.0; 4],
-                vec![0.0, 0.0, 0.0, g],
-            ]
+            vec![vec![c, c * nu, 0.0, 0.0], vec![c * nu, c, 0.0, 0.0], vec![0.0; 4], vec![0.0, 0.0, 0.0, g]]
         }
         Mode::PlanDefo | Mode::Axis => {
             let d = lam + 2.0 * g;
-            vec![
-                vec![d, lam, lam, 0.0],
-                vec![lam, d, lam, 0.0],
-                vec![lam, lam, d, 0.0],
-                vec![0.0, 0.0, 0.0, g],
-            ]
+            vec![vec![d, lam, lam, 0.0], vec![lam, d, lam, 0.0], vec![lam, lam, d, 0.0], vec![0.0, 0.0, 0.0, g]]
         }
         Mode::Trid => {
             let d = lam + 2.0 * g;

@@ -10,7 +10,6 @@ pub mod beam;
 pub mod element;
 pub mod loads;
 pub mod material;
-pub mod mesh;
 pub mod quadrature;
 pub mod shape;
 pub mod solid;
@@ -26,3 +25,5 @@ mod tests_patch;
 mod tests_solid;
 #[cfg(test)]
 mod tests_traction;
+
+pub mod mesh;

@@ -32,20 +32,14 @@ pub fn gauss_1d(n: usize) -> Vec<(f64, f64)> {
 
 /// n-point rule on the segment.
 pub fn seg(n: usize) -> Vec<QPoint> {
-    gauss_1d(n)
-        .into_iter()
-        .map(|(x, w)| ([x, 0.0, 0.0], w))
-        .collect()
+    gauss_1d(n).into_iter().map(|(x, w)| ([x, 0.0, 0.0], w)).collect()
 }
 
 /// n×n rule on the square; n = 2 is counter-clockwise from (-,-).
 pub fn quad(n: usize) -> Vec<QPoint> {
     if n == 2 {
         let a = 1.0 / 3f64.sqrt();
-        return [(-a, -a), (a, -a), (a, a), (-a, a)]
-            .into_iter()
-            .map(|(x, y)| ([x, y, 0.0], 1.0))
-            .collect();
+        return [(-a, -a), (a, -a), (a, a), (-a, a)].into_iter().map(|(x, y)| ([x, y, 0.0], 1.0)).collect();
     }
     let g = gauss_1d(n);
     let mut out = Vec::new();
@@ -88,25 +82,13 @@ pub fn tri(n: usize) -> Vec<QPoint> {
         3 => {
             // Interior points, each nearest one corner (corner order 1,2,3).
             let (a, b) = (2.0 / 3.0, 1.0 / 6.0);
-            vec![
-                ([b, b, 0.0], 1.0 / 6.0),
-                ([a, b, 0.0], 1.0 / 6.0),
-                ([b, a, 0.0], 1.0 / 6.0),
-            ]
+            vec![([b, b, 0.0], 1.0 / 6.0), ([a, b, 0.0], 1.0 / 6.0), ([b, a, 0.0], 1.0 / 6.0)]
         }
         _ => {
             // Radon's degree-5 rule.
             let s = 15f64.sqrt();
-            let (a1, b1, w1) = (
-                (6.0 - s) / 21.0,
-                (9.0 + 2.0 * s) / 21.0,
-                (155.0 - s) / 2400.0,
-            );
-            let (a2, b2, w2) = (
-                (6.0 + s) / 21.0,
-                (9.0 - 2.0 * s) / 21.0,
-                (155.0 + s) / 2400.0,
-            );
+            let (a1, b1, w1) = ((6.0 - s) / 21.0, (9.0 + 2.0 * s) / 21.0, (155.0 - s) / 2400.0);
+            let (a2, b2, w2) = ((6.0 + s) / 21.0, (9.0 - 2.0 * s) / 21.0, (155.0 + s) / 2400.0);
             vec![
                 ([1.0 / 3.0, 1.0 / 3.0, 0.0], 9.0 / 80.0),
                 ([a1, a1, 0.0], w1),
@@ -128,12 +110,7 @@ pub fn tet(n: usize) -> Vec<QPoint> {
     let a = 0.585_410_196_624_968_5;
     let b = 0.138_196_601_125_010_5;
     // Point k nearest vertex k (vertex 1 is the origin).
-    vec![
-        ([b, b, b], 1.0 / 24.0),
-        ([a, b, b], 1.0 / 24.0),
-        ([b, a, b], 1.0 / 24.0),
-        ([b, b, a], 1.0 / 24.0),
-    ]
+    vec![([b, b, b], 1.0 / 24.0), ([a, b, b], 1.0 / 24.0), ([b, a, b], 1.0 / 24.0), ([b, b, a], 1.0 / 24.0)]
 }
 
 /// Prism rule: triangle rule × Gauss rule along ζ (bottom layer first).
@@ -164,10 +141,7 @@ mod tests {
                 for b in 0..=(deg - a) {
                     let exact = fact(a) * fact(b) / fact(a + b + 2);
                     let got = integrate(&tri(n), |p| p[0].powi(a as i32) * p[1].powi(b as i32));
-                    assert!(
-                        (got - exact).abs() < 1e-14,
-                        "tri{n} x^{a} y^{b}: {got} vs {exact}"
-                    );
+                    assert!((got - exact).abs() < 1e-14, "tri{n} x^{a} y^{b}: {got} vs {exact}");
                 }
             }
         }
@@ -188,17 +162,9 @@ mod tests {
             assert!((integrate(&quad(n), |_| 1.0) - 4.0).abs() < 1e-14);
             assert!((integrate(&hexa(n), |_| 1.0) - 8.0).abs() < 1e-14);
             let deg = 2 * n as i32 - 1;
-            let exact = if deg % 2 == 0 {
-                2.0 / (deg as f64 + 1.0)
-            } else {
-                0.0
-            };
+            let exact = if deg % 2 == 0 { 2.0 / (deg as f64 + 1.0) } else { 0.0 };
             assert!((integrate(&seg(n), |p| p[0].powi(deg)) - exact).abs() < 1e-14);
-            let e2 = if (deg - 1) % 2 == 0 {
-                2.0 / deg as f64
-            } else {
-                0.0
-            };
+            let e2 = if (deg - 1) % 2 == 0 { 2.0 / deg as f64 } else { 0.0 };
             assert!((integrate(&seg(n), |p| p[0].powi(deg - 1)) - e2).abs() < 1e-14);
         }
         assert!((integrate(&prism(3, 2), |p| p[2] * p[2]) - 1.0 / 3.0).abs() < 1e-14);

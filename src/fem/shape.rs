@@ -22,29 +22,13 @@ pub struct Shape {
 
 /// Reference coordinates of the nodes.
 pub fn ref_nodes(ty: ElemType) -> Vec<[f64; 3]> {
-    let q8 = [
-        (-1., -1.),
-        (0., -1.),
-        (1., -1.),
-        (1., 0.),
-        (1., 1.),
-        (0., 1.),
-        (-1., 1.),
-        (-1., 0.),
-    ];
+    let q8 = [(-1., -1.), (0., -1.), (1., -1.), (1., 0.), (1., 1.), (0., 1.), (-1., 1.), (-1., 0.)];
     match ty {
         ElemType::Poi1 => vec![[0.0; 3]],
         ElemType::Seg2 => vec![[-1., 0., 0.], [1., 0., 0.]],
         ElemType::Seg3 => vec![[-1., 0., 0.], [0., 0., 0.], [1., 0., 0.]],
         ElemType::Tri3 => vec![[0., 0., 0.], [1., 0., 0.], [0., 1., 0.]],
-        ElemType::Tri6 => vec![
-            [0., 0., 0.],
-            [0.5, 0., 0.],
-            [1., 0., 0.],
-            [0.5, 0.5, 0.],
-            [0., 1., 0.],
-            [0., 0.5, 0.],
-        ],
+        ElemType::Tri6 => vec![[0., 0., 0.], [0.5, 0., 0.], [1., 0., 0.], [0.5, 0.5, 0.], [0., 1., 0.], [0., 0.5, 0.]],
         ElemType::Qua4 => vec![[-1., -1., 0.], [1., -1., 0.], [1., 1., 0.], [-1., 1., 0.]],
         ElemType::Qua8 => q8.iter().map(|&(x, y)| [x, y, 0.]).collect(),
         ElemType::Cub8 => {
@@ -68,22 +52,13 @@ pub fn ref_nodes(ty: ElemType) -> Vec<[f64; 3]> {
 pub fn eval(ty: ElemType, p: [f64; 3]) -> Shape {
     let [x, y, z] = p;
     match ty {
-        ElemType::Poi1 => Shape {
-            n: vec![1.0],
-            dn: vec![[0.0; 3]],
-        },
-        ElemType::Seg2 => Shape {
-            n: vec![0.5 * (1. - x), 0.5 * (1. + x)],
-            dn: vec![[-0.5, 0., 0.], [0.5, 0., 0.]],
-        },
+        ElemType::Poi1 => Shape { n: vec![1.0], dn: vec![[0.0; 3]] },
+        ElemType::Seg2 => Shape { n: vec![0.5 * (1. - x), 0.5 * (1. + x)], dn: vec![[-0.5, 0., 0.], [0.5, 0., 0.]] },
         ElemType::Seg3 => Shape {
             n: vec![0.5 * x * (x - 1.), 1. - x * x, 0.5 * x * (x + 1.)],
             dn: vec![[x - 0.5, 0., 0.], [-2. * x, 0., 0.], [x + 0.5, 0., 0.]],
         },
-        ElemType::Tri3 => Shape {
-            n: vec![1. - x - y, x, y],
-            dn: vec![[-1., -1., 0.], [1., 0., 0.], [0., 1., 0.]],
-        },
+        ElemType::Tri3 => Shape { n: vec![1. - x - y, x, y], dn: vec![[-1., -1., 0.], [1., 0., 0.], [0., 1., 0.]] },
         ElemType::Tri6 => {
             let l = [1. - x - y, x, y];
             // d(L_i)/d(ξ, η)
@@ -96,11 +71,7 @@ pub fn eval(ty: ElemType, p: [f64; 3]) -> Shape {
                 let c = 4. * l[i] - 1.;
                 dn.push([c * dl[i][0], c * dl[i][1], 0.]);
                 n.push(4. * l[i] * l[j]);
-                dn.push([
-                    4. * (dl[i][0] * l[j] + l[i] * dl[j][0]),
-                    4. * (dl[i][1] * l[j] + l[i] * dl[j][1]),
-                    0.,
-                ]);
+                dn.push([4. * (dl[i][0] * l[j] + l[i] * dl[j][0]), 4. * (dl[i][1] * l[j] + l[i] * dl[j][1]), 0.]);
             }
             Shape { n, dn }
         }
@@ -138,11 +109,7 @@ pub fn eval(ty: ElemType, p: [f64; 3]) -> Shape {
             for [a, b, c] in ref_nodes(ty) {
                 let (fa, fb, fc) = (1. + a * x, 1. + b * y, 1. + c * z);
                 n.push(0.125 * fa * fb * fc);
-                dn.push([
-                    0.125 * a * fb * fc,
-                    0.125 * b * fa * fc,
-                    0.125 * c * fa * fb,
-                ]);
+                dn.push([0.125 * a * fb * fc, 0.125 * b * fa * fc, 0.125 * c * fa * fb]);
             }
             Shape { n, dn }
         }
@@ -184,17 +151,7 @@ pub fn faces(ty: ElemType) -> Vec<(ElemType, Vec<usize>)> {
         Tri6 => f(Seg3, &[&[0, 1, 2], &[2, 3, 4], &[4, 5, 0]]),
         Qua4 => f(Seg2, &[&[0, 1], &[1, 2], &[2, 3], &[3, 0]]),
         Qua8 => f(Seg3, &[&[0, 1, 2], &[2, 3, 4], &[4, 5, 6], &[6, 7, 0]]),
-        Cub8 => f(
-            Qua4,
-            &[
-                &[0, 3, 2, 1],
-                &[4, 5, 6, 7],
-                &[0, 1, 5, 4],
-                &[1, 2, 6, 5],
-                &[2, 3, 7, 6],
-                &[3, 0, 4, 7],
-            ],
-        ),
+        Cub8 => f(Qua4, &[&[0, 3, 2, 1], &[4, 5, 6, 7], &[0, 1, 5, 4], &[1, 2, 6, 5], &[2, 3, 7, 6], &[3, 0, 4, 7]]),
         Tet4 => f(Tri3, &[&[0, 2, 1], &[0, 1, 3], &[1, 2, 3], &[2, 0, 3]]),
         Pri6 => {
             let mut v = f(Tri3, &[&[0, 2, 1], &[3, 4, 5]]);

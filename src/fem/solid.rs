@@ -107,18 +107,10 @@ fn check(ty: ElemType, mode: Mode, x: &[[f64; 3]]) -> Result<usize, FemError> {
                 | ElemType::Pri6
         )
     {
-        return Err(FemError::Unsupported {
-            form: "massive",
-            elem: ty.name(),
-            mode: mode.name(),
-        });
+        return Err(FemError::Unsupported { form: "massive", elem: ty.name(), mode: mode.name() });
     }
     if x.len() != ty.nodes() {
-        return Err(FemError::WrongNodeCount {
-            elem: ty.name(),
-            expected: ty.nodes(),
-            got: x.len(),
-        });
+        return Err(FemError::WrongNodeCount { elem: ty.name(), expected: ty.nodes(), got: x.len() });
     }
     Ok(dim)
 }
@@ -127,13 +119,7 @@ fn check(ty: ElemType, mode: Mode, x: &[[f64; 3]]) -> Result<usize, FemError> {
 /// uniformly reversed (clockwise in 2D, left-handed in 3D) are accepted
 /// with |J|; a Jacobian that vanishes or changes sign inside the element is
 /// an error, since the mapping then folds over itself.
-fn points(
-    ty: ElemType,
-    mode: Mode,
-    x: &[[f64; 3]],
-    rule: &[QPoint],
-    t: f64,
-) -> Result<Vec<Point>, FemError> {
+fn points(ty: ElemType, mode: Mode, x: &[[f64; 3]], rule: &[QPoint], t: f64) -> Result<Vec<Point>, FemError> {
     let dim = check(ty, mode, x)?;
     let mut size: f64 = 0.0;
     for a in x {
@@ -183,12 +169,7 @@ fn points(
             }
             wt *= r;
         }
-        out.push(Point {
-            n: s.n,
-            dndx,
-            w: wt,
-            r,
-        });
+        out.push(Point { n: s.n, dndx, w: wt, r });
     }
     Ok(out)
 }
@@ -255,9 +236,7 @@ fn bmat(mode: Mode, p: &Point) -> Vec<Vec<f64>> {
 }
 
 fn dof_list(ty: ElemType, mode: Mode) -> Vec<(usize, &'static str)> {
-    (0..ty.nodes())
-        .flat_map(|i| dofs(mode).iter().map(move |&d| (i, d)))
-        .collect()
+    (0..ty.nodes()).flat_map(|i| dofs(mode).iter().map(move |&d| (i, d))).collect()
 }
 
 pub fn stiffness(
@@ -278,11 +257,7 @@ pub fn stiffness(
         // DB, then accumulate B'(DB) w.
         let db: Vec<Vec<f64>> = d
             .iter()
-            .map(|row| {
-                (0..nd)
-                    .map(|c| row.iter().zip(&b).map(|(dv, br)| dv * br[c]).sum())
-                    .collect()
-            })
+            .map(|row| (0..nd).map(|c| row.iter().zip(&b).map(|(dv, br)| dv * br[c]).sum()).collect())
             .collect();
         for r in 0..nd {
             for c in 0..nd {
@@ -297,13 +272,7 @@ pub fn stiffness(
 /// Consistent mass ρ∫NᵢNⱼ, or its HRZ lumping (diagonal scaled to keep the
 /// total mass, which stays positive for quadratic elements where row sums
 /// would give zero or negative corner masses).
-pub fn mass(
-    ty: ElemType,
-    mode: Mode,
-    x: &[[f64; 3]],
-    m: &Material,
-    lumped: bool,
-) -> Result<ElemMatrix, FemError> {
+pub fn mass(ty: ElemType, mode: Mode, x: &[[f64; 3]], m: &Material, lumped: bool) -> Result<ElemMatrix, FemError> {
     let rho = m.density(ty.name())?;
     let t = m.thickness(mode, ty.name())?;
     let pts = points(ty, mode, x, &mass_rule(ty), t)?;
@@ -321,11 +290,7 @@ pub fn mass(
         let diag: f64 = (0..nn).map(|i| mn[i * nn + i]).sum();
         for i in 0..nn {
             for j in 0..nn {
-                mn[i * nn + j] = if i == j {
-                    mn[i * nn + i] * total / diag
-                } else {
-                    0.0
-                };
+                mn[i * nn + j] = if i == j { mn[i * nn + i] * total / diag } else { 0.0 };
             }
         }
     }
@@ -355,42 +320,24 @@ pub fn field(
 ) -> Result<GaussField, FemError> {
     let nd = ty.nodes() * dofs(mode).len();
     if u.len() != nd {
-        return Err(FemError::WrongDofCount {
-            elem: ty.name(),
-            expected: nd,
-            got: u.len(),
-        });
+        return Err(FemError::WrongDofCount { elem: ty.name(), expected: nd, got: u.len() });
     }
     let pts = points(ty, mode, x, &rule(f, ty), 1.0)?;
-    let d = if stress || mode == Mode::PlanCont {
-        Some(elasticity(mode, m, ty.name())?)
-    } else {
-        None
-    };
+    let d = if stress || mode == Mode::PlanCont { Some(elasticity(mode, m, ty.name())?) } else { None };
     let mut values = Vec::with_capacity(pts.len());
     for p in &pts {
         let b = bmat(mode, p);
-        let mut eps: Vec<f64> = b
-            .iter()
-            .map(|row| row.iter().zip(u).map(|(a, b)| a * b).sum())
-            .collect();
+        let mut eps: Vec<f64> = b.iter().map(|row| row.iter().zip(u).map(|(a, b)| a * b).sum()).collect();
         if mode == Mode::PlanCont && !stress {
             // Plane stress: the out-of-plane strain follows from σzz = 0.
             let nu = m.poisson(ty.name())?;
             eps[2] = -nu / (1.0 - nu) * (eps[0] + eps[1]);
         }
         values.push(match (&d, stress) {
-            (Some(d), true) => d
-                .iter()
-                .map(|row| row.iter().zip(&eps).map(|(a, b)| a * b).sum())
-                .collect(),
+            (Some(d), true) => d.iter().map(|row| row.iter().zip(&eps).map(|(a, b)| a * b).sum()).collect(),
             _ => eps,
         });
     }
-    let comps = if stress {
-        stress_comps(mode)
-    } else {
-        strain_comps(mode)
-    };
+    let comps = if stress { stress_comps(mode) } else { strain_comps(mode) };
     Ok(GaussField { comps, values })
 }

@@ -13,36 +13,19 @@ use super::shape::eval;
 /// `sqrt((EFFX/SECT)² + (MOMX·DX/TORS)² + (MOMY·DZ/INRY)² + (MOMZ·DY/INRZ)²)`;
 /// an absent fibre distance DX/DY/DZ drops its term (the stress on the
 /// neutral fibre), absent components count as 0.
-pub fn von_mises(
-    f: Formulation,
-    mode: Mode,
-    m: &Material,
-    sig: &GaussField,
-) -> Result<GaussField, FemError> {
-    let at = |v: &[f64], name: &str| {
-        sig.comps
-            .iter()
-            .position(|c| *c == name)
-            .map_or(0.0, |i| v[i])
-    };
+pub fn von_mises(f: Formulation, mode: Mode, m: &Material, sig: &GaussField) -> Result<GaussField, FemError> {
+    let at = |v: &[f64], name: &str| sig.comps.iter().position(|c| *c == name).map_or(0.0, |i| v[i]);
     let values = match f {
         Formulation::Barr | Formulation::Pout | Formulation::Timo => {
             let elem = f.name();
             let a = m.positive(m.sect, "SECT", elem)?;
-            let term = |d: Option<f64>,
-                        inertia: Option<f64>,
-                        prop: &'static str|
-             -> Result<f64, FemError> {
+            let term = |d: Option<f64>, inertia: Option<f64>, prop: &'static str| -> Result<f64, FemError> {
                 match d {
                     Some(d) if d != 0.0 => Ok(d / m.positive(inertia, prop, elem)?),
                     _ => Ok(0.0),
                 }
             };
-            let (cx, cy, cz) = (
-                term(m.dx, m.tors, "TORS")?,
-                term(m.dz, m.inry, "INRY")?,
-                term(m.dy, m.inrz, "INRZ")?,
-            );
+            let (cx, cy, cz) = (term(m.dx, m.tors, "TORS")?, term(m.dz, m.inry, "INRY")?, term(m.dy, m.inrz, "INRZ")?);
             sig.values
                 .iter()
                 .map(|v| {
@@ -70,10 +53,7 @@ pub fn von_mises(
                 .collect()
         }
     };
-    Ok(GaussField {
-        comps: vec!["VMIS"],
-        values,
-    })
+    Ok(GaussField { comps: vec!["VMIS"], values })
 }
 
 /// Values at the element nodes from values at the points of
@@ -89,11 +69,7 @@ pub fn von_mises(
 pub fn to_nodes(f: Formulation, ty: ElemType, g: &GaussField) -> Result<GaussField, FemError> {
     let pts = super::element::gauss_points(f, ty);
     if g.values.len() != pts.len() {
-        return Err(FemError::WrongDofCount {
-            elem: ty.name(),
-            expected: pts.len(),
-            got: g.values.len(),
-        });
+        return Err(FemError::WrongDofCount { elem: ty.name(), expected: pts.len(), got: g.values.len() });
     }
     let nn = ty.nodes();
     let nc = g.comps.len();
@@ -101,10 +77,7 @@ pub fn to_nodes(f: Formulation, ty: ElemType, g: &GaussField) -> Result<GaussFie
         return Ok(g.clone());
     }
     if pts.len() == 1 {
-        return Ok(GaussField {
-            comps: g.comps.clone(),
-            values: vec![g.values[0].clone(); nn],
-        });
+        return Ok(GaussField { comps: g.comps.clone(), values: vec![g.values[0].clone(); nn] });
     }
     let (basis, corners) = if pts.len() >= nn {
         (ty, nn)
@@ -127,9 +100,7 @@ pub fn to_nodes(f: Formulation, ty: ElemType, g: &GaussField) -> Result<GaussFie
     }
     let mut out = vec![vec![0.0; nc]; nn];
     for c in 0..nc {
-        let mut rhs: Vec<f64> = (0..corners)
-            .map(|i| a.iter().zip(&g.values).map(|(r, v)| r[i] * v[c]).sum())
-            .collect();
+        let mut rhs: Vec<f64> = (0..corners).map(|i| a.iter().zip(&g.values).map(|(r, v)| r[i] * v[c]).sum()).collect();
         let sol = solve(ata.clone(), &mut rhs).ok_or(FemError::Degenerate {
             elem: ty.name(),
             why: "Gauss points cannot determine nodal values".into(),
@@ -139,10 +110,7 @@ pub fn to_nodes(f: Formulation, ty: ElemType, g: &GaussField) -> Result<GaussFie
             out[k][c] = eval(basis, xn).n.iter().zip(&sol).map(|(n, s)| n * s).sum();
         }
     }
-    Ok(GaussField {
-        comps: g.comps.clone(),
-        values: out,
-    })
+    Ok(GaussField { comps: g.comps.clone(), values: out })
 }
 
 /// Small dense solve by Gaussian elimination with partial pivoting.

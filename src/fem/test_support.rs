@@ -45,14 +45,8 @@ pub fn assemble(m: &Model) -> (DofMap, Vec<Vec<f64>>) {
 pub fn solve_prescribed(k: &[Vec<f64>], f: &[f64], fixed: &BTreeMap<usize, f64>) -> Vec<f64> {
     let n = f.len();
     let free: Vec<usize> = (0..n).filter(|i| !fixed.contains_key(i)).collect();
-    let mut a: Vec<Vec<f64>> = free
-        .iter()
-        .map(|&i| free.iter().map(|&j| k[i][j]).collect())
-        .collect();
-    let mut b: Vec<f64> = free
-        .iter()
-        .map(|&i| f[i] - fixed.iter().map(|(&j, &v)| k[i][j] * v).sum::<f64>())
-        .collect();
+    let mut a: Vec<Vec<f64>> = free.iter().map(|&i| free.iter().map(|&j| k[i][j]).collect()).collect();
+    let mut b: Vec<f64> = free.iter().map(|&i| f[i] - fixed.iter().map(|(&j, &v)| k[i][j] * v).sum::<f64>()).collect();
     let x = dense_solve(&mut a, &mut b);
     let mut u = vec![0.0; n];
     for (&j, &v) in fixed {
@@ -69,9 +63,7 @@ pub fn solve_prescribed(k: &[Vec<f64>], f: &[f64], fixed: &BTreeMap<usize, f64>)
 pub fn dense_solve(a: &mut [Vec<f64>], b: &mut [f64]) -> Vec<f64> {
     let n = b.len();
     for k in 0..n {
-        let p = (k..n)
-            .max_by(|&i, &j| a[i][k].abs().total_cmp(&a[j][k].abs()))
-            .unwrap();
+        let p = (k..n).max_by(|&i, &j| a[i][k].abs().total_cmp(&a[j][k].abs())).unwrap();
         assert!(a[p][k].abs() > 1e-300, "singular test system");
         a.swap(k, p);
         b.swap(k, p);
@@ -96,17 +88,11 @@ pub fn dense_solve(a: &mut [Vec<f64>], b: &mut [f64]) -> Vec<f64> {
 pub fn gather(m: &Model, map: &DofMap, conn: &[usize], ty: ElemType, u: &[f64]) -> Vec<f64> {
     let names = super::element::node_dofs(m.f, m.mode).unwrap();
     let _ = ty;
-    conn.iter()
-        .flat_map(|&n| names.iter().map(move |&d| u[map[&(n, d)]]))
-        .collect()
+    conn.iter().flat_map(|&n| names.iter().map(move |&d| u[map[&(n, d)]])).collect()
 }
 
 pub fn mat(e: f64, nu: f64) -> Material {
-    Material {
-        youn: Some(e),
-        nu: Some(nu),
-        ..Default::default()
-    }
+    Material { youn: Some(e), nu: Some(nu), ..Default::default() }
 }
 
 /// Deterministic "random" perturbation in [-1, 1].

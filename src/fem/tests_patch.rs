@@ -34,11 +34,9 @@ pub fn plane_mesh(ty: ElemType, n: usize, curved: bool) -> PatchMesh {
         *mids.entry(key).or_insert_with(|| {
             let (pa, pb) = (coords[a], coords[b]);
             let mut m = [(pa[0] + pb[0]) / 2.0, (pa[1] + pb[1]) / 2.0, 0.0];
-            let on_boundary = |p: [f64; 3]| {
-                p[0] < 0.5 + 1e-12 || p[0] > 2.5 - 1e-12 || p[1] < 1e-12 || p[1] > 2.0 - 1e-12
-            };
-            let boundary_edge =
-                on_boundary(pa) && on_boundary(pb) && (pa[0] == pb[0] || pa[1] == pb[1]);
+            let on_boundary =
+                |p: [f64; 3]| p[0] < 0.5 + 1e-12 || p[0] > 2.5 - 1e-12 || p[1] < 1e-12 || p[1] > 2.0 - 1e-12;
+            let boundary_edge = on_boundary(pa) && on_boundary(pb) && (pa[0] == pb[0] || pa[1] == pb[1]);
             if curved && !boundary_edge {
                 m[0] += 0.05 * h * wobble(m[0], m[1]);
                 m[1] += 0.05 * h * wobble(m[1], m[0] + 0.5);
@@ -68,11 +66,7 @@ pub fn plane_mesh(ty: ElemType, n: usize, curved: bool) -> PatchMesh {
                 }
                 ElemType::Tri6 => {
                     for [p, q, r] in [[a, b, c], [a, c, d]] {
-                        let (m1, m2, m3) = (
-                            mid(p, q, &mut coords),
-                            mid(q, r, &mut coords),
-                            mid(r, p, &mut coords),
-                        );
+                        let (m1, m2, m3) = (mid(p, q, &mut coords), mid(q, r, &mut coords), mid(r, p, &mut coords));
                         elems.push((ty, vec![p, m1, q, m2, r, m3]));
                     }
                 }
@@ -125,14 +119,7 @@ pub fn solid_mesh(ty: ElemType, n: usize) -> PatchMesh {
                         elems.push((ty, vec![hex[0], hex[2], hex[3], hex[4], hex[6], hex[7]]));
                     }
                     ElemType::Tet4 => {
-                        for perm in [
-                            [0, 1, 2],
-                            [0, 2, 1],
-                            [1, 0, 2],
-                            [1, 2, 0],
-                            [2, 0, 1],
-                            [2, 1, 0],
-                        ] {
+                        for perm in [[0, 1, 2], [0, 2, 1], [1, 0, 2], [1, 2, 0], [2, 0, 1], [2, 1, 0]] {
                             let mut v = [0usize; 3];
                             let mut tet = vec![c(0, 0, 0)];
                             for &ax in &perm {
@@ -174,11 +161,7 @@ fn exact_stress(mode: Mode, e: f64, nu: f64) -> Vec<f64> {
     let lam = e * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
     let iso = |eps: [f64; 3]| -> [f64; 3] {
         let tr = eps[0] + eps[1] + eps[2];
-        [
-            lam * tr + 2.0 * g * eps[0],
-            lam * tr + 2.0 * g * eps[1],
-            lam * tr + 2.0 * g * eps[2],
-        ]
+        [lam * tr + 2.0 * g * eps[0], lam * tr + 2.0 * g * eps[1], lam * tr + 2.0 * g * eps[2]]
     };
     match mode {
         Mode::PlanCont => {
@@ -197,51 +180,26 @@ fn exact_stress(mode: Mode, e: f64, nu: f64) -> Vec<f64> {
         }
         Mode::Trid => {
             let s = iso([0.02, 0.01, 0.005]);
-            vec![
-                s[0],
-                s[1],
-                s[2],
-                g * (-0.03 + 0.04),
-                g * (0.015 - 0.01),
-                g * (-0.02 + 0.025),
-            ]
+            vec![s[0], s[1], s[2], g * (-0.03 + 0.04), g * (0.015 - 0.01), g * (-0.02 + 0.025)]
         }
     }
 }
 
-fn patch(
-    f: Formulation,
-    ty: ElemType,
-    mode: Mode,
-    coords: Vec<[f64; 3]>,
-    elems: Vec<(ElemType, Vec<usize>)>,
-) {
+fn patch(f: Formulation, ty: ElemType, mode: Mode, coords: Vec<[f64; 3]>, elems: Vec<(ElemType, Vec<usize>)>) {
     let (e, nu) = (200.0, 0.3);
     let mut mat = mat(e, nu);
     mat.dim3 = Some(0.7);
-    let model = Model {
-        mode,
-        f,
-        coords,
-        elems,
-        mat,
-    };
+    let model = Model { mode, f, coords, elems, mat };
     let (map, k) = assemble(&model);
-    let (lo, hi) =
-        model
-            .coords
-            .iter()
-            .fold(([f64::MAX; 3], [f64::MIN; 3]), |(mut lo, mut hi), p| {
-                for c in 0..3 {
-                    lo[c] = lo[c].min(p[c]);
-                    hi[c] = hi[c].max(p[c]);
-                }
-                (lo, hi)
-            });
+    let (lo, hi) = model.coords.iter().fold(([f64::MAX; 3], [f64::MIN; 3]), |(mut lo, mut hi), p| {
+        for c in 0..3 {
+            lo[c] = lo[c].min(p[c]);
+            hi[c] = hi[c].max(p[c]);
+        }
+        (lo, hi)
+    });
     let dims = if mode == Mode::Trid { 3 } else { 2 };
-    let boundary = |p: [f64; 3]| {
-        (0..dims).any(|c| (p[c] - lo[c]).abs() < 1e-12 || (p[c] - hi[c]).abs() < 1e-12)
-    };
+    let boundary = |p: [f64; 3]| (0..dims).any(|c| (p[c] - lo[c]).abs() < 1e-12 || (p[c] - hi[c]).abs() < 1e-12);
     let mut fixed = BTreeMap::new();
     let mut interior = Vec::new();
     for (&(node, d), &row) in &map {
@@ -274,13 +232,7 @@ fn patch(
         assert_eq!(s.values.len(), super::element::gauss_points(f, *ty).len());
         for v in &s.values {
             for (c, (a, b)) in v.iter().zip(&want).enumerate() {
-                assert!(
-                    (a - b).abs() < 1e-10,
-                    "{} {:?}: {} = {a} vs {b}",
-                    ty.name(),
-                    mode,
-                    s.comps[c]
-                );
+                assert!((a - b).abs() < 1e-10, "{} {:?}: {} = {a} vs {b}", ty.name(), mode, s.comps[c]);
             }
         }
         let eps = strain(f, *ty, mode, &x, &model.mat, &ue).unwrap();
@@ -294,12 +246,7 @@ fn patch(
 #[test]
 fn patch_tests_plane_and_axisymmetric() {
     for mode in [Mode::PlanCont, Mode::PlanDefo, Mode::Axis] {
-        for ty in [
-            ElemType::Tri3,
-            ElemType::Qua4,
-            ElemType::Tri6,
-            ElemType::Qua8,
-        ] {
+        for ty in [ElemType::Tri3, ElemType::Qua4, ElemType::Tri6, ElemType::Qua8] {
             // Curved interior edges only in the plane modes: the AXIS hoop
             // term N/r is not polynomial on a curved isoparametric element.
             let (c, e) = plane_mesh(ty, 3, mode != Mode::Axis);

@@ -15,13 +15,7 @@ use std::collections::BTreeMap;
 /// hold the symmetry planes, compare every nodal displacement.
 fn uniaxial(f: Formulation, mode: Mode, (coords, elems): PatchMesh, axis: usize) {
     let (e, nu, s) = (250.0, 0.3, 2.0);
-    let model = Model {
-        mode,
-        f,
-        coords,
-        elems,
-        mat: mat(e, nu),
-    };
+    let model = Model { mode, f, coords, elems, mat: mat(e, nu) };
     let (map, k) = assemble(&model);
     let dims = if mode == Mode::Trid { 3 } else { 2 };
     let hi = model.coords.iter().fold(f64::MIN, |a, p| a.max(p[axis]));
@@ -36,10 +30,7 @@ fn uniaxial(f: Formulation, mode: Mode, (coords, elems): PatchMesh, axis: usize)
         let inside = centroid.map(|v| v / conn.len() as f64);
         for (fty, local) in faces(*ty) {
             let nodes: Vec<usize> = local.iter().map(|&l| conn[l]).collect();
-            if nodes
-                .iter()
-                .all(|&n| (model.coords[n][axis] - hi).abs() < 1e-12)
-            {
+            if nodes.iter().all(|&n| (model.coords[n][axis] - hi).abs() < 1e-12) {
                 nfaces += 1;
                 let x: Vec<[f64; 3]> = nodes.iter().map(|&n| model.coords[n]).collect();
                 // A traction pulling outwards is a negative pressure.
@@ -83,36 +74,20 @@ fn uniaxial(f: Formulation, mode: Mode, (coords, elems): PatchMesh, axis: usize)
     for (&(n, d), &row) in &map {
         let c = names.iter().position(|x| *x == d).unwrap();
         let want = exact(model.coords[n], c);
-        assert!(
-            (u[row] - want).abs() < 1e-10,
-            "{:?} {:?} node {n} {d}: {} vs {want}",
-            f,
-            mode,
-            u[row]
-        );
+        assert!((u[row] - want).abs() < 1e-10, "{:?} {:?} node {n} {d}: {} vs {want}", f, mode, u[row]);
     }
 }
 
 #[test]
 fn uniform_traction_gives_the_exact_uniaxial_field() {
-    for ty in [
-        ElemType::Tri3,
-        ElemType::Tri6,
-        ElemType::Qua4,
-        ElemType::Qua8,
-    ] {
+    for ty in [ElemType::Tri3, ElemType::Tri6, ElemType::Qua4, ElemType::Qua8] {
         for mode in [Mode::PlanCont, Mode::PlanDefo] {
             uniaxial(Formulation::Solid, mode, plane_mesh(ty, 2, true), 0);
         }
         // AXIS: pull along z (the second coordinate) on the top edge.
         uniaxial(Formulation::Solid, Mode::Axis, plane_mesh(ty, 2, false), 1);
     }
-    uniaxial(
-        Formulation::Q4ri,
-        Mode::PlanCont,
-        plane_mesh(ElemType::Qua4, 2, false),
-        0,
-    );
+    uniaxial(Formulation::Q4ri, Mode::PlanCont, plane_mesh(ElemType::Qua4, 2, false), 0);
     for ty in [ElemType::Cub8, ElemType::Tet4, ElemType::Pri6] {
         uniaxial(Formulation::Solid, Mode::Trid, solid_mesh(ty, 2), 0);
         uniaxial(Formulation::Solid, Mode::Trid, solid_mesh(ty, 2), 2);
@@ -123,9 +98,7 @@ fn uniform_traction_gives_the_exact_uniaxial_field() {
 fn deck_09_qua4_plane_stress_square() {
     // 2 × 2 QUA4 on the unit square, E = 100, ν = 0.25, nodal forces
     // 0.25 / 0.5 / 0.25 on the right edge: ux = x/100, uy = −0.25 y/100.
-    let coords: Vec<[f64; 3]> = (0..9)
-        .map(|i| [0.5 * (i % 3) as f64, 0.5 * (i / 3) as f64, 0.0])
-        .collect();
+    let coords: Vec<[f64; 3]> = (0..9).map(|i| [0.5 * (i % 3) as f64, 0.5 * (i / 3) as f64, 0.0]).collect();
     let elems = [(0, 0), (1, 0), (0, 1), (1, 1)]
         .iter()
         .map(|&(i, j)| {
@@ -133,20 +106,13 @@ fn deck_09_qua4_plane_stress_square() {
             (ElemType::Qua4, vec![a, a + 1, a + 4, a + 3])
         })
         .collect();
-    let model = Model {
-        mode: Mode::PlanCont,
-        f: Formulation::Solid,
-        coords,
-        elems,
-        mat: mat(100.0, 0.25),
-    };
+    let model = Model { mode: Mode::PlanCont, f: Formulation::Solid, coords, elems, mat: mat(100.0, 0.25) };
     let (map, k) = assemble(&model);
     let mut rhs = vec![0.0; map.len()];
     for (n, v) in [(2, 0.25), (5, 0.5), (8, 0.25)] {
         rhs[map[&(n, "UX")]] = v;
     }
-    let mut fixed: BTreeMap<usize, f64> =
-        [0, 3, 6].iter().map(|&n| (map[&(n, "UX")], 0.0)).collect();
+    let mut fixed: BTreeMap<usize, f64> = [0, 3, 6].iter().map(|&n| (map[&(n, "UX")], 0.0)).collect();
     fixed.insert(map[&(0, "UY")], 0.0);
     let u = solve_prescribed(&k, &rhs, &fixed);
     for (n, p) in model.coords.iter().enumerate() {
@@ -155,47 +121,12 @@ fn deck_09_qua4_plane_stress_square() {
     }
     // DIM3 scales the plane-stress stiffness and nothing else.
     let x: Vec<[f64; 3]> = vec![[0.0; 3], [1.0, 0.0, 0.0], [1.2, 0.9, 0.0], [0.1, 1.0, 0.0]];
-    let k1 = stiffness(
-        Formulation::Solid,
-        ElemType::Qua4,
-        Mode::PlanCont,
-        &x,
-        &mat(100.0, 0.25),
-    )
-    .unwrap();
-    let thick = super::element::Material {
-        dim3: Some(0.3),
-        ..mat(100.0, 0.25)
-    };
-    let k3 = stiffness(
-        Formulation::Solid,
-        ElemType::Qua4,
-        Mode::PlanCont,
-        &x,
-        &thick,
-    )
-    .unwrap();
-    assert!(k1
-        .k
-        .iter()
-        .zip(&k3.k)
-        .all(|(a, b)| (0.3 * a - b).abs() < 1e-12));
-    let kd = stiffness(
-        Formulation::Solid,
-        ElemType::Qua4,
-        Mode::PlanDefo,
-        &x,
-        &thick,
-    )
-    .unwrap();
-    let kd1 = stiffness(
-        Formulation::Solid,
-        ElemType::Qua4,
-        Mode::PlanDefo,
-        &x,
-        &mat(100.0, 0.25),
-    )
-    .unwrap();
+    let k1 = stiffness(Formulation::Solid, ElemType::Qua4, Mode::PlanCont, &x, &mat(100.0, 0.25)).unwrap();
+    let thick = super::element::Material { dim3: Some(0.3), ..mat(100.0, 0.25) };
+    let k3 = stiffness(Formulation::Solid, ElemType::Qua4, Mode::PlanCont, &x, &thick).unwrap();
+    assert!(k1.k.iter().zip(&k3.k).all(|(a, b)| (0.3 * a - b).abs() < 1e-12));
+    let kd = stiffness(Formulation::Solid, ElemType::Qua4, Mode::PlanDefo, &x, &thick).unwrap();
+    let kd1 = stiffness(Formulation::Solid, ElemType::Qua4, Mode::PlanDefo, &x, &mat(100.0, 0.25)).unwrap();
     assert_eq!(kd.k, kd1.k);
 }
 
@@ -203,18 +134,8 @@ fn deck_09_qua4_plane_stress_square() {
 fn dof_and_dual_names() {
     use Formulation::*;
     let cases: [(Formulation, Mode, &[&str], &[&str]); 6] = [
-        (
-            Pout,
-            Mode::PlanCont,
-            &["UX", "UY", "RZ"],
-            &["FX", "FY", "MZ"],
-        ),
-        (
-            Timo,
-            Mode::Trid,
-            &["UX", "UY", "UZ", "RX", "RY", "RZ"],
-            &["FX", "FY", "FZ", "MX", "MY", "MZ"],
-        ),
+        (Pout, Mode::PlanCont, &["UX", "UY", "RZ"], &["FX", "FY", "MZ"]),
+        (Timo, Mode::Trid, &["UX", "UY", "UZ", "RX", "RY", "RZ"], &["FX", "FY", "FZ", "MX", "MY", "MZ"]),
         (Solid, Mode::Axis, &["UR", "UZ"], &["FR", "FZ"]),
         (Q4ri, Mode::PlanDefo, &["UX", "UY"], &["FX", "FY"]),
         (Barr, Mode::Trid, &["UX", "UY", "UZ"], &["FX", "FY", "FZ"]),
