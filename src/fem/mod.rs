@@ -1,3 +1,30 @@
 //! Elements, quadrature and assembly: knows meshes and materials, never the language.
+//!
+//! The element library is called per element through [`element`]:
+//! `stiffness`, `mass`, `stress`, `strain`, `gauss_points`; loads are in
+//! [`loads`] (pressure), post-processing in [`stress`] (VMIS, Gauss points
+//! to nodes). Conventions (dof order, AXIS per radian, output points) are
+//! documented at the top of [`element`] and [`quadrature`].
+pub mod bar;
+pub mod beam;
+pub mod element;
+pub mod loads;
+pub mod material;
+pub mod quadrature;
+pub mod shape;
+pub mod solid;
+pub mod stress;
+
+#[cfg(test)]
+mod test_support;
+#[cfg(test)]
+mod tests_beam;
+#[cfg(test)]
+mod tests_patch;
+#[cfg(test)]
+mod tests_solid;
+#[cfg(test)]
+mod tests_traction;
+
 pub mod mesh;
 pub mod meshing;

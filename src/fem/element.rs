@@ -1,0 +1,253 @@
+//! The element library's public face: what the language glue calls per
+//! element. Everything here is language-free: coordinates, a merged
+//! material, element dofs in, matrices and Gauss-point fields out.
+//!
+//! Conventions:
+//! * Element dofs are node-major: node 0's components in [`node_dofs`]
+//!   order, then node 1's, ... `ElemMatrix::dofs` spells them out.
+//! * Coordinates are always given in 3D; the plane modes ignore z. In
+//!   AXIS, x is the radius r (> 0) and y is the axial coordinate z.
+//! * AXIS quantities are **per radian** (stiffness, mass and pressure loads
+//!   integrate r·dr·dz, without 2π), as Cast3M does: a nodal force FR on a
+//!   ring is the force per radian of circumference.
+//! * PLAN CONT matrices include the thickness DIM3 (default 1); PLAN DEFO
+//!   is per unit thickness.
+
+use super::mesh::ElemType;
+use super::{bar, beam, solid};
+use thiserror::Error;
+
+pub use super::material::Material;
+
+/// Cast3M analysis modes (`OPTI MODE`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Mode {
+    PlanCont,
+    PlanDefo,
+    Axis,
+    Trid,
+}
+
+impl Mode {
+    pub fn name(self) -> &'static str {
+        match self {
+            Mode::PlanCont => "PLAN CONT",
+            Mode::PlanDefo => "PLAN DEFO",
+            Mode::Axis => "AXIS",
+            Mode::Trid => "TRID",
+        }
+    }
+}
+
+/// Element formulation: structural ones named in MODE, or a massive element
+/// following the mesh geometry. `Q4ri` is QUA4 with one Gauss point.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Formulation {
+    Barr,
+    Pout,
+    Timo,
+    Solid,
+    Q4ri,
+}
+
+impl Formulation {
+    pub fn name(self) -> &'static str {
+        match self {
+            Formulation::Barr => "BARR",
+            Formulation::Pout => "POUT",
+            Formulation::Timo => "TIMO",
+            Formulation::Solid => "massive",
+            Formulation::Q4ri => "Q4RI",
+        }
+    }
+}
+
+#[derive(Debug, Clone, Error, PartialEq)]
+pub enum FemError {
+    #[error("material property {prop} missing for {elem}")]
+    MissingProperty { prop: &'static str, elem: &'static str },
+    #[error("material property {prop} = {value} is invalid for {elem}: it {why}")]
+    InvalidProperty { prop: &'static str, value: f64, elem: &'static str, why: &'static str },
+    #[error("{form} elements on {elem} are not available in mode {mode}")]
+    Unsupported { form: &'static str, elem: &'static str, mode: &'static str },
+    #[error("degenerate {elem} element: {why}")]
+    Degenerate { elem: &'static str, why: String },
+    #[error("{elem} element needs {expected} nodes, got {got}")]
+    WrongNodeCount { elem: &'static str, expected: usize, got: usize },
+    #[error("{elem} element has {expected} dofs, got {got} values")]
+    WrongDofCount { elem: &'static str, expected: usize, got: usize },
+}
+
+/// An elementary matrix over the element's dofs, row-major.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ElemMatrix {
+    pub dofs: Vec<(usize, &'static str)>,
+    pub k: Vec<f64>,
+}
+
+/// Values of one element at its integration (or output) points:
+/// `values[point][component]`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GaussField {
+    pub comps: Vec<&'static str>,
+    pub values: Vec<Vec<f64>>,
+}
+
+impl GaussField {
+    /// Value of a named component at a point.
+    pub fn get(&self, comp: &str, point: usize) -> Option<f64> {
+        let c = self.comps.iter().position(|n| *n == comp)?;
+        self.values.get(point)?.get(c).copied()
+    }
+}
+
+/// Primal component names of one node.
+pub fn node_dofs(f: Formulation, mode: Mode) -> Result<&'static [&'static str], FemError> {
+    match f {
+        Formulation::Barr => bar::dofs(mode),
+        Formulation::Pout | Formulation::Timo => beam::dofs(mode),
+        Formulation::Solid | Formulation::Q4ri => Ok(solid::dofs(mode)),
+    }
+}
+
+/// Dual (force) names matching [`node_dofs`] one for one.
+pub fn node_duals(f: Formulation, mode: Mode) -> Result<&'static [&'static str], FemError> {
+    let d = node_dofs(f, mode)?;
+    Ok(match d.len() {
+        _ if d[0] == "UR" => &["FR", "FZ"],
+        2 => &["FX", "FY"],
+        3 if d[2] == "RZ" => &["FX", "FY", "MZ"],
+        3 => &["FX", "FY", "FZ"],
+        _ => &["FX", "FY", "FZ", "MX", "MY", "MZ"],
+    })
+}
+
+/// The dual of one primal component name (UX → FX, RZ → MZ, UR → FR ...).
+pub fn dual_of(dof: &str) -> Option<&'static str> {
+    Some(match dof {
+        "UX" => "FX",
+        "UY" => "FY",
+        "UZ" => "FZ",
+        "UR" => "FR",
+        "RX" => "MX",
+        "RY" => "MY",
+        "RZ" => "MZ",
+        _ => return None,
+    })
+}
+
+/// Which geometries each formulation accepts.
+fn check(f: Formulation, ty: ElemType, mode: Mode) -> Result<(), FemError> {
+    let ok = match f {
+        Formulation::Barr | Formulation::Pout | Formulation::Timo => ty == ElemType::Seg2,
+        Formulation::Q4ri => ty == ElemType::Qua4,
+        Formulation::Solid => ty.dim() >= 2,
+    };
+    if ok {
+        Ok(())
+    } else {
+        Err(FemError::Unsupported { form: f.name(), elem: ty.name(), mode: mode.name() })
+    }
+}
+
+pub fn stiffness(
+    f: Formulation,
+    ty: ElemType,
+    mode: Mode,
+    x: &[[f64; 3]],
+    m: &Material,
+) -> Result<ElemMatrix, FemError> {
+    check(f, ty, mode)?;
+    match f {
+        Formulation::Barr => bar::stiffness(mode, x, m),
+        Formulation::Pout => beam::stiffness(false, mode, x, m),
+        Formulation::Timo => beam::stiffness(true, mode, x, m),
+        Formulation::Solid | Formulation::Q4ri => solid::stiffness(f, ty, mode, x, m),
+    }
+}
+
+/// Consistent mass, or lumped (diagonal) mass when `lumped`.
+pub fn mass(
+    f: Formulation,
+    ty: ElemType,
+    mode: Mode,
+    x: &[[f64; 3]],
+    m: &Material,
+    lumped: bool,
+) -> Result<ElemMatrix, FemError> {
+    check(f, ty, mode)?;
+    match f {
+        Formulation::Barr => bar::mass(mode, x, m, lumped),
+        Formulation::Pout => beam::mass(false, mode, x, m, lumped),
+        Formulation::Timo => beam::mass(true, mode, x, m, lumped),
+        Formulation::Solid | Formulation::Q4ri => solid::mass(ty, mode, x, m, lumped),
+    }
+}
+
+/// Stresses (SIGM) at the points of [`gauss_points`]; `u` holds the
+/// element dofs in [`ElemMatrix`] order.
+pub fn stress(
+    f: Formulation,
+    ty: ElemType,
+    mode: Mode,
+    x: &[[f64; 3]],
+    m: &Material,
+    u: &[f64],
+) -> Result<GaussField, FemError> {
+    check(f, ty, mode)?;
+    match f {
+        Formulation::Barr => bar::stress(mode, x, m, u),
+        Formulation::Pout => beam::stress(false, mode, x, m, u),
+        Formulation::Timo => beam::stress(true, mode, x, m, u),
+        Formulation::Solid | Formulation::Q4ri => solid::field(f, ty, mode, x, m, u, true),
+    }
+}
+
+/// Strains (EPSI): EPXX EPYY EPZZ GAXY (GAXZ GAYZ) with engineering
+/// shears for solids (EPRR EPZZ EPTT GARZ in AXIS); generalised strains
+/// for bars and beams.
+pub fn strain(
+    f: Formulation,
+    ty: ElemType,
+    mode: Mode,
+    x: &[[f64; 3]],
+    m: &Material,
+    u: &[f64],
+) -> Result<GaussField, FemError> {
+    check(f, ty, mode)?;
+    match f {
+        Formulation::Barr => bar::strain(mode, x, u),
+        Formulation::Pout => beam::strain(false, mode, x, m, u),
+        Formulation::Timo => beam::strain(true, mode, x, m, u),
+        Formulation::Solid | Formulation::Q4ri => solid::field(f, ty, mode, x, m, u, false),
+    }
+}
+
+/// Reference coordinates and weights of the points where [`stress`] and
+/// [`strain`] give values. Bars and beams output at their two ends
+/// (ξ = −1, +1). Ordering: see [`super::quadrature`].
+pub fn gauss_points(f: Formulation, ty: ElemType) -> Vec<([f64; 3], f64)> {
+    match f {
+        Formulation::Barr | Formulation::Pout | Formulation::Timo => {
+            vec![([-1.0, 0.0, 0.0], 1.0), ([1.0, 0.0, 0.0], 1.0)]
+        }
+        Formulation::Solid | Formulation::Q4ri => solid::rule(f, ty),
+    }
+}
+
+/// Physical positions of the [`gauss_points`] of one element.
+pub fn gauss_positions(f: Formulation, ty: ElemType, x: &[[f64; 3]]) -> Vec<[f64; 3]> {
+    gauss_points(f, ty)
+        .into_iter()
+        .map(|(p, _)| {
+            let s = super::shape::eval(ty, p);
+            let mut y = [0.0; 3];
+            for (n, xi) in s.n.iter().zip(x) {
+                for c in 0..3 {
+                    y[c] += n * xi[c];
+                }
+            }
+            y
+        })
+        .collect()
+}

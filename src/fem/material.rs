@@ -1,0 +1,111 @@
+//! Material and section data (MATE and CARA merged), and elasticity
+//! matrices for each analysis mode.
+
+use super::element::{FemError, Mode};
+
+/// Everything MATE and CARA can give an element, merged. Absent values are
+/// `None`; each element asks for what it needs and reports what is missing.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Material {
+    pub youn: Option<f64>,
+    pub nu: Option<f64>,
+    pub rho: Option<f64>,
+    pub alph: Option<f64>,
+    /// Cross-section area (BARR, POUT, TIMO).
+    pub sect: Option<f64>,
+    /// Second moments about the local y and z axes.
+    pub inry: Option<f64>,
+    pub inrz: Option<f64>,
+    /// Torsion constant J.
+    pub tors: Option<f64>,
+    /// Shear areas along local y and z (TIMO).
+    pub secy: Option<f64>,
+    pub secz: Option<f64>,
+    pub epai: Option<f64>,
+    /// Thickness of plane-stress solids (default 1).
+    pub dim3: Option<f64>,
+    /// Fibre distances used by the beam VMIS formula.
+    pub dx: Option<f64>,
+    pub dy: Option<f64>,
+    pub dz: Option<f64>,
+    /// Local y axis of 3D beams (CARA 'VECT').
+    pub vect: Option<[f64; 3]>,
+}
+
+impl Material {
+    /// A required, strictly positive property.
+    pub(crate) fn positive(&self, v: Option<f64>, prop: &'static str, elem: &'static str) -> Result<f64, FemError> {
+        let x = v.ok_or(FemError::MissingProperty { prop, elem })?;
+        if x.is_finite() && x > 0.0 {
+            Ok(x)
+        } else {
+            Err(FemError::InvalidProperty { prop, value: x, elem, why: "must be positive" })
+        }
+    }
+
+    pub(crate) fn young(&self, elem: &'static str) -> Result<f64, FemError> {
+        self.positive(self.youn, "YOUN", elem)
+    }
+
+    /// Poisson's ratio, kept inside (-1, 1/2) where the elasticity matrix
+    /// is positive definite in every mode.
+    pub(crate) fn poisson(&self, elem: &'static str) -> Result<f64, FemError> {
+        let nu = self.nu.ok_or(FemError::MissingProperty { prop: "NU", elem })?;
+        if nu.is_finite() && nu > -1.0 && nu < 0.5 {
+            Ok(nu)
+        } else {
+            Err(FemError::InvalidProperty { prop: "NU", value: nu, elem, why: "must lie in (-1, 0.5)" })
+        }
+    }
+
+    /// Shear modulus E / (2(1 + ν)).
+    pub(crate) fn shear_modulus(&self, elem: &'static str) -> Result<f64, FemError> {
+        Ok(self.young(elem)? / (2.0 * (1.0 + self.poisson(elem)?)))
+    }
+
+    pub(crate) fn density(&self, elem: &'static str) -> Result<f64, FemError> {
+        self.positive(self.rho, "RHO", elem)
+    }
+
+    /// Plane-stress thickness; the other modes have none (unit thickness for
+    /// plane strain, per radian for AXIS).
+    pub(crate) fn thickness(&self, mode: Mode, elem: &'static str) -> Result<f64, FemError> {
+        match (mode, self.dim3) {
+            (Mode::PlanCont, Some(_)) => self.positive(self.dim3, "DIM3", elem),
+            _ => Ok(1.0),
+        }
+    }
+}
+
+/// Elasticity matrix of a massive element, in the strain order of the mode:
+/// 2D modes `[xx, yy, zz, xy]` (zz is θθ in AXIS, r ↔ x and z ↔ y), TRID
+/// `[xx, yy, zz, xy, xz, yz]`, engineering shears.
+///
+/// Plane stress keeps a zero zz row and column, so the same 4-strain B
+/// matrix serves every 2D mode and σzz comes out 0 by construction.
+pub(crate) fn elasticity(mode: Mode, m: &Material, elem: &'static str) -> Result<Vec<Vec<f64>>, FemError> {
+    let e = m.young(elem)?;
+    let nu = m.poisson(elem)?;
+    let g = e / (2.0 * (1.0 + nu));
+    let lam = e * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
+    Ok(match mode {
+        Mode::PlanCont => {
+            let c = e / (1.0 - nu * nu);
+            vec![vec![c, c * nu, 0.0, 0.0], vec![c * nu, c, 0.0, 0.0], vec![0.0; 4], vec![0.0, 0.0, 0.0, g]]
+        }
+        Mode::PlanDefo | Mode::Axis => {
+            let d = lam + 2.0 * g;
+            vec![vec![d, lam, lam, 0.0], vec![lam, d, lam, 0.0], vec![lam, lam, d, 0.0], vec![0.0, 0.0, 0.0, g]]
+        }
+        Mode::Trid => {
+            let d = lam + 2.0 * g;
+            let mut k = vec![vec![0.0; 6]; 6];
+            for i in 0..3 {
+                k[i][..3].copy_from_slice(&[lam; 3]);
+                k[i][i] = d;
+                k[i + 3][i + 3] = g;
+            }
+            k
+        }
+    })
+}

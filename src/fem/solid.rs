@@ -1,0 +1,343 @@
+//! Isoparametric massive elements: TRI3, TRI6, QUA4 (and Q4RI), QUA8 in the
+//! 2D modes; CUB8, TET4, PRI6 in TRID.
+//!
+//! Integration (stiffness and stress points):
+//! * TRI3, TET4: 1 point (B is constant, so this is exact).
+//! * TRI6: 3 points (degree 2: exact for straight-sided elements).
+//! * QUA4: 2×2. Q4RI: 1 point, see [`rule`] for its hourglass modes.
+//! * QUA8: 3×3, full integration. 2×2 would leave a zero-energy mode in a
+//!   lone element (and locks less only for thin bending); we prefer a matrix
+//!   that is never spuriously singular and exact on rectangles, as Cast3M
+//!   does for QUA8.
+//! * CUB8: 2×2×2; PRI6: 3-point triangle × 2 Gauss points along ζ.
+//!
+//! Mass uses richer rules so that the consistent mass is exact for
+//! undistorted shapes (its integrand is of higher degree than B'DB).
+
+use super::element::{ElemMatrix, FemError, Formulation, GaussField, Mode};
+use super::material::{elasticity, Material};
+use super::mesh::ElemType;
+use super::quadrature::{hexa, prism, quad, tet, tri, QPoint};
+use super::shape::eval;
+
+/// Stiffness/stress integration rule.
+///
+/// Q4RI integrates the QUA4 at its centre only. That matrix has rank 3
+/// instead of 5: besides the 3 rigid modes it has 2 *hourglass* modes,
+/// u = ξη·(a, b) (the "keystone" patterns), with zero energy. No
+/// stabilisation is added; they are controlled only by the neighbours
+/// and the boundary conditions, so a Q4RI mesh can be singular where the
+/// QUA4 one is not.
+pub fn rule(f: Formulation, ty: ElemType) -> Vec<QPoint> {
+    match (f, ty) {
+        (Formulation::Q4ri, _) => quad(1),
+        (_, ElemType::Tri3) => tri(1),
+        (_, ElemType::Tri6) => tri(3),
+        (_, ElemType::Qua4) => quad(2),
+        (_, ElemType::Qua8) => quad(3),
+        (_, ElemType::Cub8) => hexa(2),
+        (_, ElemType::Tet4) => tet(1),
+        (_, ElemType::Pri6) => prism(3, 2),
+        _ => vec![],
+    }
+}
+
+fn mass_rule(ty: ElemType) -> Vec<QPoint> {
+    match ty {
+        ElemType::Tri3 => tri(3),
+        ElemType::Tri6 => tri(7),
+        ElemType::Qua4 | ElemType::Qua8 => quad(3),
+        ElemType::Cub8 => hexa(3),
+        ElemType::Tet4 => tet(4),
+        ElemType::Pri6 => prism(7, 3),
+        _ => vec![],
+    }
+}
+
+/// Names of the displacement components of a massive element.
+pub fn dofs(mode: Mode) -> &'static [&'static str] {
+    match mode {
+        Mode::PlanCont | Mode::PlanDefo => &["UX", "UY"],
+        Mode::Axis => &["UR", "UZ"],
+        Mode::Trid => &["UX", "UY", "UZ"],
+    }
+}
+
+pub fn stress_comps(mode: Mode) -> Vec<&'static str> {
+    match mode {
+        Mode::PlanCont | Mode::PlanDefo => vec!["SMXX", "SMYY", "SMZZ", "SMXY"],
+        Mode::Axis => vec!["SMRR", "SMZZ", "SMTT", "SMRZ"],
+        Mode::Trid => vec!["SMXX", "SMYY", "SMZZ", "SMXY", "SMXZ", "SMYZ"],
+    }
+}
+
+pub fn strain_comps(mode: Mode) -> Vec<&'static str> {
+    match mode {
+        Mode::PlanCont | Mode::PlanDefo => vec!["EPXX", "EPYY", "EPZZ", "GAXY"],
+        Mode::Axis => vec!["EPRR", "EPZZ", "EPTT", "GARZ"],
+        Mode::Trid => vec!["EPXX", "EPYY", "EPZZ", "GAXY", "GAXZ", "GAYZ"],
+    }
+}
+
+/// One integration point mapped to the element: shape values, physical
+/// derivatives and the full weight (w·|J|·thickness, or ·r in AXIS).
+struct Point {
+    n: Vec<f64>,
+    dndx: Vec<[f64; 3]>,
+    w: f64,
+    r: f64,
+}
+
+fn check(ty: ElemType, mode: Mode, x: &[[f64; 3]]) -> Result<usize, FemError> {
+    let dim = ty.dim();
+    let ok = match dim {
+        2 => mode != Mode::Trid,
+        3 => mode == Mode::Trid,
+        _ => false,
+    };
+    if !ok
+        || !matches!(
+            ty,
+            ElemType::Tri3
+                | ElemType::Tri6
+                | ElemType::Qua4
+                | ElemType::Qua8
+                | ElemType::Cub8
+                | ElemType::Tet4
+                | ElemType::Pri6
+        )
+    {
+        return Err(FemError::Unsupported { form: "massive", elem: ty.name(), mode: mode.name() });
+    }
+    if x.len() != ty.nodes() {
+        return Err(FemError::WrongNodeCount { elem: ty.name(), expected: ty.nodes(), got: x.len() });
+    }
+    Ok(dim)
+}
+
+/// Map every point of `rule` to the element. Elements whose node order is
+/// uniformly reversed (clockwise in 2D, left-handed in 3D) are accepted
+/// with |J|; a Jacobian that vanishes or changes sign inside the element is
+/// an error, since the mapping then folds over itself.
+fn points(ty: ElemType, mode: Mode, x: &[[f64; 3]], rule: &[QPoint], t: f64) -> Result<Vec<Point>, FemError> {
+    let dim = check(ty, mode, x)?;
+    let mut size: f64 = 0.0;
+    for a in x {
+        for b in x {
+            size = size.max((0..dim).map(|k| (a[k] - b[k]).powi(2)).sum::<f64>().sqrt());
+        }
+    }
+    let tol = 1e-12 * size.powi(dim as i32);
+    let mut out = Vec::with_capacity(rule.len());
+    let mut sign = 0.0;
+    for &(p, w) in rule {
+        let s = eval(ty, p);
+        let mut j = [[0.0; 3]; 3];
+        for (i, d) in s.dn.iter().enumerate() {
+            for a in 0..dim {
+                for b in 0..dim {
+                    j[a][b] += d[a] * x[i][b];
+                }
+            }
+        }
+        let (det, inv) = invert(&j, dim);
+        if det.abs() <= tol || !det.is_finite() || (sign != 0.0 && det * sign < 0.0) {
+            return Err(FemError::Degenerate {
+                elem: ty.name(),
+                why: format!("Jacobian {det:e} vanishes or changes sign (flat, folded or badly distorted element)"),
+            });
+        }
+        sign = det.signum();
+        let dndx =
+            s.dn.iter()
+                .map(|d| {
+                    let mut g = [0.0; 3];
+                    for (b, gb) in g.iter_mut().enumerate().take(dim) {
+                        *gb = (0..dim).map(|a| inv[b][a] * d[a]).sum();
+                    }
+                    g
+                })
+                .collect();
+        let r: f64 = s.n.iter().zip(x).map(|(n, p)| n * p[0]).sum();
+        let mut wt = w * det.abs() * t;
+        if mode == Mode::Axis {
+            if r <= 0.0 {
+                return Err(FemError::Degenerate {
+                    elem: ty.name(),
+                    why: format!("AXIS element reaches r = {r:e} <= 0 (radius must be the first coordinate, positive)"),
+                });
+            }
+            wt *= r;
+        }
+        out.push(Point { n: s.n, dndx, w: wt, r });
+    }
+    Ok(out)
+}
+
+/// Determinant and inverse of the leading dim×dim block.
+fn invert(j: &[[f64; 3]; 3], dim: usize) -> (f64, [[f64; 3]; 3]) {
+    let mut inv = [[0.0; 3]; 3];
+    if dim == 2 {
+        let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
+        if det != 0.0 {
+            inv[0] = [j[1][1] / det, -j[0][1] / det, 0.0];
+            inv[1] = [-j[1][0] / det, j[0][0] / det, 0.0];
+        }
+        return (det, inv);
+    }
+    let c = |r: usize, s: usize| {
+        let (r1, r2, s1, s2) = ((r + 1) % 3, (r + 2) % 3, (s + 1) % 3, (s + 2) % 3);
+        j[r1][s1] * j[r2][s2] - j[r1][s2] * j[r2][s1]
+    };
+    let det = (0..3).map(|k| j[0][k] * c(0, k)).sum::<f64>();
+    if det != 0.0 {
+        for (a, row) in inv.iter_mut().enumerate() {
+            for (b, v) in row.iter_mut().enumerate() {
+                *v = c(b, a) / det;
+            }
+        }
+    }
+    (det, inv)
+}
+
+/// Strain-displacement matrix (rows: strains of the mode; columns: element
+/// dofs, node-major).
+fn bmat(mode: Mode, p: &Point) -> Vec<Vec<f64>> {
+    let nn = p.n.len();
+    if mode == Mode::Trid {
+        let mut b = vec![vec![0.0; 3 * nn]; 6];
+        for (i, g) in p.dndx.iter().enumerate() {
+            let c = 3 * i;
+            b[0][c] = g[0];
+            b[1][c + 1] = g[1];
+            b[2][c + 2] = g[2];
+            b[3][c] = g[1];
+            b[3][c + 1] = g[0];
+            b[4][c] = g[2];
+            b[4][c + 2] = g[0];
+            b[5][c + 1] = g[2];
+            b[5][c + 2] = g[1];
+        }
+        return b;
+    }
+    let mut b = vec![vec![0.0; 2 * nn]; 4];
+    for (i, g) in p.dndx.iter().enumerate() {
+        let c = 2 * i;
+        b[0][c] = g[0];
+        b[1][c + 1] = g[1];
+        if mode == Mode::Axis {
+            // Hoop strain u_r / r.
+            b[2][c] = p.n[i] / p.r;
+        }
+        b[3][c] = g[1];
+        b[3][c + 1] = g[0];
+    }
+    b
+}
+
+fn dof_list(ty: ElemType, mode: Mode) -> Vec<(usize, &'static str)> {
+    (0..ty.nodes()).flat_map(|i| dofs(mode).iter().map(move |&d| (i, d))).collect()
+}
+
+pub fn stiffness(
+    f: Formulation,
+    ty: ElemType,
+    mode: Mode,
+    x: &[[f64; 3]],
+    m: &Material,
+) -> Result<ElemMatrix, FemError> {
+    let d = elasticity(mode, m, ty.name())?;
+    let t = m.thickness(mode, ty.name())?;
+    let pts = points(ty, mode, x, &rule(f, ty), t)?;
+    let dofs = dof_list(ty, mode);
+    let nd = dofs.len();
+    let mut k = vec![0.0; nd * nd];
+    for p in &pts {
+        let b = bmat(mode, p);
+        // DB, then accumulate B'(DB) w.
+        let db: Vec<Vec<f64>> = d
+            .iter()
+            .map(|row| (0..nd).map(|c| row.iter().zip(&b).map(|(dv, br)| dv * br[c]).sum()).collect())
+            .collect();
+        for r in 0..nd {
+            for c in 0..nd {
+                let s: f64 = (0..b.len()).map(|q| b[q][r] * db[q][c]).sum();
+                k[r * nd + c] += s * p.w;
+            }
+        }
+    }
+    Ok(ElemMatrix { dofs, k })
+}
+
+/// Consistent mass ρ∫NᵢNⱼ, or its HRZ lumping (diagonal scaled to keep the
+/// total mass, which stays positive for quadratic elements where row sums
+/// would give zero or negative corner masses).
+pub fn mass(ty: ElemType, mode: Mode, x: &[[f64; 3]], m: &Material, lumped: bool) -> Result<ElemMatrix, FemError> {
+    let rho = m.density(ty.name())?;
+    let t = m.thickness(mode, ty.name())?;
+    let pts = points(ty, mode, x, &mass_rule(ty), t)?;
+    let nn = ty.nodes();
+    let mut mn = vec![0.0; nn * nn];
+    for p in &pts {
+        for i in 0..nn {
+            for j in 0..nn {
+                mn[i * nn + j] += rho * p.n[i] * p.n[j] * p.w;
+            }
+        }
+    }
+    if lumped {
+        let total: f64 = mn.iter().sum();
+        let diag: f64 = (0..nn).map(|i| mn[i * nn + i]).sum();
+        for i in 0..nn {
+            for j in 0..nn {
+                mn[i * nn + j] = if i == j { mn[i * nn + i] * total / diag } else { 0.0 };
+            }
+        }
+    }
+    let nc = dofs(mode).len();
+    let list = dof_list(ty, mode);
+    let nd = list.len();
+    let mut k = vec![0.0; nd * nd];
+    for i in 0..nn {
+        for j in 0..nn {
+            for c in 0..nc {
+                k[(i * nc + c) * nd + j * nc + c] = mn[i * nn + j];
+            }
+        }
+    }
+    Ok(ElemMatrix { dofs: list, k })
+}
+
+/// Strains (`stress = false`) or stresses at the integration points.
+pub fn field(
+    f: Formulation,
+    ty: ElemType,
+    mode: Mode,
+    x: &[[f64; 3]],
+    m: &Material,
+    u: &[f64],
+    stress: bool,
+) -> Result<GaussField, FemError> {
+    let nd = ty.nodes() * dofs(mode).len();
+    if u.len() != nd {
+        return Err(FemError::WrongDofCount { elem: ty.name(), expected: nd, got: u.len() });
+    }
+    let pts = points(ty, mode, x, &rule(f, ty), 1.0)?;
+    let d = if stress || mode == Mode::PlanCont { Some(elasticity(mode, m, ty.name())?) } else { None };
+    let mut values = Vec::with_capacity(pts.len());
+    for p in &pts {
+        let b = bmat(mode, p);
+        let mut eps: Vec<f64> = b.iter().map(|row| row.iter().zip(u).map(|(a, b)| a * b).sum()).collect();
+        if mode == Mode::PlanCont && !stress {
+            // Plane stress: the out-of-plane strain follows from σzz = 0.
+            let nu = m.poisson(ty.name())?;
+            eps[2] = -nu / (1.0 - nu) * (eps[0] + eps[1]);
+        }
+        values.push(match (&d, stress) {
+            (Some(d), true) => d.iter().map(|row| row.iter().zip(&eps).map(|(a, b)| a * b).sum()).collect(),
+            _ => eps,
+        });
+    }
+    let comps = if stress { stress_comps(mode) } else { strain_comps(mode) };
+    Ok(GaussField { comps, values })
+}
