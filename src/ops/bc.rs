@@ -1,0 +1,212 @@
+//! Conditions: BLOQ, RELA, DEPI. Each condition is a row `Σ c·u ⋈ d`
+//! carried by its own multiplier node (`LX`), as in Cast3M; the limit `d`
+//! comes with the right-hand side as the `FLX` of that node (DEPI).
+
+use super::mesh::{opt_geo, req_geo};
+use super::{dofs, Args, OpDef, PointId};
+use crate::error::Result;
+use crate::eval::Interp;
+use crate::fem::mesh::Mesh;
+use crate::solve::Kind;
+use crate::value::rigidity::{CondRow, Subtype};
+use crate::value::{Chpoint, Nature, Rigidite, Value};
+use std::rc::Rc;
+
+pub(crate) const OPS: &[OpDef] = &[
+    OpDef { name: "BLOQ", signature: "BLOQ ('MINI'|'MAXI') (comps|LISTMOTS|'DEPL'|'ROTA'|'DIRECTION' VEC|'RADIAL' P1|'ORTHO' P1) GEO", doc: "Block unknowns of a point or mesh: one condition per node and component (MINI: u >= d, MAXI: u <= d).", example: "cl = bloq 'UX' 'UY' p1 ;", f: bloq },
+    OpDef { name: "RELA", signature: "RELA ('MINI'|'MAXI') (c1) comp1 GEO1 (+|-) (c2) comp2 GEO2 … | RELA ('MINI'|'MAXI') CHPOINT", doc: "Linear relations between unknowns, node by node (MINI: >= d, MAXI: <= d).", example: "r = rela 'MINI' 1. 'UX' pb - 1. 'UX' pa ;", f: rela },
+    OpDef { name: "DEPI", signature: "DEPI RIGIDITE (FLOT|CHPOINT)", doc: "Imposed values (limits) of conditions, as the FLX field to add to the right-hand side.", example: "d = depi cl 0.3 ;", f: depi },
+];
+
+fn kind_keyword(a: &mut Args) -> Kind {
+    match a.keyword(&["MINI", "MAXI"]) {
+        Some("MINI") => Kind::Mini,
+        Some("MAXI") => Kind::Maxi,
+        _ => Kind::Equal,
+    }
+}
+
+/// A new multiplier node at the position of a physical node (Cast3M puts
+/// the LX node on the node it blocks).
+fn mult_node(it: &mut Interp, at: usize) -> usize {
+    let x = it.nodes.get(at);
+    let d = it.nodes.density[at];
+    it.nodes.push(x, d)
+}
+
+enum Direction {
+    Comps(Vec<String>),
+    Vector([f64; 3]),
+    Radial([f64; 3], bool),
+}
+
+fn bloq(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let kind = kind_keyword(a);
+    let mut comps: Vec<String> = Vec::new();
+    let mut dir: Option<Direction> = None;
+    let mut geo: Option<Mesh> = None;
+    loop {
+        if let Some(k) = a.keyword(&["DEPL", "ROTA", "DIRECTION", "RADIAL", "ORTHO", "FROT"]) {
+            match k {
+                "DEPL" => comps.extend(dofs::translations(it).iter().map(|s| s.to_string())),
+                "ROTA" => comps.extend(dofs::rotations(it).iter().map(|s| s.to_string())),
+                "DIRECTION" => {
+                    let v = a.req::<PointId>()?;
+                    dir = Some(Direction::Vector(it.nodes.get(v.0)));
+                }
+                "RADIAL" | "ORTHO" => {
+                    let p = a.req::<PointId>()?;
+                    dir = Some(Direction::Radial(it.nodes.get(p.0), k == "ORTHO"));
+                }
+                _ => return Err(a.err("friction conditions ('FROT') are not supported")),
+            }
+            continue;
+        }
+        if let Some(l) = a.opt_right::<Rc<Vec<String>>>() {
+            comps.extend(l.iter().cloned());
+            continue;
+        }
+        if geo.is_none() {
+            if let Some(g) = opt_geo(a) {
+                geo = Some(g);
+                continue;
+            }
+        }
+        match a.word_not_operator() {
+            Some(w) => comps.push(w),
+            None => break,
+        }
+    }
+    let geo = geo.ok_or_else(|| a.missing("POINT or MAILLAGE"))?;
+    let dir = match dir {
+        Some(d) => d,
+        None if comps.is_empty() => return Err(a.missing("components to block")),
+        None => Direction::Comps(comps),
+    };
+    let mut rig = Rigidite::new(Subtype::Blocage);
+    for n in geo.node_list() {
+        match &dir {
+            Direction::Comps(cs) => {
+                for c in cs {
+                    let m = mult_node(it, n);
+                    rig.conds.push(CondRow { mult_node: m, terms: vec![(n, c.clone(), 1.0)], kind });
+                }
+            }
+            Direction::Vector(v) => {
+                let terms = direction_terms(it, n, *v).map_err(|e| a.err(e))?;
+                let m = mult_node(it, n);
+                rig.conds.push(CondRow { mult_node: m, terms, kind });
+            }
+            Direction::Radial(c, ortho) => {
+                let x = it.nodes.get(n);
+                let mut v = [x[0] - c[0], x[1] - c[1], x[2] - c[2]];
+                if *ortho {
+                    v = [-v[1], v[0], 0.0];
+                }
+                let terms = direction_terms(it, n, v).map_err(|e| a.err(format!("node {}: {}", n + 1, e)))?;
+                let m = mult_node(it, n);
+                rig.conds.push(CondRow { mult_node: m, terms, kind });
+            }
+        }
+    }
+    Ok(vec![Value::Rigi(Rc::new(rig))])
+}
+
+/// `n·u` over the translations of the mode, with n normalised.
+fn direction_terms(it: &Interp, node: usize, v: [f64; 3]) -> std::result::Result<Vec<(usize, String, f64)>, String> {
+    let t = dofs::translations(it);
+    let norm = v[..t.len()].iter().map(|x| x * x).sum::<f64>().sqrt();
+    if norm == 0.0 {
+        return Err("the direction is a zero vector".into());
+    }
+    Ok(t.iter()
+        .enumerate()
+        .filter(|(k, _)| v[*k] != 0.0)
+        .map(|(k, c)| (node, c.to_string(), v[k] / norm))
+        .collect())
+}
+
+fn rela(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let kind = kind_keyword(a);
+    if let Some(ch) = a.opt::<Rc<Chpoint>>() {
+        if a.keyword(&["DUAL"]).is_some() {
+            return Err(a.err("non-associated relations ('DUAL') are not supported yet"));
+        }
+        let terms: Vec<(usize, String, f64)> = ch.entries().map(|(n, c, v)| (n, c.to_string(), v)).collect();
+        let first = terms.first().map(|t| t.0).ok_or_else(|| a.err("the field is empty"))?;
+        let m = mult_node(it, first);
+        let mut rig = Rigidite::new(Subtype::Blocage);
+        rig.conds.push(CondRow { mult_node: m, terms, kind });
+        return Ok(vec![Value::Rigi(Rc::new(rig))]);
+    }
+    // Terms: (sign) (coef) comp geo, repeated.
+    let mut terms: Vec<(f64, Vec<(String, f64)>, Vec<usize>)> = Vec::new();
+    loop {
+        let sign = a.sign();
+        if sign.is_none() && !terms.is_empty() {
+            break;
+        }
+        let sign = sign.unwrap_or(1.0);
+        let coef = a.opt_num_right().unwrap_or(1.0) * sign;
+        let comps: Vec<(String, f64)> = if let Some(k) = a.keyword(&["DEPL", "ROTA"]) {
+            a.req_keyword(&["DIRECTION"])?;
+            let v = a.req::<PointId>()?;
+            let names = if k == "DEPL" { dofs::translations(it) } else { dofs::rotations(it) };
+            let x = it.nodes.get(v.0);
+            let norm = x[..names.len()].iter().map(|c| c * c).sum::<f64>().sqrt().max(f64::MIN_POSITIVE);
+            names.iter().enumerate().map(|(i, c)| (c.to_string(), x[i] / norm)).collect()
+        } else {
+            vec![(a.word_not_operator().ok_or_else(|| a.missing("a component name"))?, 1.0)]
+        };
+        let geo = req_geo(a)?;
+        terms.push((coef, comps, geo.node_list()));
+    }
+    let n = terms.iter().map(|t| t.2.len()).max().unwrap_or(0);
+    if let Some(t) = terms.iter().find(|t| t.2.len() != n && t.2.len() != 1) {
+        return Err(a.err(format!(
+            "the meshes of a relation must have the same number of nodes or a single node ({} and {})",
+            n,
+            t.2.len()
+        )));
+    }
+    let mut rig = Rigidite::new(Subtype::Blocage);
+    for k in 0..n {
+        let mut row: Vec<(usize, String, f64)> = Vec::new();
+        for (coef, comps, nodes) in &terms {
+            let node = if nodes.len() == 1 { nodes[0] } else { nodes[k] };
+            for (c, w) in comps {
+                if w.abs() > 0.0 {
+                    row.push((node, c.clone(), coef * w));
+                }
+            }
+        }
+        let m = mult_node(it, row[0].0);
+        rig.conds.push(CondRow { mult_node: m, terms: row, kind });
+    }
+    Ok(vec![Value::Rigi(Rc::new(rig))])
+}
+
+fn depi(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let rig = a.req::<Rc<Rigidite>>()?;
+    let mut out = Chpoint::new(Nature::Discret);
+    if let Some(ch) = a.opt::<Rc<Chpoint>>() {
+        for c in &rig.conds {
+            if let [(node, comp, coef)] = c.terms.as_slice() {
+                if let Some(v) = ch.get(*node, comp) {
+                    out.add(c.mult_node, "FLX", v * coef, true);
+                }
+            } else {
+                return Err(a.err("per-node values apply to single-unknown conditions (BLOQ); give a number for relations"));
+            }
+        }
+    } else {
+        let v = a.opt_num().unwrap_or(0.0);
+        for c in &rig.conds {
+            out.add(c.mult_node, "FLX", v, true);
+        }
+    }
+    if rig.conds.is_empty() {
+        return Err(a.err("this RIGIDITE holds no condition"));
+    }
+    Ok(vec![Value::Chpo(Rc::new(out))])
+}

@@ -1,0 +1,92 @@
+//! Unknown names per analysis mode and their duals (UX ↔ FX, LX ↔ FLX).
+
+use crate::eval::Interp;
+use crate::fem::element::Mode;
+
+/// The fem analysis mode of the current OPTI MODE.
+pub fn fem_mode(it: &Interp) -> Option<Mode> {
+    let m = it.opts.mode.as_str();
+    Some(match m {
+        "PLAN CONT" => Mode::PlanCont,
+        "PLAN DEFO" => Mode::PlanDefo,
+        "AXIS" => Mode::Axis,
+        "TRID" => Mode::Trid,
+        _ if it.opts.dime == 3 => Mode::Trid,
+        _ => return None,
+    })
+}
+
+/// Translations of the current mode (BLOQ DEPL, FORC vectors).
+pub fn translations(it: &Interp) -> &'static [&'static str] {
+    let m = it.opts.mode.as_str();
+    if m.starts_with("AXIS") {
+        &["UR", "UZ"]
+    } else if m.starts_with("FOUR") {
+        &["UR", "UZ", "UT"]
+    } else if it.opts.dime == 3 || m == "TRID" {
+        &["UX", "UY", "UZ"]
+    } else if it.opts.dime == 1 {
+        &["UX"]
+    } else {
+        &["UX", "UY"]
+    }
+}
+
+/// Rotations of the current mode (BLOQ ROTA).
+pub fn rotations(it: &Interp) -> &'static [&'static str] {
+    let m = it.opts.mode.as_str();
+    if m.starts_with("AXIS") || m.starts_with("FOUR") {
+        &["RT"]
+    } else if it.opts.dime == 3 || m == "TRID" {
+        &["RX", "RY", "RZ"]
+    } else {
+        &["RZ"]
+    }
+}
+
+/// Force and moment names of the current mode (FORC/MOME with a vector).
+pub fn forces(it: &Interp) -> &'static [&'static str] {
+    let m = it.opts.mode.as_str();
+    if m.starts_with("AXIS") {
+        &["FR", "FZ"]
+    } else if it.opts.dime == 3 || m == "TRID" {
+        &["FX", "FY", "FZ"]
+    } else {
+        &["FX", "FY"]
+    }
+}
+
+pub fn moments(it: &Interp) -> &'static [&'static str] {
+    if it.opts.dime == 3 {
+        &["MX", "MY", "MZ"]
+    } else {
+        &["MZ"]
+    }
+}
+
+const PAIRS: &[(&str, &str)] = &[
+    ("UX", "FX"),
+    ("UY", "FY"),
+    ("UZ", "FZ"),
+    ("RX", "MX"),
+    ("RY", "MY"),
+    ("RZ", "MZ"),
+    ("UR", "FR"),
+    ("UT", "FT"),
+    ("RT", "MT"),
+    ("LX", "FLX"),
+    ("T", "Q"),
+    ("TH", "QH"),
+    ("P", "FP"),
+    ("PI", "FPI"),
+];
+
+/// The dual (force) name of a primal unknown.
+pub fn dual_of(primal: &str) -> String {
+    PAIRS.iter().find(|(p, _)| *p == primal).map_or_else(|| format!("F{}", primal), |(_, d)| d.to_string())
+}
+
+/// The primal unknown of a dual name, if it is a known pair.
+pub fn primal_of(dual: &str) -> Option<&'static str> {
+    PAIRS.iter().find(|(_, d)| *d == dual).map(|(p, _)| *p)
+}
