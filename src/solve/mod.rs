@@ -33,6 +33,8 @@ pub mod unilateral;
 mod status_testkit;
 #[cfg(test)]
 mod status_tests;
+#[cfg(test)]
+mod status_props;
 
 pub use error::SolveError;
 pub use problem::{Condensed, Condition, Kind, Load, Matrix, Problem, Solution};

@@ -5,7 +5,7 @@
 
 use super::ancien::{self, AncienResult};
 use super::dense_ldlt::DenseLdlt;
-use super::status::{self, StatusOptions, StatusResult};
+use super::status::{self, IterRecord, StatusOptions, StatusResult};
 use super::{Condensed, SolveError};
 use faer::linalg::solvers::Solve;
 use faer::Mat;
@@ -173,11 +173,20 @@ pub fn solve(p: &Dense, opts: &StatusOptions) -> Result<Answer, SolveError> {
 }
 
 /// The status iteration's records, whatever the outcome.
-pub fn solve_counting(p: &Dense, opts: &StatusOptions) -> (Result<Answer, SolveError>, usize) {
+pub fn solve_recording(
+    p: &Dense,
+    opts: &StatusOptions,
+) -> (Result<Answer, SolveError>, Vec<IterRecord>) {
     let b = build(p);
-    let mut count = 0;
-    let r = status::run(&b.c, opts, &mut |_| count += 1);
-    (r.map(|r| recover(p, &b, &r)), count)
+    let mut recs = Vec::new();
+    let r = status::run(&b.c, opts, &mut |r| recs.push(r.clone()));
+    (r.map(|r| recover(p, &b, &r)), recs)
+}
+
+/// The number of solves, whatever the outcome.
+pub fn solve_counting(p: &Dense, opts: &StatusOptions) -> (Result<Answer, SolveError>, usize) {
+    let (r, recs) = solve_recording(p, opts);
+    (r, recs.len())
 }
 
 /// The old method with K_c = K (every dof in P).
