@@ -26,21 +26,35 @@ pub struct AncienResult {
     pub records: Vec<IterRecord>,
 }
 
-/// Runs the old method. `kc` (n_P × n_P, symmetric) and `fc` are the
-/// stiffness and load condensed onto P; `rows` are the unilateral rows over
-/// `0..n_P`, `sense` their s_i (+1 MINI, −1 MAXI) and `d` their limits.
+/// The data of the old method, condensed onto the unknowns P.
+#[derive(Debug, Clone, Copy)]
+pub struct AncienProblem<'a> {
+    /// K_c (n_P × n_P, symmetric).
+    pub kc: &'a Mat<f64>,
+    /// F_c (n_P).
+    pub fc: &'a [f64],
+    /// The unilateral rows over `0..n_P`.
+    pub rows: &'a [Vec<(usize, f64)>],
+    /// s_i: +1 MINI, −1 MAXI.
+    pub sense: &'a [f64],
+    /// The limits d_i.
+    pub d: &'a [f64],
+    /// k_i of the §2.2 scaling, taken from the stiffness before
+    /// condensation, as Cast3M does. `None` takes it from K_c, which is
+    /// wrong when K_c is (nearly) zero, e.g. a body held only by its
+    /// unilateral supports condensed onto the supported dofs.
+    pub k_ref: Option<&'a [f64]>,
+}
+
+/// Runs the old method.
 pub fn run(
-    kc: &Mat<f64>,
-    fc: &[f64],
-    rows: &[Vec<(usize, f64)>],
-    sense: &[f64],
-    d: &[f64],
+    p: &AncienProblem,
     opts: &StatusOptions,
     on_iter: &mut dyn FnMut(&IterRecord),
 ) -> Result<AncienResult, SolveError> {
-    let mut old = Old::new(kc, fc, rows, sense, d)?;
-    let (_, active, records) = iterate(&mut old, sense, rows, d, opts, on_iter)?;
-    let n = fc.len();
+    let mut old = Old::new(p)?;
+    let (_, active, records) = iterate(&mut old, p.sense, p.rows, p.d, opts, on_iter)?;
+    let (n, rows) = (p.fc.len(), p.rows);
     let (u, lambda) = if rows.is_empty() {
         // No condition: plain solve (K_c must then be regular).
         old.active = Vec::new();
@@ -81,13 +95,8 @@ struct Old<'a> {
 }
 
 impl<'a> Old<'a> {
-    fn new(
-        kc: &Mat<f64>,
-        fc: &'a [f64],
-        rows: &[Vec<(usize, f64)>],
-        sense: &'a [f64],
-        d: &'a [f64],
-    ) -> Result<Self, SolveError> {
+    fn new(p: &AncienProblem<'a>) -> Result<Self, SolveError> {
+        let (kc, fc, rows, sense, d) = (p.kc, p.fc, p.rows, p.sense, p.d);
         let (n, m) = (fc.len(), rows.len());
         let bad = |what: &str| Err(SolveError::Other(format!("old method data: {what}")));
         if kc.nrows() != n || kc.ncols() != n || sense.len() != m || d.len() != m {
@@ -109,9 +118,16 @@ impl<'a> Old<'a> {
         if sense.iter().any(|&s| s != 1.0 && s != -1.0) {
             return bad("sense must be ±1");
         }
+        if p.k_ref
+            .is_some_and(|k| k.len() != m || k.iter().any(|&v| !(v.is_finite() && v > 0.0)))
+        {
+            return bad("k_ref must hold one positive value per condition");
+        }
         let kmax = (0..n)
             .flat_map(|j| kc.col_as_slice(j).to_vec())
             .fold(0.0_f64, |a, v| a.max(v.abs()));
+        // The stiffness reference of the singularity tests.
+        let kmax = p.k_ref.unwrap_or(&[]).iter().fold(kmax, |a, &v| a.max(v));
         // §2.2 scaling, as Cast3M: k_i from the stiffness rows of the dofs
         // of condition i, κ = 1.5 k, σ = κ/ĉ, α = 2κ.
         let (mut sigma, mut alpha, mut chat) = (vec![0.0; m], vec![0.0; m], vec![0.0; m]);
@@ -120,8 +136,11 @@ impl<'a> Old<'a> {
                 .iter()
                 .flat_map(|&(j, _)| kc.col_as_slice(j).to_vec())
                 .fold(0.0_f64, |a, v| a.max(v.abs()));
-            if !(k > 1e-12 * kmax) {
+            if k.is_nan() || k <= 1e-12 * kmax {
                 k = if kmax > 0.0 { kmax } else { 1.0 };
+            }
+            if let Some(kr) = p.k_ref {
+                k = kr[i];
             }
             chat[i] = r.iter().fold(1.0_f64, |a, &(_, v)| a.max(v.abs()));
             sigma[i] = 1.5 * k / chat[i];
@@ -179,7 +198,10 @@ impl<'a> Old<'a> {
             for i in 0..n {
                 mat[(a + i, a + j)] = self.kc[(i, j)];
             }
-            scale[a + j] = self.kc[(j, j)].abs();
+            // A u pivot must also stand out of the round-off of the whole
+            // stiffness: K_c of a body held only by unilateral supports is
+            // round-off, and so would be its pivots.
+            scale[a + j] = self.kc[(j, j)].abs().max(self.kmax);
         }
         for (p, &i) in list.iter().enumerate() {
             let (l1, l2, al, s) = (p, n + a + p, self.alpha[i], self.sigma[i]);
@@ -229,7 +251,7 @@ impl<'a> Old<'a> {
         y.iter_mut().zip(&r).for_each(|(a, b)| *a += b);
         let (_, num, den) = resid(&y);
         let rel = if den > 0.0 { num / den } else { num };
-        if !(rel <= 1e-8) || y.iter().any(|v| !v.is_finite()) {
+        if rel.is_nan() || rel > 1e-8 || y.iter().any(|v| !v.is_finite()) {
             return Err(SolveError::Inaccurate { residual: rel });
         }
         Ok(y)
@@ -265,10 +287,9 @@ impl Backend for Old<'_> {
         self.lambda = vec![0.0; m];
         // x in the units of the condensed method: λ/(2σ) when active,
         // σ(d − c·u)/(2α) (the scaled gap of §2.4) when inactive.
-        let mut x = vec![0.0; m];
-        for i in 0..m {
-            x[i] = self.sigma[i] * (self.d[i] - self.row_dot(i, &self.u)) / (2.0 * self.alpha[i]);
-        }
+        let mut x: Vec<f64> = (0..m)
+            .map(|i| self.sigma[i] * (self.d[i] - self.row_dot(i, &self.u)) / (2.0 * self.alpha[i]))
+            .collect();
         for (p, &i) in self.list.iter().enumerate() {
             x[i] = 0.5 * (y[p] + y[n + a + p]);
             self.lambda[i] = self.sigma[i] * (y[p] + y[n + a + p]);
@@ -340,5 +361,135 @@ impl Backend for Old<'_> {
             .collect();
         out.push(list[b]);
         out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::solve::status_testkit::{beam, solve, Dense, MINI};
+
+    /// Guyan condensation onto `keep` (§5 step 1): K_c = K_PP − K_PR K_RR⁻¹ K_RP.
+    fn guyan(k: &Mat<f64>, f: &[f64], keep: &[usize]) -> (Mat<f64>, Vec<f64>) {
+        let n = f.len();
+        let rest: Vec<usize> = (0..n).filter(|j| !keep.contains(j)).collect();
+        let krr = Mat::<f64>::from_fn(rest.len(), rest.len(), |a, b| k[(rest[a], rest[b])]);
+        let fac = DenseLdlt::factor(krr.as_ref());
+        let solve_r = |col: &dyn Fn(usize) -> f64| {
+            let mut y: Vec<f64> = (0..rest.len()).map(col).collect();
+            fac.solve_in_place(&mut y);
+            y
+        };
+        let kc = Mat::<f64>::from_fn(keep.len(), keep.len(), |a, b| {
+            let y = solve_r(&|r| k[(rest[r], keep[b])]);
+            k[(keep[a], keep[b])]
+                - (0..rest.len())
+                    .map(|r| k[(keep[a], rest[r])] * y[r])
+                    .sum::<f64>()
+        });
+        let y = solve_r(&|r| f[rest[r]]);
+        let fc = keep
+            .iter()
+            .map(|&p| f[p] - (0..rest.len()).map(|r| k[(p, rest[r])] * y[r]).sum::<f64>())
+            .collect();
+        (kc, fc)
+    }
+
+    /// Cases (c) and (d) with the stiffness condensed onto the supported
+    /// dofs only, as Cast3M's SUPER does: same answers as the full solve.
+    #[test]
+    fn old_method_on_guyan_condensed_beams() {
+        let cases: [(&[f64], usize, &[usize]); 2] = [
+            (&[0.0, 0.5, 1.0, 2.0], 2, &[0, 4, 6]),
+            (&[0.0, 1.0, 4.0], 2, &[0, 4]),
+        ];
+        for (x, loaded, supports) in cases {
+            let n = 2 * x.len();
+            let mut f = vec![0.0; n];
+            f[loaded] = -1.0;
+            let mut p = Dense::new(beam(x, 1.0), f.clone());
+            for &s in supports {
+                p = p.cond(&[(s, 1.0)], MINI, 0.0);
+            }
+            let full = solve(&p, &StatusOptions::default()).unwrap();
+            let (kc, fc) = guyan(&p.k, &f, supports);
+            let rows: Vec<Vec<(usize, f64)>> =
+                (0..supports.len()).map(|q| vec![(q, 1.0)]).collect();
+            let sense = vec![1.0; supports.len()];
+            let d = vec![0.0; supports.len()];
+            // k_i from the full stiffness (§2.2), as the caller would.
+            let k_ref: Vec<f64> = supports
+                .iter()
+                .map(|&s| (0..n).fold(0.0_f64, |a, l| a.max(p.k[(s, l)].abs())))
+                .collect();
+            let pb = AncienProblem {
+                kc: &kc,
+                fc: &fc,
+                rows: &rows,
+                sense: &sense,
+                d: &d,
+                k_ref: Some(&k_ref),
+            };
+            let old = run(&pb, &StatusOptions::default(), &mut |_| {}).unwrap();
+            for (q, &s) in supports.iter().enumerate() {
+                assert!(
+                    (old.u[q] - full.u[s]).abs() < 1e-10,
+                    "u at dof {s}: {:?} vs {:?} {:?}",
+                    old.u,
+                    full.u,
+                    old.records
+                );
+                assert!((old.lambda[q] - full.lambda[q]).abs() < 1e-10, "λ {q}");
+            }
+            assert_eq!(old.active, full.active);
+        }
+    }
+
+    #[test]
+    fn singular_warm_start_falls_back_to_cold() {
+        // Case (d) started from all inactive: the beam would be free.
+        let mut f = vec![0.0; 6];
+        f[2] = -1.0;
+        let p = Dense::new(beam(&[0.0, 1.0, 4.0], 1.0), f)
+            .cond(&[(0, 1.0)], MINI, 0.0)
+            .cond(&[(4, 1.0)], MINI, 0.0);
+        let o = StatusOptions {
+            start: Some(vec![false, false]),
+            ..Default::default()
+        };
+        let a = solve(&p, &o).unwrap();
+        assert!((a.lambda[0] + 0.75).abs() < 1e-10 && (a.lambda[1] + 0.25).abs() < 1e-10);
+        assert_eq!(a.iterations, 1);
+        let pb = AncienProblem {
+            kc: &p.k,
+            fc: &p.f,
+            rows: &p.rows,
+            sense: &p.sense,
+            d: &p.d,
+            k_ref: None,
+        };
+        let b = run(&pb, &o, &mut |_| {}).unwrap();
+        assert!((b.lambda[0] + 0.75).abs() < 1e-10);
+    }
+
+    #[test]
+    fn no_condition_is_a_plain_solve() {
+        let k = Mat::<f64>::from_fn(1, 1, |_, _| 4.0);
+        let pb = AncienProblem {
+            kc: &k,
+            fc: &[2.0],
+            rows: &[],
+            sense: &[],
+            d: &[],
+            k_ref: None,
+        };
+        let r = run(&pb, &StatusOptions::default(), &mut |_| {}).unwrap();
+        assert_eq!(r.u, vec![0.5]);
+        let pb = AncienProblem {
+            fc: &[2.0, 1.0],
+            ..pb
+        };
+        let bad = run(&pb, &StatusOptions::default(), &mut |_| {});
+        assert!(matches!(bad, Err(SolveError::Other(_))));
     }
 }

@@ -473,8 +473,8 @@ fn single_release(
     // Inactive conditions the mode moves towards, with the ratio test:
     // the first support reached along the mode.
     let mut best: Option<(usize, f64)> = None;
-    for j in 0..m {
-        if status[j] || ctx.groups.fixed_inactive[j] || mode.motion[j] >= -thr {
+    for (j, &on) in status.iter().enumerate() {
+        if on || ctx.groups.fixed_inactive[j] || mode.motion[j] >= -thr {
             continue;
         }
         let gap = (-ctx.v[j]).max(0.0);

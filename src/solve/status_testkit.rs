@@ -86,7 +86,7 @@ pub fn build(p: &Dense) -> Built {
             .iter()
             .flat_map(|&(j, _)| (0..n).map(move |l| (j, l)))
             .fold(0.0_f64, |a, (j, l)| a.max(p.k[(j, l)].abs()));
-        if !(k > 1e-12 * kmax) {
+        if k.is_nan() || k <= 1e-12 * kmax {
             k = if kmax > 0.0 { kmax } else { 1.0 };
         }
         let chat = r.iter().fold(1.0_f64, |a, &(_, v)| a.max(v.abs()));
@@ -112,8 +112,8 @@ pub fn build(p: &Dense) -> Built {
         h.solve_in_place(&mut x[i]);
     }
     let mut rhs = p.f.clone();
-    for i in 0..m {
-        for &(j, v) in &p.rows[i] {
+    for (i, row) in p.rows.iter().enumerate() {
+        for &(j, v) in row {
             rhs[j] += v * w[i] * p.d[i];
         }
     }
@@ -165,6 +165,11 @@ pub fn recover(p: &Dense, b: &Built, r: &StatusResult) -> Answer {
     }
 }
 
+/// One spring k to the ground on one dof, loaded by f.
+pub fn spring(k: f64, f: f64) -> Dense {
+    Dense::new(Mat::from_fn(1, 1, |_, _| k), vec![f])
+}
+
 /// Condenses, runs the status iteration and recovers.
 pub fn solve(p: &Dense, opts: &StatusOptions) -> Result<Answer, SolveError> {
     let b = build(p);
@@ -191,7 +196,15 @@ pub fn solve_counting(p: &Dense, opts: &StatusOptions) -> (Result<Answer, SolveE
 
 /// The old method with K_c = K (every dof in P).
 pub fn solve_ancien(p: &Dense, opts: &StatusOptions) -> Result<AncienResult, SolveError> {
-    ancien::run(&p.k, &p.f, &p.rows, &p.sense, &p.d, opts, &mut |_| {})
+    let pb = ancien::AncienProblem {
+        kc: &p.k,
+        fc: &p.f,
+        rows: &p.rows,
+        sense: &p.sense,
+        d: &p.d,
+        k_ref: None,
+    };
+    ancien::run(&pb, opts, &mut |_| {})
 }
 
 /// 2D Euler–Bernoulli beam over nodes at `x`, dofs (v, θ) per node.

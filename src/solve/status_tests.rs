@@ -38,9 +38,6 @@ fn both(p: &Dense, o: &StatusOptions, tol: f64) -> Answer {
     a
 }
 
-fn spring(k: f64, f: f64) -> Dense {
-    Dense::new(Mat::from_fn(1, 1, |_, _| k), vec![f])
-}
 
 #[test]
 fn a_spring_against_a_stop() {
