@@ -115,6 +115,21 @@ pub(crate) trait Backend {
 }
 
 /// Runs the status iteration on the condensed problem.
+///
+/// Calls `on_iter` once per solve of T x = h (also for the solve that
+/// precedes an error). Errors:
+/// * `Conflicting`: proportional rows with crossed limits (pre-pass, before
+///   any solve);
+/// * `Infeasible`: the load drives a rigid mode away from every support;
+///   `conditions` holds the condition whose release frees the mode, then
+///   the other conditions the mode lifts off; `work` is F·u_r for the mode
+///   normalised to a unit motion of that condition's row (c_i/ĉ_i)·u_r = ±1;
+/// * `DependentConditions`: an activation makes the active rows dependent
+///   (other than proportional pairs), with the rows involved;
+/// * `NoConvergence`: the cap (default max(100, 20·m)) or a cycle that the
+///   least-index and relaxed-tolerance modes could not break;
+/// * `Inaccurate`: the residual of T x = h stays large after refinement;
+/// * `Other`: inconsistent input (sizes, non-finite values, α ≤ 0, s ≠ ±1).
 pub fn run(
     c: &Condensed,
     opts: &StatusOptions,
