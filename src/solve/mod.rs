@@ -34,6 +34,8 @@ mod status_testkit;
 #[cfg(test)]
 mod status_tests;
 #[cfg(test)]
+mod status_loop_tests;
+#[cfg(test)]
 mod status_props;
 
 pub use error::SolveError;
