@@ -15,15 +15,28 @@
 //! * [`status`]: the status (active-set) iteration on the condensed operator.
 //! * [`unilateral`]: the UNIL driver choosing among the methods.
 
+pub mod ancien;
 pub mod condense;
+pub mod condensed_op;
+pub mod dense_ldlt;
 pub mod direct;
 pub mod error;
+pub mod groups;
 pub mod lagrange;
 pub mod linear;
 pub mod ordering;
 pub mod problem;
 pub mod status;
 pub mod unilateral;
+
+#[cfg(test)]
+mod status_testkit;
+#[cfg(test)]
+mod status_tests;
+#[cfg(test)]
+mod status_loop_tests;
+#[cfg(test)]
+mod status_props;
 
 pub use error::SolveError;
 pub use problem::{Condensed, Condition, Kind, Load, Matrix, Problem, Solution};

@@ -1,0 +1,495 @@
+//! The paper's *old* method (unilateral.md §5), for comparison: the status
+//! iteration on the stiffness condensed onto the primal unknowns P of the
+//! unilateral rows, with the doubled multipliers of the active conditions
+//! assembled and the whole small system refactored at every status.
+//!
+//! It shares the decision logic of [`super::status`] (same rule, same
+//! tolerances, same group pre-pass), so both methods take the same
+//! decisions up to round-off. Its linear algebra differs: a status that
+//! frees a rigid mode of K_c shows up as a non-positive pivot in the
+//! displacement block, and the freed mode is computed by imposing a unit
+//! motion on the released row.
+
+use super::dense_ldlt::DenseLdlt;
+use super::status::{iterate, Backend, IterRecord, RigidMode, StatusOptions, EPS_PIV, EPS_SING};
+use super::SolveError;
+use faer::Mat;
+
+/// The answer of the old method.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AncienResult {
+    /// Displacements of the condensed unknowns P.
+    pub u: Vec<f64>,
+    /// Physical multiplier of every condition (0 when inactive).
+    pub lambda: Vec<f64>,
+    pub active: Vec<bool>,
+    pub records: Vec<IterRecord>,
+}
+
+/// The data of the old method, condensed onto the unknowns P.
+#[derive(Debug, Clone, Copy)]
+pub struct AncienProblem<'a> {
+    /// K_c (n_P × n_P, symmetric).
+    pub kc: &'a Mat<f64>,
+    /// F_c (n_P).
+    pub fc: &'a [f64],
+    /// The unilateral rows over `0..n_P`.
+    pub rows: &'a [Vec<(usize, f64)>],
+    /// s_i: +1 MINI, −1 MAXI.
+    pub sense: &'a [f64],
+    /// The limits d_i.
+    pub d: &'a [f64],
+    /// k_i of the §2.2 scaling, taken from the stiffness before
+    /// condensation, as Cast3M does. `None` takes it from K_c, which is
+    /// wrong when K_c is (nearly) zero, e.g. a body held only by its
+    /// unilateral supports condensed onto the supported dofs.
+    pub k_ref: Option<&'a [f64]>,
+}
+
+/// Runs the old method.
+pub fn run(
+    p: &AncienProblem,
+    opts: &StatusOptions,
+    on_iter: &mut dyn FnMut(&IterRecord),
+) -> Result<AncienResult, SolveError> {
+    let mut old = Old::new(p)?;
+    let (_, active, records) = iterate(&mut old, p.sense, p.rows, p.d, opts, on_iter)?;
+    let (n, rows) = (p.fc.len(), p.rows);
+    let (u, lambda) = if rows.is_empty() {
+        // No condition: plain solve (K_c must then be regular).
+        old.active = Vec::new();
+        old.set_status(&[]).map_err(|_| SolveError::Singular {
+            dofs: (0..n).collect(),
+        })?;
+        old.solve()?;
+        (old.u.clone(), Vec::new())
+    } else {
+        (old.u.clone(), old.lambda.clone())
+    };
+    Ok(AncienResult {
+        u,
+        lambda,
+        active,
+        records,
+    })
+}
+
+struct Old<'a> {
+    kc: Mat<f64>,
+    fc: &'a [f64],
+    rows: Vec<Vec<(usize, f64)>>,
+    sense: &'a [f64],
+    d: &'a [f64],
+    sigma: Vec<f64>,
+    alpha: Vec<f64>,
+    chat: Vec<f64>,
+    kmax: f64,
+    /// Current status, its assembled matrix, factor and active list.
+    active: Vec<bool>,
+    list: Vec<usize>,
+    mat: Mat<f64>,
+    factor: Option<DenseLdlt>,
+    /// Last solution: displacements and physical multipliers.
+    u: Vec<f64>,
+    lambda: Vec<f64>,
+}
+
+impl<'a> Old<'a> {
+    fn new(p: &AncienProblem<'a>) -> Result<Self, SolveError> {
+        let (kc, fc, rows, sense, d) = (p.kc, p.fc, p.rows, p.sense, p.d);
+        let (n, m) = (fc.len(), rows.len());
+        let bad = |what: &str| Err(SolveError::Other(format!("old method data: {what}")));
+        if kc.nrows() != n || kc.ncols() != n || sense.len() != m || d.len() != m {
+            return bad("dimensions differ");
+        }
+        if rows
+            .iter()
+            .flatten()
+            .any(|&(j, v)| j >= n || !v.is_finite())
+        {
+            return bad("row entry out of range or not finite");
+        }
+        let kc = Mat::<f64>::from_fn(n, n, |i, j| 0.5 * (kc[(i, j)] + kc[(j, i)]));
+        if (0..n).any(|j| kc.col_as_slice(j).iter().any(|v| !v.is_finite()))
+            || fc.iter().chain(d).any(|v| !v.is_finite())
+        {
+            return bad("non-finite stiffness, load or limit");
+        }
+        if sense.iter().any(|&s| s != 1.0 && s != -1.0) {
+            return bad("sense must be ±1");
+        }
+        if p.k_ref
+            .is_some_and(|k| k.len() != m || k.iter().any(|&v| !(v.is_finite() && v > 0.0)))
+        {
+            return bad("k_ref must hold one positive value per condition");
+        }
+        let kmax = (0..n)
+            .flat_map(|j| kc.col_as_slice(j).to_vec())
+            .fold(0.0_f64, |a, v| a.max(v.abs()));
+        // The stiffness reference of the singularity tests.
+        let kmax = p.k_ref.unwrap_or(&[]).iter().fold(kmax, |a, &v| a.max(v));
+        // §2.2 scaling, as Cast3M: k_i from the stiffness rows of the dofs
+        // of condition i, κ = 1.5 k, σ = κ/ĉ, α = 2κ.
+        let (mut sigma, mut alpha, mut chat) = (vec![0.0; m], vec![0.0; m], vec![0.0; m]);
+        for (i, r) in rows.iter().enumerate() {
+            let mut k = r
+                .iter()
+                .flat_map(|&(j, _)| kc.col_as_slice(j).to_vec())
+                .fold(0.0_f64, |a, v| a.max(v.abs()));
+            if k.is_nan() || k <= 1e-12 * kmax {
+                k = if kmax > 0.0 { kmax } else { 1.0 };
+            }
+            if let Some(kr) = p.k_ref {
+                k = kr[i];
+            }
+            chat[i] = r.iter().fold(1.0_f64, |a, &(_, v)| a.max(v.abs()));
+            sigma[i] = 1.5 * k / chat[i];
+            alpha[i] = 3.0 * k;
+        }
+        // Duplicate dofs in a row are summed once here.
+        let rows = rows
+            .iter()
+            .map(|r| {
+                let mut out: Vec<(usize, f64)> = Vec::new();
+                for &(j, v) in r {
+                    match out.iter_mut().find(|e| e.0 == j) {
+                        Some(e) => e.1 += v,
+                        None => out.push((j, v)),
+                    }
+                }
+                out
+            })
+            .collect();
+        Ok(Old {
+            kc,
+            fc,
+            rows,
+            sense,
+            d,
+            sigma,
+            alpha,
+            chat,
+            kmax,
+            active: Vec::new(),
+            list: Vec::new(),
+            mat: Mat::zeros(0, 0),
+            factor: None,
+            u: vec![0.0; n],
+            lambda: vec![0.0; m],
+        })
+    }
+
+    fn n(&self) -> usize {
+        self.fc.len()
+    }
+
+    fn row_dot(&self, i: usize, u: &[f64]) -> f64 {
+        self.rows[i].iter().map(|&(j, v)| v * u[j]).sum()
+    }
+
+    /// The doubled system ordered (λ1 of the active rows, u, λ2): λ1 before
+    /// and λ2 after every dof (§2.3), so no pivoting is needed. Returns the
+    /// matrix, the expected pivot signs and the pivot scales.
+    fn assemble(&self, list: &[usize]) -> (Mat<f64>, Vec<bool>, Vec<f64>) {
+        let (n, a) = (self.n(), list.len());
+        let mut mat = Mat::<f64>::zeros(n + 2 * a, n + 2 * a);
+        let mut scale = vec![0.0; n + 2 * a];
+        for j in 0..n {
+            for i in 0..n {
+                mat[(a + i, a + j)] = self.kc[(i, j)];
+            }
+            // A u pivot must also stand out of the round-off of the whole
+            // stiffness: K_c of a body held only by unilateral supports is
+            // round-off, and so would be its pivots.
+            scale[a + j] = self.kc[(j, j)].abs().max(self.kmax);
+        }
+        for (p, &i) in list.iter().enumerate() {
+            let (l1, l2, al, s) = (p, n + a + p, self.alpha[i], self.sigma[i]);
+            mat[(l1, l1)] = -al;
+            mat[(l2, l2)] = -al;
+            mat[(l1, l2)] = al;
+            mat[(l2, l1)] = al;
+            scale[l1] = al;
+            scale[l2] = al;
+            for &(j, c) in &self.rows[i] {
+                for l in [l1, l2] {
+                    mat[(l, a + j)] = s * c;
+                    mat[(a + j, l)] = s * c;
+                }
+                // The u pivot after eliminating λ1 includes the penalty wσ²c².
+                scale[a + j] += s * s * c * c / al;
+            }
+        }
+        let positive = (0..n + 2 * a).map(|k| k >= a && k < a + n).collect();
+        (mat, positive, scale)
+    }
+
+    /// Solves the current system for `rhs`, with one refinement step.
+    fn solve_rhs(&self, rhs: &[f64]) -> Result<Vec<f64>, SolveError> {
+        let Some(f) = &self.factor else {
+            return Err(SolveError::Other(
+                "old method: solve before factorisation".into(),
+            ));
+        };
+        let mut y = rhs.to_vec();
+        f.solve_in_place(&mut y);
+        let resid = |y: &[f64]| -> (Vec<f64>, f64, f64) {
+            let mut r = rhs.to_vec();
+            let mut s: Vec<f64> = rhs.iter().map(|v| v.abs()).collect();
+            for (j, &yj) in y.iter().enumerate() {
+                for (i, mij) in self.mat.col_as_slice(j).iter().enumerate() {
+                    r[i] -= mij * yj;
+                    s[i] += (mij * yj).abs();
+                }
+            }
+            let num = r.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
+            let den = s.iter().fold(0.0_f64, |a, v| a.max(*v));
+            (r, num, den)
+        };
+        let (mut r, _, _) = resid(&y);
+        f.solve_in_place(&mut r);
+        y.iter_mut().zip(&r).for_each(|(a, b)| *a += b);
+        let (_, num, den) = resid(&y);
+        let rel = if den > 0.0 { num / den } else { num };
+        if rel.is_nan() || rel > 1e-8 || y.iter().any(|v| !v.is_finite()) {
+            return Err(SolveError::Inaccurate { residual: rel });
+        }
+        Ok(y)
+    }
+}
+
+impl Backend for Old<'_> {
+    fn set_status(&mut self, active: &[bool]) -> Result<(), usize> {
+        if self.factor.is_some() && active == self.active.as_slice() {
+            return Ok(());
+        }
+        let list: Vec<usize> = (0..active.len()).filter(|&i| active[i]).collect();
+        let (mat, positive, scale) = self.assemble(&list);
+        // The old method refactors the whole small system at every status.
+        let f = DenseLdlt::factor(mat.as_ref());
+        if let Some(k) = f.first_bad_pivot(&positive, &scale, EPS_PIV) {
+            return Err(k);
+        }
+        (self.active, self.list, self.mat, self.factor) = (active.to_vec(), list, mat, Some(f));
+        Ok(())
+    }
+
+    fn solve(&mut self) -> Result<Vec<f64>, SolveError> {
+        let (n, a, m) = (self.n(), self.list.len(), self.rows.len());
+        let mut rhs = vec![0.0; n + 2 * a];
+        rhs[a..a + n].copy_from_slice(self.fc);
+        for (p, &i) in self.list.iter().enumerate() {
+            rhs[p] = self.sigma[i] * self.d[i];
+            rhs[n + a + p] = self.sigma[i] * self.d[i];
+        }
+        let y = self.solve_rhs(&rhs)?;
+        self.u = y[a..a + n].to_vec();
+        self.lambda = vec![0.0; m];
+        // x in the units of the condensed method: λ/(2σ) when active,
+        // σ(d − c·u)/(2α) (the scaled gap of §2.4) when inactive.
+        let mut x: Vec<f64> = (0..m)
+            .map(|i| self.sigma[i] * (self.d[i] - self.row_dot(i, &self.u)) / (2.0 * self.alpha[i]))
+            .collect();
+        for (p, &i) in self.list.iter().enumerate() {
+            x[i] = 0.5 * (y[p] + y[n + a + p]);
+            self.lambda[i] = self.sigma[i] * (y[p] + y[n + a + p]);
+        }
+        Ok(x)
+    }
+
+    fn release(&mut self, i: usize) -> Result<(bool, RigidMode), SolveError> {
+        let (n, a, m) = (self.n(), self.list.len(), self.rows.len());
+        let Some(p) = self.list.iter().position(|&k| k == i) else {
+            return Err(SolveError::Other(
+                "old method: release of an inactive condition".into(),
+            ));
+        };
+        // Impose c_i r = 1 with the other active rows held and no load:
+        // K r = −Cᵀμ, and rᵀK r = −μ_i is the stiffness that condition i
+        // sees. It vanishes iff r is a rigid mode freed by the release.
+        let mut rhs = vec![0.0; n + 2 * a];
+        rhs[p] = self.sigma[i];
+        rhs[n + a + p] = self.sigma[i];
+        let y = self.solve_rhs(&rhs)?;
+        let r = &y[a..a + n];
+        let kr: f64 = (0..n)
+            .map(|j| r[j] * (0..n).map(|l| self.kc[(j, l)] * r[l]).sum::<f64>())
+            .sum();
+        let rr: f64 = r.iter().map(|v| v * v).sum();
+        let singular = kr.abs() <= EPS_SING * self.kmax * rr;
+        // Orient and normalise so that s_i c_i u_r = ĉ_i (unit motion of the
+        // normalised row, away from the support).
+        let ur: Vec<f64> = r.iter().map(|v| self.sense[i] * self.chat[i] * v).collect();
+        let motion = (0..m)
+            .map(|j| self.sigma[j] / (2.0 * self.alpha[j]) * self.sense[j] * self.row_dot(j, &ur))
+            .collect();
+        let work = self.fc.iter().zip(&ur).map(|(f, u)| f * u).sum();
+        let work_scale = self.fc.iter().zip(&ur).map(|(f, u)| (f * u).abs()).sum();
+        Ok((
+            singular,
+            RigidMode {
+                motion,
+                work,
+                work_scale,
+            },
+        ))
+    }
+
+    fn dependent(&mut self, active: &[bool]) -> Vec<usize> {
+        // Gram matrix of the active rows: the first negligible pivot and
+        // the leading rows it depends on.
+        let list: Vec<usize> = (0..active.len()).filter(|&i| active[i]).collect();
+        let k = list.len();
+        let gram = Mat::<f64>::from_fn(k, k, |p, q| {
+            let (ri, rj) = (&self.rows[list[p]], &self.rows[list[q]]);
+            ri.iter()
+                .map(|&(j, v)| v * rj.iter().filter(|e| e.0 == j).map(|e| e.1).sum::<f64>())
+                .sum()
+        });
+        let scale: Vec<f64> = (0..k).map(|p| gram[(p, p)]).collect();
+        let f = DenseLdlt::factor(gram.as_ref());
+        let Some(b) = f.first_bad_pivot(&vec![true; k], &scale, EPS_PIV) else {
+            return list;
+        };
+        let lead = DenseLdlt::factor(gram.as_ref().submatrix(0, 0, b, b));
+        let mut c: Vec<f64> = (0..b).map(|p| gram[(p, b)]).collect();
+        lead.solve_in_place(&mut c);
+        let cmax = c.iter().fold(1.0_f64, |s, v| s.max(v.abs()));
+        let mut out: Vec<usize> = (0..b)
+            .filter(|&p| c[p].abs() > 1e-8 * cmax)
+            .map(|p| list[p])
+            .collect();
+        out.push(list[b]);
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::solve::status_testkit::{beam, solve, Dense, MINI};
+
+    /// Guyan condensation onto `keep` (§5 step 1): K_c = K_PP − K_PR K_RR⁻¹ K_RP.
+    fn guyan(k: &Mat<f64>, f: &[f64], keep: &[usize]) -> (Mat<f64>, Vec<f64>) {
+        let n = f.len();
+        let rest: Vec<usize> = (0..n).filter(|j| !keep.contains(j)).collect();
+        let krr = Mat::<f64>::from_fn(rest.len(), rest.len(), |a, b| k[(rest[a], rest[b])]);
+        let fac = DenseLdlt::factor(krr.as_ref());
+        let solve_r = |col: &dyn Fn(usize) -> f64| {
+            let mut y: Vec<f64> = (0..rest.len()).map(col).collect();
+            fac.solve_in_place(&mut y);
+            y
+        };
+        let kc = Mat::<f64>::from_fn(keep.len(), keep.len(), |a, b| {
+            let y = solve_r(&|r| k[(rest[r], keep[b])]);
+            k[(keep[a], keep[b])]
+                - (0..rest.len())
+                    .map(|r| k[(keep[a], rest[r])] * y[r])
+                    .sum::<f64>()
+        });
+        let y = solve_r(&|r| f[rest[r]]);
+        let fc = keep
+            .iter()
+            .map(|&p| f[p] - (0..rest.len()).map(|r| k[(p, rest[r])] * y[r]).sum::<f64>())
+            .collect();
+        (kc, fc)
+    }
+
+    /// Cases (c) and (d) with the stiffness condensed onto the supported
+    /// dofs only, as Cast3M's SUPER does: same answers as the full solve.
+    #[test]
+    fn old_method_on_guyan_condensed_beams() {
+        let cases: [(&[f64], usize, &[usize]); 2] = [
+            (&[0.0, 0.5, 1.0, 2.0], 2, &[0, 4, 6]),
+            (&[0.0, 1.0, 4.0], 2, &[0, 4]),
+        ];
+        for (x, loaded, supports) in cases {
+            let n = 2 * x.len();
+            let mut f = vec![0.0; n];
+            f[loaded] = -1.0;
+            let mut p = Dense::new(beam(x, 1.0), f.clone());
+            for &s in supports {
+                p = p.cond(&[(s, 1.0)], MINI, 0.0);
+            }
+            let full = solve(&p, &StatusOptions::default()).unwrap();
+            let (kc, fc) = guyan(&p.k, &f, supports);
+            let rows: Vec<Vec<(usize, f64)>> =
+                (0..supports.len()).map(|q| vec![(q, 1.0)]).collect();
+            let sense = vec![1.0; supports.len()];
+            let d = vec![0.0; supports.len()];
+            // k_i from the full stiffness (§2.2), as the caller would.
+            let k_ref: Vec<f64> = supports
+                .iter()
+                .map(|&s| (0..n).fold(0.0_f64, |a, l| a.max(p.k[(s, l)].abs())))
+                .collect();
+            let pb = AncienProblem {
+                kc: &kc,
+                fc: &fc,
+                rows: &rows,
+                sense: &sense,
+                d: &d,
+                k_ref: Some(&k_ref),
+            };
+            let old = run(&pb, &StatusOptions::default(), &mut |_| {}).unwrap();
+            for (q, &s) in supports.iter().enumerate() {
+                assert!(
+                    (old.u[q] - full.u[s]).abs() < 1e-10,
+                    "u at dof {s}: {:?} vs {:?} {:?}",
+                    old.u,
+                    full.u,
+                    old.records
+                );
+                assert!((old.lambda[q] - full.lambda[q]).abs() < 1e-10, "λ {q}");
+            }
+            assert_eq!(old.active, full.active);
+        }
+    }
+
+    #[test]
+    fn singular_warm_start_falls_back_to_cold() {
+        // Case (d) started from all inactive: the beam would be free.
+        let mut f = vec![0.0; 6];
+        f[2] = -1.0;
+        let p = Dense::new(beam(&[0.0, 1.0, 4.0], 1.0), f)
+            .cond(&[(0, 1.0)], MINI, 0.0)
+            .cond(&[(4, 1.0)], MINI, 0.0);
+        let o = StatusOptions {
+            start: Some(vec![false, false]),
+            ..Default::default()
+        };
+        let a = solve(&p, &o).unwrap();
+        assert!((a.lambda[0] + 0.75).abs() < 1e-10 && (a.lambda[1] + 0.25).abs() < 1e-10);
+        assert_eq!(a.iterations, 1);
+        let pb = AncienProblem {
+            kc: &p.k,
+            fc: &p.f,
+            rows: &p.rows,
+            sense: &p.sense,
+            d: &p.d,
+            k_ref: None,
+        };
+        let b = run(&pb, &o, &mut |_| {}).unwrap();
+        assert!((b.lambda[0] + 0.75).abs() < 1e-10);
+    }
+
+    #[test]
+    fn no_condition_is_a_plain_solve() {
+        let k = Mat::<f64>::from_fn(1, 1, |_, _| 4.0);
+        let pb = AncienProblem {
+            kc: &k,
+            fc: &[2.0],
+            rows: &[],
+            sense: &[],
+            d: &[],
+            k_ref: None,
+        };
+        let r = run(&pb, &StatusOptions::default(), &mut |_| {}).unwrap();
+        assert_eq!(r.u, vec![0.5]);
+        let pb = AncienProblem {
+            fc: &[2.0, 1.0],
+            ..pb
+        };
+        let bad = run(&pb, &StatusOptions::default(), &mut |_| {});
+        assert!(matches!(bad, Err(SolveError::Other(_))));
+    }
+}
