@@ -1,0 +1,290 @@
+//! Models and stiffness: MODE, MATE, CARA, RIGI, APPU. Element matrices come
+//! from `fem::element`; a RIGIDITE keeps them per mesh part (lazy assembly).
+
+use super::mesh::req_geo;
+use super::{dofs, Args, OpDef, PointId};
+use crate::error::{Error, Result};
+use crate::eval::Interp;
+use crate::fem::element::{self, Formulation, Material, Mode};
+use crate::fem::mesh::{ElemType, Mesh};
+use crate::value::model::{MchamlZone, ModelZone};
+use crate::value::rigidity::{Block, Subtype, Symmetry};
+use crate::value::{Mchaml, Model, Rigidite, Value};
+use std::rc::Rc;
+
+pub(crate) const OPS: &[OpDef] = &[
+    OpDef { name: "MODE", signature: "MODE GEO 'MECANIQUE' ('ELASTIQUE' ('ISOTROPE')) (BARR|POUT|TIMO|Q4RI|…)", doc: "A model: a mesh tied to a formulation, a behaviour and an element type.", example: "mo = mode l mecanique elastique pout ;", f: mode },
+    OpDef { name: "MATE", signature: "MATE MMODEL 'YOUN' E 'NU' nu ('RHO' r) ('ALPH' a) (SECT INRY INRZ TORS SECY SECZ EPAI DIM3 …)", doc: "Material (and section) data of a model.", example: "ma = mate mo youn 2.e11 nu 0.3 ;", f: mate },
+    OpDef { name: "CARA", signature: "CARA MMODEL ('SECT' s) ('INRY' i) ('INRZ' i) ('TORS' j) ('SECY' a) ('SECZ' a) ('EPAI' e) ('DIM3' e) ('VECT' P)", doc: "Geometric characteristics of a model (merge with MATE using ET).", example: "ca = cara mo sect 1. inrz 1. ;", f: cara },
+    OpDef { name: "RIGI", signature: "RIGI MMODEL MCHAML (MCHAML) | RIGI ('DEPL') ('ROTA') (comps) VALUE GEO", doc: "Stiffness of a model, or springs to ground.", example: "k = rigi mo ma ;", f: rigi },
+    OpDef { name: "APPU", signature: "APPU ('DEPL') ('ROTA') (comps) ('DIRECTION' VEC) VALUE GEO", doc: "Springs to ground of stiffness VALUE on the listed unknowns of every node.", example: "ri = appu 'UX' 10. p1 ;", f: appu },
+];
+
+const FORMS: &[&str] = &["BARR", "POUT", "TIMO", "Q4RI", "TRI3", "TRI6", "QUA4", "QUA8", "CUB8", "TET4", "PRI6", "SEG2"];
+
+fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let geo = req_geo(a)?;
+    let formulation = a.word_not_operator().unwrap_or_else(|| "MECANIQUE".into()).to_uppercase();
+    if !formulation.starts_with("MECA") {
+        return Err(a.err(format!("only the MECANIQUE formulation is available, not {}", formulation)));
+    }
+    let mut behaviour = Vec::new();
+    let mut element = String::new();
+    while let Some(w) = a.word_not_operator() {
+        let w = w.to_uppercase();
+        if let Some(f) = FORMS.iter().find(|f| super::args::keyword_matches(&w, f)) {
+            element = f.to_string();
+        } else if ["ELAS", "ISOT"].iter().any(|k| w.starts_with(k)) {
+            behaviour.push(w);
+        } else {
+            return Err(a.err(format!("{} is not supported (elastic isotropic BARR, POUT, TIMO and massive elements are)", w)));
+        }
+    }
+    let mode = it.opts.mode.clone();
+    let mut model = Model { zones: vec![] };
+    // Massive elements follow the mesh: one zone per element type.
+    if element.is_empty() || ElemType::from_name(&element).is_some() {
+        for p in &geo.parts {
+            model.zones.push(ModelZone {
+                mesh: Mesh::single(p.clone()),
+                formulation: formulation.clone(),
+                behaviour: behaviour.clone(),
+                element: p.ty.name().into(),
+                mode: mode.clone(),
+            });
+        }
+    } else {
+        model.zones.push(ModelZone { mesh: geo, formulation, behaviour, element, mode });
+    }
+    Ok(vec![Value::Model(Rc::new(model))])
+}
+
+const PROPS: &[&str] = &[
+    "YOUN", "NU", "RHO", "ALPH", "SECT", "INRY", "INRZ", "TORS", "SECY", "SECZ", "EPAI", "DIM3", "DX", "DY", "DZ", "VECT",
+];
+
+fn props(it: &Interp, a: &mut Args, subtype: &str) -> Result<Vec<Value>> {
+    let model = a.req::<Rc<Model>>()?;
+    let mut consts = std::collections::BTreeMap::new();
+    let mut vecs = std::collections::BTreeMap::new();
+    while let Some(k) = a.keyword(PROPS) {
+        if k == "VECT" {
+            let p = a.req::<PointId>()?;
+            vecs.insert(k.to_string(), it.nodes.get(p.0));
+        } else {
+            consts.insert(k.to_string(), a.req_num()?);
+        }
+    }
+    if let Some(w) = a.word_not_operator() {
+        return Err(a.err(format!("unknown property {}", w)));
+    }
+    let zones = model
+        .zones
+        .iter()
+        .map(|z| MchamlZone {
+            mesh: z.mesh.clone(),
+            element: z.element.clone(),
+            constants: consts.clone(),
+            vectors: vecs.clone(),
+            ..Default::default()
+        })
+        .collect();
+    Ok(vec![Value::Mchaml(Rc::new(Mchaml { subtype: subtype.into(), zones }))])
+}
+
+fn mate(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    props(it, a, "CARACTERISTIQUES")
+}
+
+fn cara(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    props(it, a, "CARACTERISTIQUES")
+}
+
+/// The material of one model zone, merged from every MCHAML given.
+pub(crate) fn material_for(zone: &ModelZone, fields: &[Rc<Mchaml>]) -> Material {
+    let mut m = Material::default();
+    for f in fields {
+        for z in f.zones.iter().filter(|z| z.mesh == zone.mesh) {
+            for (k, v) in &z.constants {
+                let v = Some(*v);
+                match k.as_str() {
+                    "YOUN" => m.youn = v,
+                    "NU" => m.nu = v,
+                    "RHO" => m.rho = v,
+                    "ALPH" => m.alph = v,
+                    "SECT" => m.sect = v,
+                    "INRY" => m.inry = v,
+                    "INRZ" => m.inrz = v,
+                    "TORS" => m.tors = v,
+                    "SECY" => m.secy = v,
+                    "SECZ" => m.secz = v,
+                    "EPAI" => m.epai = v,
+                    "DIM3" => m.dim3 = v,
+                    "DX" => m.dx = v,
+                    "DY" => m.dy = v,
+                    "DZ" => m.dz = v,
+                    _ => {}
+                }
+            }
+            if let Some(v) = z.vectors.get("VECT") {
+                m.vect = Some(*v);
+            }
+        }
+    }
+    m
+}
+
+pub(crate) fn formulation(zone: &ModelZone) -> Formulation {
+    match zone.element.as_str() {
+        "BARR" => Formulation::Barr,
+        "POUT" => Formulation::Pout,
+        "TIMO" => Formulation::Timo,
+        "Q4RI" => Formulation::Q4ri,
+        _ => Formulation::Solid,
+    }
+}
+
+pub(crate) fn zone_mode(zone: &ModelZone) -> Result<Mode> {
+    Ok(match zone.mode.as_str() {
+        "PLAN CONT" => Mode::PlanCont,
+        "PLAN DEFO" => Mode::PlanDefo,
+        "AXIS" => Mode::Axis,
+        "TRID" => Mode::Trid,
+        m => return Err(Error::runtime(format!("analysis mode {} is not supported by the element library", m))),
+    })
+}
+
+fn fem_err(e: element::FemError) -> Error {
+    Error::runtime(e.to_string())
+}
+
+fn rigi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let Some(model) = a.opt::<Rc<Model>>() else {
+        return springs(it, a);
+    };
+    let mut fields = Vec::new();
+    while let Some(f) = a.opt::<Rc<Mchaml>>() {
+        fields.push(f);
+    }
+    let mut rig = Rigidite::new(Subtype::Rigidite);
+    for zone in &model.zones {
+        let form = formulation(zone);
+        let mode = zone_mode(zone)?;
+        let mat = material_for(zone, &fields);
+        for part in &zone.mesh.parts {
+            rig.blocks.push(stiffness_block(it, form, mode, part, &mat).map_err(|e| a.err(e.message))?);
+        }
+    }
+    Ok(vec![Value::Rigi(Rc::new(rig))])
+}
+
+/// Element stiffness on every element of one part, as one block.
+pub(crate) fn stiffness_block(
+    it: &Interp,
+    form: Formulation,
+    mode: Mode,
+    part: &crate::fem::mesh::Part,
+    mat: &Material,
+) -> Result<Block> {
+    let npe = part.ty.nodes();
+    let mut block: Option<Block> = None;
+    let mut x = vec![[0.0; 3]; npe];
+    for (e, nodes) in part.elems().enumerate() {
+        for (k, n) in nodes.iter().enumerate() {
+            x[k] = it.nodes.get(*n);
+        }
+        let em = element::stiffness(form, part.ty, mode, &x, mat)
+            .map_err(|err| Error::runtime(format!("element {}: {}", e + 1, fem_err(err).message)))?;
+        let b = block.get_or_insert_with(|| Block {
+            nodes_per_elem: npe,
+            conn: Vec::with_capacity(part.conn.len()),
+            dofs: em.dofs.iter().map(|(l, c)| (*l, c.to_string())).collect(),
+            duals: em.dofs.iter().map(|(_, c)| dofs::dual_of(c)).collect(),
+            mats: Vec::with_capacity(part.len() * em.k.len()),
+            symmetry: Symmetry::Symmetric,
+        });
+        b.conn.extend_from_slice(nodes);
+        b.mats.extend_from_slice(&em.k);
+    }
+    block.ok_or_else(|| Error::runtime("the model has no element"))
+}
+
+/// Springs to ground: RIGI/APPU (DEPL) (ROTA) (comps) (DIRECTION v) k GEO.
+fn springs(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let mut comps: Vec<String> = Vec::new();
+    let mut dir: Option<[f64; 3]> = None;
+    let mut k: Option<f64> = None;
+    let mut geo: Option<Mesh> = None;
+    loop {
+        if let Some(kw) = a.keyword(&["DEPL", "ROTA", "DIRECTION"]) {
+            match kw {
+                "DEPL" => comps.extend(dofs::translations(it).iter().map(|s| s.to_string())),
+                "ROTA" => comps.extend(dofs::rotations(it).iter().map(|s| s.to_string())),
+                _ => dir = Some(it.nodes.get(a.req::<PointId>()?.0)),
+            }
+        } else if k.is_none() && a.peek_right().is_some_and(|v| v.is_number()) {
+            k = a.opt_num_right();
+        } else if let Some(l) = a.opt_right::<Rc<Vec<String>>>() {
+            comps.extend(l.iter().cloned());
+        } else if geo.is_none() && a.peek_right().is_some_and(|v| matches!(v, Value::Point(_) | Value::Mesh(_))) {
+            geo = Some(req_geo(a)?);
+        } else if let Some(w) = a.word_not_operator() {
+            comps.push(w);
+        } else {
+            break;
+        }
+    }
+    let k = match k {
+        Some(k) => k,
+        None => a.req_num()?,
+    };
+    let geo = match geo {
+        Some(g) => g,
+        None => req_geo(a)?,
+    };
+    let mut rig = Rigidite::new(Subtype::Rigidite);
+    let nodes = geo.node_list();
+    if let Some(v) = dir {
+        let t = dofs::translations(it);
+        let norm = v[..t.len()].iter().map(|x| x * x).sum::<f64>().sqrt();
+        if norm == 0.0 {
+            return Err(a.err("the direction is a zero vector"));
+        }
+        let n: Vec<f64> = v[..t.len()].iter().map(|x| x / norm).collect();
+        let mut mats = Vec::new();
+        for _ in &nodes {
+            for i in 0..t.len() {
+                for j in 0..t.len() {
+                    mats.push(k * n[i] * n[j]);
+                }
+            }
+        }
+        rig.blocks.push(Block {
+            nodes_per_elem: 1,
+            conn: nodes,
+            dofs: t.iter().map(|c| (0, c.to_string())).collect(),
+            duals: t.iter().map(|c| dofs::dual_of(c)).collect(),
+            mats,
+            symmetry: Symmetry::Symmetric,
+        });
+    } else {
+        if comps.is_empty() {
+            return Err(a.missing("the unknowns of the springs"));
+        }
+        for c in comps {
+            rig.blocks.push(Block {
+                nodes_per_elem: 1,
+                conn: nodes.clone(),
+                dofs: vec![(0, c.clone())],
+                duals: vec![dofs::dual_of(&c)],
+                mats: vec![k; nodes.len()],
+                symmetry: Symmetry::Symmetric,
+            });
+        }
+    }
+    Ok(vec![Value::Rigi(Rc::new(rig))])
+}
+
+fn appu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    springs(it, a)
+}
