@@ -72,6 +72,7 @@ impl Factorization {
                 &sys.row_idx,
                 &sys.values,
                 &sys.row_scale,
+                usize::MAX,
                 None,
             ) {
                 return Err(diagnose(&sys, &mut f, z));
@@ -104,6 +105,7 @@ impl Factorization {
                     &sys.row_idx,
                     &sys.values,
                     &sys.row_scale,
+                    usize::MAX,
                     None,
                 ) {
                     return Err(diagnose(sys, f, z));
@@ -328,8 +330,15 @@ fn null_dofs(sys: &Doubled, f: &mut SymFactor) -> Option<Vec<usize>> {
     let scale = sys.row_scale.iter().fold(0.0f64, |a, &b| a.max(b));
     let signs: Vec<i8> = (0..dim).map(|i| if i < n { 1 } else { -1 }).collect();
     let reg = Some((&signs[..], 1e-8 * scale, 1e-10 * scale));
-    f.factor(&sys.col_ptr, &sys.row_idx, &sys.values, &sys.row_scale, reg)
-        .ok()?;
+    f.factor(
+        &sys.col_ptr,
+        &sys.row_idx,
+        &sys.values,
+        &sys.row_scale,
+        usize::MAX,
+        reg,
+    )
+    .ok()?;
     let mut y = Mat::<f64>::zeros(dim, 1);
     for i in 0..n {
         // Not all ones: a symmetric start could be orthogonal to the mode.

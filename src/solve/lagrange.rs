@@ -127,9 +127,9 @@ impl Doubled {
         self.n + 2 * self.m
     }
 
-    /// Assembles the pattern and the values. `dense_tail` lists conditions
-    /// whose λ2 get explicit (zero) couplings with each other, so that they
-    /// form one dense trailing supernode (condensation).
+    /// Assembles the pattern and the values. `dense_tail` lists unknowns
+    /// (natural numbering) that get explicit (zero) couplings with each
+    /// other, so that they form one dense trailing supernode (condensation).
     pub fn new(p: &Problem, dense_tail: &[usize]) -> Result<Self, SolveError> {
         validate(p)?;
         let n = p.k.n;
@@ -175,11 +175,35 @@ impl Doubled {
             }
         }
         let n_fill = src.len();
+        // Every unknown coupled to the tail also gets an explicit entry in
+        // the row of the tail's first unknown. Fill then carries that row up
+        // the elimination tree, so no column outside the tail has a parent
+        // inside it other than the first one: the tail stays one chain, hence
+        // one supernode, whatever the couplings (e.g. independent contact
+        // zones).
+        if let Some(&head) = dense_tail.first() {
+            let mut in_tail = vec![false; dim];
+            for &t in dense_tail {
+                in_tail[t] = true;
+            }
+            let mut extra = vec![false; dim];
+            for &(r, c) in &src[..n_fill] {
+                if r != NONE && in_tail[r] != in_tail[c] {
+                    extra[if in_tail[r] { c } else { r }] = true;
+                }
+            }
+            for (k, _) in extra.iter().enumerate().filter(|e| *e.1) {
+                push(k, head, &mut src);
+                if !symmetric {
+                    src.push((head, k));
+                }
+            }
+        }
         for (a, &ca) in dense_tail.iter().enumerate() {
             for &cb in &dense_tail[..a] {
-                push(n + m + ca, n + m + cb, &mut src);
+                push(ca, cb, &mut src);
                 if !symmetric {
-                    src.push((n + m + cb, n + m + ca));
+                    src.push((cb, ca));
                 }
             }
         }
@@ -303,11 +327,10 @@ impl Doubled {
         rows.binary_search(&r).ok().map(|k| k + self.col_ptr[c])
     }
 
-    /// Sets the λ2 diagonal of condition `ci` (−α active, +3α released).
-    pub fn set_lambda2_diag(&mut self, ci: usize, v: f64) {
-        let i = self.n + self.m + ci;
+    /// Adds `v` to the diagonal entry of unknown `i` (natural numbering).
+    pub fn add_diag(&mut self, i: usize, v: f64) {
         if let Some(k) = self.find(i, i) {
-            self.values[k] = v;
+            self.values[k] += v;
         }
     }
 

@@ -132,7 +132,9 @@ impl SymFactor {
 
     /// Numeric LDLᵀ of the values laid out on the analysed pattern.
     /// `row_scale` (natural numbering) is the reference of the tiny-pivot
-    /// test. `regularise = Some((signs, delta, eps))` replaces small or
+    /// test, applied to the pivots before position `limit` of the
+    /// elimination order only (a trailing block being condensed may be
+    /// singular without harm). `regularise = Some((signs, delta, eps))` replaces small or
     /// wrong-sign pivots (diagnostics only: the answer is perturbed).
     pub fn factor(
         &mut self,
@@ -140,6 +142,7 @@ impl SymFactor {
         row_idx: &[usize],
         values: &[f64],
         row_scale: &[f64],
+        limit: usize,
         regularise: Option<(&[i8], f64, f64)>,
     ) -> Result<(), ZeroPivot> {
         self.factored = false;
@@ -182,7 +185,7 @@ impl SymFactor {
             });
         }
         if regularise.is_none() {
-            if let Some(k) = self.first_tiny_pivot(row_scale) {
+            if let Some(k) = self.first_tiny_pivot(row_scale, limit) {
                 return Err(ZeroPivot { index: self.fwd[k] });
             }
         }
@@ -191,7 +194,7 @@ impl SymFactor {
     }
 
     /// Position (elimination order) of the first pivot below the threshold.
-    fn first_tiny_pivot(&self, row_scale: &[f64]) -> Option<usize> {
+    fn first_tiny_pivot(&self, row_scale: &[f64], limit: usize) -> Option<usize> {
         let f = self.ldlt_ref();
         let sym = self.supernodal();
         for s in 0..sym.n_supernodes() {
@@ -199,6 +202,9 @@ impl SymFactor {
             let v = sn.val();
             for c in 0..v.ncols() {
                 let k = sn.start() + c;
+                if k >= limit {
+                    return None;
+                }
                 let d = v[(c, c)];
                 let scale = row_scale[self.fwd[k]];
                 if !d.is_finite() || d.abs() <= PIVOT_TOL * scale || d == 0.0 {
