@@ -145,7 +145,8 @@ impl Factorization {
                 z += &r;
                 eta = self.backward_error(&b, &z);
             }
-            if !(eta <= RESIDUAL_TOL) {
+            // NaN counts as a failure too.
+            if eta.is_nan() || eta > RESIDUAL_TOL {
                 return Err(SolveError::Inaccurate { residual: eta });
             }
         }

@@ -276,9 +276,9 @@ impl Doubled {
             }
         }
         if stab > 0.0 {
-            for j in 0..n {
+            for (j, &rm) in row_max.iter().enumerate() {
                 if let Some(k) = self.find(j, j) {
-                    self.values[k] += stab * row_max[j];
+                    self.values[k] += stab * rm;
                 }
             }
         }
@@ -369,10 +369,10 @@ impl Doubled {
 /// pairs by a counting sort on columns, and returns the slot of each pair.
 /// O(nnz) plus tiny per-column sorts: a global sort would cost a sizeable
 /// fraction of the factorisation at 10⁶ entries.
-fn compress(
-    dim: usize,
-    src: &[(usize, usize)],
-) -> Result<(Vec<usize>, Vec<usize>, Vec<usize>), SolveError> {
+/// CSC `(col_ptr, row_idx)` plus the slot of each source pair.
+type Compressed = (Vec<usize>, Vec<usize>, Vec<usize>);
+
+fn compress(dim: usize, src: &[(usize, usize)]) -> Result<Compressed, SolveError> {
     let mut count = vec![0usize; dim + 1];
     for &(r, c) in src {
         if r != NONE {
