@@ -45,7 +45,13 @@ struct Interrupted {
 }
 
 impl Interrupted {
-    fn new(p: &Problem, fwd: Vec<usize>, cut: usize) -> Result<Self, SolveError> {
+    /// `sys`, if given, must have been built with the tail `fwd[cut..]`.
+    fn new(
+        p: &Problem,
+        fwd: Vec<usize>,
+        cut: usize,
+        sys: Option<Doubled>,
+    ) -> Result<Self, SolveError> {
         check_structure(p)?;
         if !p.k.symmetric {
             return Err(SolveError::Other(
@@ -53,7 +59,10 @@ impl Interrupted {
             ));
         }
         let tail = fwd[cut..].to_vec();
-        let sys = Doubled::new(p, &tail)?;
+        let sys = match sys {
+            Some(s) => s,
+            None => Doubled::new(p, &tail)?,
+        };
         let factor = SymFactor::analyse(&sys.col_ptr, &sys.row_idx, fwd)?;
         let sup = factor.supernodal();
         let n_sup = sup.n_supernodes();
@@ -206,10 +215,13 @@ impl Condenser {
             return Err(SolveError::Other("no unilateral condition".into()));
         }
         super::lagrange::validate(p)?;
-        let primal = ordering::primal_amd(p, &[])?;
+        let (n, m) = (p.k.n, p.conditions.len());
+        let tail: Vec<usize> = uni.iter().map(|&i| n + m + i).collect();
+        let sys = Doubled::new(p, &tail)?;
+        let primal = ordering::primal_amd(p, &[], Some((&sys.col_ptr, &sys.row_idx)))?;
         let fwd = ordering::doubled_order(p, &primal, &uni);
         let cut = fwd.len() - uni.len();
-        let core = Interrupted::new(p, fwd, cut)?;
+        let core = Interrupted::new(p, fwd, cut, Some(sys))?;
         Ok(Condenser {
             core,
             sense: uni.iter().map(|&i| p.conditions[i].kind.sense()).collect(),
@@ -375,7 +387,7 @@ pub fn schur_onto(p: &Problem, keep: &[usize]) -> Result<SchurOnto, SolveError> 
         }
         seen[j] = true;
     }
-    let primal = ordering::primal_amd(p, keep)?;
+    let primal = ordering::primal_amd(p, keep, None)?;
     let fwd = ordering::doubled_order(p, &primal, &[]);
     // The tail starts at the first kept unknown or at a λ1 opening there.
     let first_kept = n - keep.len();
@@ -397,7 +409,7 @@ pub fn schur_onto(p: &Problem, keep: &[usize]) -> Result<SchurOnto, SolveError> 
         cut -= 1;
     }
     Ok(SchurOnto {
-        core: Interrupted::new(p, fwd, cut)?,
+        core: Interrupted::new(p, fwd, cut, None)?,
     })
 }
 

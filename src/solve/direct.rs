@@ -64,7 +64,7 @@ impl Factorization {
             sys.fill(p, stab)?;
         }
         let engine = if p.k.symmetric {
-            let primal = ordering::primal_amd(p, &[])?;
+            let primal = ordering::primal_amd(p, &[], Some((&sys.col_ptr, &sys.row_idx)))?;
             let fwd = ordering::doubled_order(p, &primal, &[]);
             let mut f = SymFactor::analyse(&sys.col_ptr, &sys.row_idx, fwd)?;
             if let Err(z) = f.factor(
@@ -242,7 +242,7 @@ pub fn solve(
 /// Structural diagnostics that need no factorisation: unknowns nothing
 /// touches, and unknowns fixed by two single-term equalities (Cast3M's
 /// VERLAG). Both would otherwise show up as an anonymous zero pivot.
-pub(crate) fn check_structure(p: &Problem) -> Result<(), SolveError> {
+pub fn check_structure(p: &Problem) -> Result<(), SolveError> {
     let n = p.k.n;
     let mut touched = vec![false; n];
     for &(i, j, _) in &p.k.entries {

@@ -229,7 +229,7 @@ impl Doubled {
             n_terms,
             structure,
         };
-        d.fill(p, 0.0)?;
+        d.scatter(p, 0.0);
         Ok(d)
     }
 
@@ -253,6 +253,12 @@ impl Doubled {
             ));
         }
         validate(p)?;
+        self.scatter(p, stab);
+        Ok(())
+    }
+
+    /// [`Doubled::fill`] without the checks (`p` known to match).
+    fn scatter(&mut self, p: &Problem, stab: f64) {
         let (n, m) = (self.n, self.m);
         self.values.iter_mut().for_each(|v| *v = 0.0);
         let mut s = 0;
@@ -313,7 +319,6 @@ impl Doubled {
                 self.row_scale[col] = self.row_scale[col].max(a);
             }
         }
-        Ok(())
     }
 
     /// Slot of entry (r, c) (upper triangle when symmetric), if stored.

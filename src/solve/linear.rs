@@ -247,12 +247,30 @@ impl SymFactor {
         Ok(())
     }
 
+    /// Scratch for the partial substitutions: the tallest supernode panel
+    /// times the number of right-hand sides (allocated once per call, not
+    /// once per supernode).
+    fn scratch(&self, k: usize) -> Mat<f64> {
+        let f = self.ldlt_ref();
+        let rows = (0..self.supernodal().n_supernodes())
+            .map(|s| f.supernode(s).val().nrows())
+            .max()
+            .unwrap_or(0);
+        Mat::zeros(rows, k)
+    }
+
+    // The partial substitutions run sequentially: they are memory-bound,
+    // and most supernodes are so small that spawning threads for each
+    // panel costs more than the arithmetic (measured 15× slower).
+
     /// Forward substitution `x ← L⁻¹ x` restricted to the columns `< cut`
     /// of the elimination order (x in elimination order). Rows `≥ cut`
     /// receive the updates, so afterwards they hold the right-hand side of
     /// the Schur complement system on the trailing block.
     pub fn forward_partial(&self, mut x: MatMut<'_, f64>, cut: usize) {
         let f = self.ldlt_ref();
+        let k = x.ncols();
+        let mut scratch = self.scratch(k);
         for s in 0..self.supernodal().n_supernodes() {
             let sn = f.supernode(s);
             let start = sn.start();
@@ -266,14 +284,22 @@ impl SymFactor {
             faer::linalg::triangular_solve::solve_unit_lower_triangular_in_place(
                 top,
                 x.rb_mut().subrows_mut(start, w),
-                self.par,
+                Par::Seq,
             );
             let rest = v.submatrix(w, 0, v.nrows() - w, w);
-            let xt = x.rb().subrows(start, w).to_owned();
-            let tmp = rest * &xt;
+            let nr = rest.nrows();
+            let mut tmp = scratch.as_mut().submatrix_mut(0, 0, nr, k);
+            faer::linalg::matmul::matmul(
+                tmp.rb_mut(),
+                faer::Accum::Replace,
+                rest,
+                x.rb().subrows(start, w),
+                1.0,
+                Par::Seq,
+            );
             let pattern = sn.pattern();
-            for j in 0..x.ncols() {
-                for r in 0..tmp.nrows() {
+            for j in 0..k {
+                for r in 0..nr {
                     let row = if r + w < ncols {
                         start + w + r
                     } else {
@@ -299,6 +325,8 @@ impl SymFactor {
     /// `≥ cut` taken as already known (the trailing unknowns).
     pub fn backward_partial(&self, mut x: MatMut<'_, f64>, cut: usize) {
         let f = self.ldlt_ref();
+        let k = x.ncols();
+        let mut scratch = self.scratch(k);
         for s in (0..self.supernodal().n_supernodes()).rev() {
             let sn = f.supernode(s);
             let start = sn.start();
@@ -309,10 +337,11 @@ impl SymFactor {
             let ncols = v.ncols();
             let w = ncols.min(cut - start);
             let rest = v.submatrix(w, 0, v.nrows() - w, w);
+            let nr = rest.nrows();
             let pattern = sn.pattern();
-            let mut gathered = Mat::<f64>::zeros(rest.nrows(), x.ncols());
-            for j in 0..x.ncols() {
-                for r in 0..rest.nrows() {
+            let mut gathered = scratch.as_mut().submatrix_mut(0, 0, nr, k);
+            for j in 0..k {
+                for r in 0..nr {
                     let row = if r + w < ncols {
                         start + w + r
                     } else {
@@ -321,14 +350,19 @@ impl SymFactor {
                     gathered[(r, j)] = x[(row, j)];
                 }
             }
-            let upd = rest.transpose() * &gathered;
-            let mut xt = x.rb_mut().subrows_mut(start, w);
-            xt -= &upd;
+            faer::linalg::matmul::matmul(
+                x.rb_mut().subrows_mut(start, w),
+                faer::Accum::Add,
+                rest.transpose(),
+                gathered.rb(),
+                -1.0,
+                Par::Seq,
+            );
             let top = v.submatrix(0, 0, w, w);
             faer::linalg::triangular_solve::solve_unit_upper_triangular_in_place(
                 top.transpose(),
-                xt,
-                self.par,
+                x.rb_mut().subrows_mut(start, w),
+                Par::Seq,
             );
         }
     }

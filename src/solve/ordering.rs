@@ -20,8 +20,20 @@ use super::error::SolveError;
 use super::problem::Problem;
 
 /// AMD order of the primal unknowns on K + CᵀC: `perm[new] = old`.
-pub fn primal_amd(p: &Problem, extra_last: &[usize]) -> Result<Vec<usize>, SolveError> {
+/// `k_upper` may give the already assembled upper pattern of K (the first
+/// n columns of the doubled matrix); it is used as is when no condition has
+/// several terms and nothing is kept last, which saves rebuilding a
+/// pattern from the raw entries.
+pub fn primal_amd(
+    p: &Problem,
+    extra_last: &[usize],
+    k_upper: Option<(&[usize], &[usize])>,
+) -> Result<Vec<usize>, SolveError> {
     let n = p.k.n;
+    let single = p.conditions.iter().all(|c| c.terms.len() <= 1);
+    if let (Some((cp, ri)), true, true) = (k_upper, single, extra_last.is_empty()) {
+        return amd_order(n, &cp[..=n], &ri[..cp[n]]);
+    }
     // Upper-triangle pairs of K + CᵀC (AMD symmetrises itself).
     let mut pairs: Vec<(usize, usize)> = Vec::with_capacity(p.k.entries.len() + n);
     for &(i, j, _) in &p.k.entries {
@@ -83,10 +95,18 @@ pub fn primal_amd(p: &Problem, extra_last: &[usize]) -> Result<Vec<usize>, Solve
         }
         col_ptr[c + 1] = row_idx.len();
     }
+    let perm = amd_order(nf, &col_ptr, &row_idx)?;
+    let mut out: Vec<usize> = perm.iter().map(|&k| free[k]).collect();
+    out.extend_from_slice(extra_last);
+    Ok(out)
+}
+
+/// faer's AMD on a sorted upper-triangle pattern.
+fn amd_order(nf: usize, col_ptr: &[usize], row_idx: &[usize]) -> Result<Vec<usize>, SolveError> {
     let mut perm = vec![0usize; nf];
     let mut perm_inv = vec![0usize; nf];
     if nf > 0 {
-        let a = SymbolicSparseColMatRef::new_checked(nf, nf, &col_ptr, None, &row_idx);
+        let a = SymbolicSparseColMatRef::new_checked(nf, nf, col_ptr, None, row_idx);
         let mut mem = MemBuffer::try_new(amd::order_scratch::<usize>(nf, row_idx.len()))
             .map_err(|_| SolveError::Other("out of memory in AMD".into()))?;
         amd::order(
@@ -98,9 +118,7 @@ pub fn primal_amd(p: &Problem, extra_last: &[usize]) -> Result<Vec<usize>, Solve
         )
         .map_err(|e| SolveError::Other(format!("AMD failed: {e:?}")))?;
     }
-    let mut out: Vec<usize> = perm.iter().map(|&k| free[k]).collect();
-    out.extend_from_slice(extra_last);
-    Ok(out)
+    Ok(perm)
 }
 
 /// Full elimination order of the doubled system from a primal order:
@@ -186,7 +204,7 @@ mod tests {
     fn lambda1_before_and_lambda2_after_their_unknowns() {
         let p = chain(8);
         let (n, m) = (8, 3);
-        let primal = primal_amd(&p, &[]).unwrap();
+        let primal = primal_amd(&p, &[], None).unwrap();
         let fwd = doubled_order(&p, &primal, &[]);
         assert_eq!(fwd.len(), n + 2 * m);
         let inv = inverse(&fwd);
@@ -206,10 +224,10 @@ mod tests {
     #[test]
     fn unilateral_lambda2_go_last() {
         let p = chain(8);
-        let primal = primal_amd(&p, &[]).unwrap();
+        let primal = primal_amd(&p, &[], None).unwrap();
         let fwd = doubled_order(&p, &primal, &[2]);
         assert_eq!(*fwd.last().unwrap(), 8 + 3 + 2);
-        let kept = primal_amd(&p, &[6, 1]).unwrap();
+        let kept = primal_amd(&p, &[6, 1], None).unwrap();
         assert_eq!(&kept[6..], &[6, 1]);
     }
 }

@@ -66,7 +66,11 @@ pub fn run(
             }
         }
         let h = Mat::from_fn(m, 1, |i, _| c.h[i]);
-        let xm = t.partial_piv_lu().solve(&h);
+        // T is quasi-definite for a regular status: LDLᵀ without pivoting.
+        let xm = match t.ldlt(faer::Side::Lower) {
+            Ok(f) => f.solve(&h),
+            Err(_) => return Err(SolveError::Singular { dofs: vec![] }),
+        };
         let x: Vec<f64> = (0..m).map(|i| xm[(i, 0)]).collect();
         if x.iter().any(|v| !v.is_finite()) {
             return Err(SolveError::Singular { dofs: vec![] });
