@@ -124,10 +124,7 @@ pub struct Part {
 
 impl Part {
     pub fn new(ty: ElemType) -> Self {
-        Part {
-            ty,
-            conn: Vec::new(),
-        }
+        Part { ty, conn: Vec::new() }
     }
 
     pub fn len(&self) -> usize {
@@ -163,10 +160,7 @@ impl Mesh {
 
     /// A POI1 mesh of the given nodes.
     pub fn points(nodes: &[usize]) -> Self {
-        Mesh::single(Part {
-            ty: ElemType::Poi1,
-            conn: nodes.to_vec(),
-        })
+        Mesh::single(Part { ty: ElemType::Poi1, conn: nodes.to_vec() })
     }
 
     pub fn n_elements(&self) -> usize {
@@ -217,14 +211,8 @@ mod tests {
 
     #[test]
     fn union_keeps_shared_nodes_and_drops_repeated_elements() {
-        let a = Mesh::single(Part {
-            ty: ElemType::Seg2,
-            conn: vec![0, 1],
-        });
-        let b = Mesh::single(Part {
-            ty: ElemType::Seg2,
-            conn: vec![1, 2, 0, 1],
-        });
+        let a = Mesh::single(Part { ty: ElemType::Seg2, conn: vec![0, 1] });
+        let b = Mesh::single(Part { ty: ElemType::Seg2, conn: vec![1, 2, 0, 1] });
         let u = a.union(&b);
         assert_eq!(u.n_elements(), 2);
         assert_eq!(u.node_list(), vec![0, 1, 2]);

@@ -29,10 +29,7 @@ pub enum SolveError {
     /// The status iteration did not settle within its cap; `conditions` are
     /// the ones still changing.
     #[error("the status iteration did not converge")]
-    NoConvergence {
-        iterations: usize,
-        conditions: Vec<usize>,
-    },
+    NoConvergence { iterations: usize, conditions: Vec<usize> },
     /// The a-posteriori residual check failed.
     #[error("inaccurate solution: relative residual {residual:e}")]
     Inaccurate { residual: f64 },
