@@ -27,6 +27,8 @@ pub mod linear;
 pub mod ordering;
 pub mod problem;
 pub mod status;
+#[doc(hidden)]
+pub mod status_placeholder;
 pub mod unilateral;
 
 #[cfg(test)]

@@ -1,1 +1,233 @@
-//! (to be written)
+//! Elimination order for the doubled system (unilateral.md §2.3).
+//!
+//! Primal unknowns are ordered by AMD on the pattern of K + CᵀC (the fill
+//! the first multipliers create is that of CᵀC). Then each λ1_i goes
+//! immediately before the first of its unknowns and each λ2_i immediately
+//! after the last, which is Cast3M's `optnum` rule: with it, LDLᵀ without
+//! pivoting meets no zero pivot when the problem is well posed. Conditions
+//! listed in `last` have their λ2 put at the very end instead, in the given
+//! order, so that the trailing block of the factor is their condensed
+//! operator (§3).
+//!
+//! The result is `fwd[new] = old` in the natural numbering of
+//! [`super::lagrange`] (u, λ1, λ2).
+
+use faer::dyn_stack::{MemBuffer, MemStack};
+use faer::sparse::linalg::amd;
+use faer::sparse::SymbolicSparseColMatRef;
+
+use super::error::SolveError;
+use super::problem::Problem;
+
+/// AMD order of the primal unknowns on K + CᵀC: `perm[new] = old`.
+/// `k_upper` may give the already assembled upper pattern of K (the first
+/// n columns of the doubled matrix); it is used as is when no condition has
+/// several terms and nothing is kept last, which saves rebuilding a
+/// pattern from the raw entries.
+pub fn primal_amd(
+    p: &Problem,
+    extra_last: &[usize],
+    k_upper: Option<(&[usize], &[usize])>,
+) -> Result<Vec<usize>, SolveError> {
+    let n = p.k.n;
+    let single = p.conditions.iter().all(|c| c.terms.len() <= 1);
+    if let (Some((cp, ri)), true, true) = (k_upper, single, extra_last.is_empty()) {
+        return amd_order(n, &cp[..=n], &ri[..cp[n]]);
+    }
+    // Upper-triangle pairs of K + CᵀC (AMD symmetrises itself).
+    let mut pairs: Vec<(usize, usize)> = Vec::with_capacity(p.k.entries.len() + n);
+    for &(i, j, _) in &p.k.entries {
+        pairs.push((i.min(j), i.max(j)));
+    }
+    for c in &p.conditions {
+        for &(a, _) in &c.terms {
+            for &(b, _) in &c.terms {
+                if a < b {
+                    pairs.push((a, b));
+                }
+            }
+        }
+    }
+    let is_last = {
+        let mut v = vec![false; n];
+        for &j in extra_last {
+            v[j] = true;
+        }
+        v
+    };
+    // Kept-last unknowns are taken out of the AMD graph and appended.
+    let free: Vec<usize> = (0..n).filter(|&j| !is_last[j]).collect();
+    let mut local = vec![usize::MAX; n];
+    for (k, &j) in free.iter().enumerate() {
+        local[j] = k;
+    }
+    let nf = free.len();
+    let mut count = vec![0usize; nf + 1];
+    let mut kept = Vec::with_capacity(pairs.len());
+    for &(a, b) in &pairs {
+        let (la, lb) = (local[a], local[b]);
+        if la != usize::MAX && lb != usize::MAX {
+            let (r, c) = (la.min(lb), la.max(lb));
+            kept.push((r, c));
+            count[c + 1] += 1;
+        }
+    }
+    for c in 0..nf {
+        count[c + 1] += count[c];
+    }
+    let mut next = count.clone();
+    let mut rows = vec![0usize; kept.len()];
+    for &(r, c) in &kept {
+        rows[next[c]] = r;
+        next[c] += 1;
+    }
+    let mut col_ptr = vec![0usize; nf + 1];
+    let mut row_idx = Vec::with_capacity(rows.len());
+    for c in 0..nf {
+        let b = &mut rows[count[c]..count[c + 1]];
+        b.sort_unstable();
+        let mut last = usize::MAX;
+        for &r in b.iter() {
+            if r != last {
+                row_idx.push(r);
+                last = r;
+            }
+        }
+        col_ptr[c + 1] = row_idx.len();
+    }
+    let perm = amd_order(nf, &col_ptr, &row_idx)?;
+    let mut out: Vec<usize> = perm.iter().map(|&k| free[k]).collect();
+    out.extend_from_slice(extra_last);
+    Ok(out)
+}
+
+/// faer's AMD on a sorted upper-triangle pattern.
+fn amd_order(nf: usize, col_ptr: &[usize], row_idx: &[usize]) -> Result<Vec<usize>, SolveError> {
+    let mut perm = vec![0usize; nf];
+    let mut perm_inv = vec![0usize; nf];
+    if nf > 0 {
+        let a = SymbolicSparseColMatRef::new_checked(nf, nf, col_ptr, None, row_idx);
+        let mut mem = MemBuffer::try_new(amd::order_scratch::<usize>(nf, row_idx.len()))
+            .map_err(|_| SolveError::Other("out of memory in AMD".into()))?;
+        amd::order(
+            &mut perm,
+            &mut perm_inv,
+            a,
+            amd::Control::default(),
+            MemStack::new(&mut mem),
+        )
+        .map_err(|e| SolveError::Other(format!("AMD failed: {e:?}")))?;
+    }
+    Ok(perm)
+}
+
+/// Full elimination order of the doubled system from a primal order:
+/// λ1 before the first unknown of its row, λ2 after the last, except the
+/// conditions of `last`, whose λ2 close the order (in that order).
+pub fn doubled_order(p: &Problem, primal: &[usize], last: &[usize]) -> Vec<usize> {
+    let n = p.k.n;
+    let m = p.conditions.len();
+    let mut at = vec![0usize; n];
+    for (k, &j) in primal.iter().enumerate() {
+        at[j] = k;
+    }
+    let mut is_last = vec![false; m];
+    for &c in last {
+        is_last[c] = true;
+    }
+    // For each primal position, the conditions opening and closing there.
+    let mut opens: Vec<Vec<usize>> = vec![Vec::new(); n];
+    let mut closes: Vec<Vec<usize>> = vec![Vec::new(); n];
+    for (ci, c) in p.conditions.iter().enumerate() {
+        let first = c.terms.iter().map(|&(j, _)| at[j]).min().unwrap_or(0);
+        let lastp = c.terms.iter().map(|&(j, _)| at[j]).max().unwrap_or(0);
+        if n > 0 {
+            opens[first].push(ci);
+            if !is_last[ci] {
+                closes[lastp].push(ci);
+            }
+        }
+    }
+    let mut fwd = Vec::with_capacity(n + 2 * m);
+    for (k, &j) in primal.iter().enumerate() {
+        fwd.extend(opens[k].iter().map(|&ci| n + ci));
+        fwd.push(j);
+        fwd.extend(closes[k].iter().map(|&ci| n + m + ci));
+    }
+    fwd.extend(last.iter().map(|&ci| n + m + ci));
+    fwd
+}
+
+/// Inverse permutation: `inv[old] = new`.
+pub fn inverse(fwd: &[usize]) -> Vec<usize> {
+    let mut inv = vec![0usize; fwd.len()];
+    for (k, &o) in fwd.iter().enumerate() {
+        inv[o] = k;
+    }
+    inv
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::solve::problem::{Condition, Kind, Matrix};
+
+    fn chain(n: usize) -> Problem {
+        let mut e = Vec::new();
+        for i in 0..n - 1 {
+            e.extend([(i, i, 1.0), (i + 1, i + 1, 1.0), (i, i + 1, -1.0)]);
+        }
+        Problem {
+            k: Matrix {
+                n,
+                entries: e,
+                symmetric: true,
+            },
+            conditions: vec![
+                Condition {
+                    terms: vec![(0, 1.0)],
+                    kind: Kind::Equal,
+                },
+                Condition {
+                    terms: vec![(2, 1.0), (5, -1.0), (3, 2.0)],
+                    kind: Kind::Equal,
+                },
+                Condition {
+                    terms: vec![(4, 1.0)],
+                    kind: Kind::Mini,
+                },
+            ],
+        }
+    }
+
+    #[test]
+    fn lambda1_before_and_lambda2_after_their_unknowns() {
+        let p = chain(8);
+        let (n, m) = (8, 3);
+        let primal = primal_amd(&p, &[], None).unwrap();
+        let fwd = doubled_order(&p, &primal, &[]);
+        assert_eq!(fwd.len(), n + 2 * m);
+        let inv = inverse(&fwd);
+        for (ci, c) in p.conditions.iter().enumerate() {
+            for &(j, _) in &c.terms {
+                assert!(inv[n + ci] < inv[j]);
+                assert!(inv[n + m + ci] > inv[j]);
+            }
+            // Immediately before the first unknown / after the last.
+            let first = c.terms.iter().map(|&(j, _)| inv[j]).min().unwrap();
+            let last = c.terms.iter().map(|&(j, _)| inv[j]).max().unwrap();
+            assert!(inv[n + ci] < first && first - inv[n + ci] <= m);
+            assert!(inv[n + m + ci] > last && inv[n + m + ci] - last <= m);
+        }
+    }
+
+    #[test]
+    fn unilateral_lambda2_go_last() {
+        let p = chain(8);
+        let primal = primal_amd(&p, &[], None).unwrap();
+        let fwd = doubled_order(&p, &primal, &[2]);
+        assert_eq!(*fwd.last().unwrap(), 8 + 3 + 2);
+        let kept = primal_amd(&p, &[6, 1], None).unwrap();
+        assert_eq!(&kept[6..], &[6, 1]);
+    }
+}

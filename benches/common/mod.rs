@@ -1,0 +1,78 @@
+//! Shared set-up of the RESO benchmarks: a 2D 5-point Laplacian on an
+//! N×N grid (the plane-strain stand-in of solver-notes §4) and the
+//! reference factorisation F of the notes.
+
+use std::time::Instant;
+
+use faer::sparse::{SparseColMat, Triplet};
+use gibi::solve::Matrix;
+
+/// Graph Laplacian of the N×N grid (singular: pure Neumann), both
+/// triangles, as elementary blocks would give it.
+pub fn laplacian(nx: usize) -> Matrix {
+    let id = |i: usize, j: usize| i * nx + j;
+    let mut entries = Vec::with_capacity(8 * nx * nx);
+    for i in 0..nx {
+        for j in 0..nx {
+            for (a, b) in [(i + 1, j), (i, j + 1)] {
+                if a < nx && b < nx {
+                    let (p, q) = (id(i, j), id(a, b));
+                    entries.extend([(p, p, 1.0), (q, q, 1.0), (p, q, -1.0), (q, p, -1.0)]);
+                }
+            }
+        }
+    }
+    Matrix {
+        n: nx * nx,
+        entries,
+        symmetric: true,
+    }
+}
+
+/// Boundary nodes of the grid, counter-clockwise from the origin.
+pub fn perimeter(nx: usize) -> Vec<usize> {
+    let mut v: Vec<usize> = (0..nx).collect();
+    v.extend((1..nx).map(|i| i * nx + nx - 1));
+    v.extend((0..nx - 1).rev().map(|j| (nx - 1) * nx + j));
+    v.extend((1..nx - 1).rev().map(|i| i * nx));
+    v
+}
+
+/// Seconds of one plain faer factorisation (AMD, symbolic + numeric LLᵀ,
+/// supernodal by the automatic rule) of K with the unknowns `fixed`
+/// eliminated (Dirichlet).
+pub fn reference_f(k: &Matrix, fixed: &[usize]) -> f64 {
+    let mut keep = vec![true; k.n];
+    for &j in fixed {
+        keep[j] = false;
+    }
+    let mut new = vec![usize::MAX; k.n];
+    let mut nn = 0;
+    for j in 0..k.n {
+        if keep[j] {
+            new[j] = nn;
+            nn += 1;
+        }
+    }
+    let trip: Vec<Triplet<usize, usize, f64>> = k
+        .entries
+        .iter()
+        .filter(|&&(i, j, _)| keep[i] && keep[j] && i <= j)
+        .map(|&(i, j, v)| Triplet::new(new[i], new[j], v))
+        .collect();
+    // Laplacian rows lose their eliminated neighbours: still SPD.
+    let a = SparseColMat::<usize, f64>::try_new_from_triplets(nn, nn, &trip).expect("valid");
+    let t = Instant::now();
+    let llt = a.as_ref().sp_cholesky(faer::Side::Upper).expect("SPD");
+    let s = t.elapsed().as_secs_f64();
+    std::hint::black_box(&llt);
+    s
+}
+
+/// Grid size, from `GIBI_BENCH_N` (default 500, n = 250,000).
+pub fn grid() -> usize {
+    std::env::var("GIBI_BENCH_N")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(500)
+}

@@ -1,0 +1,55 @@
+//! Bilateral RESO against one plain faer factorisation F (solver-notes §4,
+//! targets T1–T3): `cargo bench --bench reso`.
+
+mod common;
+
+use std::time::Instant;
+
+use gibi::solve::direct::{DirectOptions, Factorization};
+use gibi::solve::{Condition, Kind, Load, Problem};
+
+fn line(case: &str, n: usize, m: usize, f: f64, t: f64) {
+    println!(
+        "case={case} n={n} m={m} method=direct F_s={f:.3} reso_s={t:.3} ratio={:.3}",
+        t / f
+    );
+}
+
+fn main() {
+    let nx = common::grid();
+    let k = common::laplacian(nx);
+    let n = k.n;
+    let fixed = common::perimeter(nx);
+    let conditions: Vec<Condition> = fixed
+        .iter()
+        .map(|&j| Condition {
+            terms: vec![(j, 1.0)],
+            kind: Kind::Equal,
+        })
+        .collect();
+    let m = conditions.len();
+    let mut p = Problem { k, conditions };
+    let load = |s: f64| Load {
+        f: (0..n).map(|i| s * (1.0 + (i % 7) as f64)).collect(),
+        d: (0..m).map(|i| 0.01 * s * (i % 5) as f64).collect(),
+    };
+    let f = common::reference_f(&p.k, &fixed);
+
+    let t = Instant::now();
+    let mut fac = Factorization::new(&p, &DirectOptions::default()).expect("factorises");
+    let s = fac.solve(&[load(1.0)]).expect("solves");
+    line("bilateral", n, m, f, t.elapsed().as_secs_f64());
+    std::hint::black_box(&s);
+
+    let t = Instant::now();
+    let s = fac.solve(&[load(2.0)]).expect("solves");
+    line("rhs", n, m, f, t.elapsed().as_secs_f64());
+    std::hint::black_box(&s);
+
+    for e in &mut p.k.entries {
+        e.2 *= 2.0;
+    }
+    let t = Instant::now();
+    fac.refactor(&p).expect("refactors");
+    line("refactor", n, m, f, t.elapsed().as_secs_f64());
+}

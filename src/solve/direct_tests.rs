@@ -1,0 +1,215 @@
+//! Hand-computed cases for the bilateral RESO.
+
+use super::*;
+use crate::solve::problem::{Condition, Matrix};
+
+/// Two bars in series: k1 = 1 between unknowns 0–1, k2 = 0.5 between 1–2.
+fn bars(scale: f64) -> Matrix {
+    let mut entries = Vec::new();
+    for (a, b, k) in [(0, 1, 1.0 * scale), (1, 2, 0.5 * scale)] {
+        entries.extend([(a, a, k), (a, b, -k), (b, a, -k), (b, b, k)]);
+    }
+    Matrix {
+        n: 3,
+        entries,
+        symmetric: true,
+    }
+}
+
+fn eq(terms: &[(usize, f64)]) -> Condition {
+    Condition {
+        terms: terms.to_vec(),
+        kind: Kind::Equal,
+    }
+}
+
+fn close(a: &[f64], b: &[f64]) {
+    assert_eq!(a.len(), b.len());
+    for (x, y) in a.iter().zip(b) {
+        assert!((x - y).abs() <= 1e-12 * (1.0 + y.abs()), "{a:?} vs {b:?}");
+    }
+}
+
+fn blocked_bars() -> Problem {
+    Problem {
+        k: bars(1.0),
+        conditions: vec![eq(&[(0, 1.0)])],
+    }
+}
+
+fn load(f: [f64; 3], d: &[f64]) -> Load {
+    Load {
+        f: f.to_vec(),
+        d: d.to_vec(),
+    }
+}
+
+#[test]
+fn two_bars_in_series() {
+    let s = solve(
+        &blocked_bars(),
+        &[load([0.0, 0.0, 2.0], &[0.0])],
+        &Default::default(),
+    )
+    .unwrap();
+    close(&s[0].u, &[0.0, 2.0, 6.0]);
+    // K u + Cᵀλ = F at unknown 0: −2 + λ = 0.
+    close(&s[0].lambda, &[2.0]);
+    assert_eq!(s[0].active, vec![true]);
+}
+
+#[test]
+fn imposed_displacements() {
+    let p = Problem {
+        k: bars(1.0),
+        conditions: vec![eq(&[(0, 1.0)]), eq(&[(2, 1.0)])],
+    };
+    let s = solve(&p, &[load([0.0; 3], &[0.5, 1.5])], &Default::default()).unwrap();
+    close(&s[0].u, &[0.5, 5.0 / 6.0, 1.5]);
+    // Force in bar 1 = 1/3: reactions −(−1/3) at 0 and −(1/3) at 2.
+    close(&s[0].lambda, &[1.0 / 3.0, -1.0 / 3.0]);
+}
+
+#[test]
+fn two_term_relation() {
+    // u2 − u1 = 1 with u0 blocked: bar 2 stretched by 1, bar 1 unloaded.
+    let p = Problem {
+        k: bars(1.0),
+        conditions: vec![eq(&[(0, 1.0)]), eq(&[(2, 1.0), (1, -1.0)])],
+    };
+    let s = solve(&p, &[load([0.0; 3], &[0.0, 1.0])], &Default::default()).unwrap();
+    close(&s[0].u, &[0.0, 0.0, 1.0]);
+    close(&s[0].lambda, &[0.0, -0.5]);
+}
+
+#[test]
+fn several_right_hand_sides_and_refactor() {
+    let mut p = blocked_bars();
+    let mut f = Factorization::new(&p, &Default::default()).unwrap();
+    let loads = [load([0.0, 0.0, 2.0], &[0.0]), load([0.0, 3.0, 0.0], &[1.0])];
+    let s = f.solve(&loads).unwrap();
+    close(&s[0].u, &[0.0, 2.0, 6.0]);
+    close(&s[1].u, &[1.0, 4.0, 4.0]);
+    close(&s[1].lambda, &[3.0]);
+    p.k = bars(2.0);
+    assert!(f.same_pattern(&p));
+    f.refactor(&p).unwrap();
+    let s = f.solve(&loads[..1]).unwrap();
+    close(&s[0].u, &[0.0, 1.0, 3.0]);
+    close(&s[0].lambda, &[2.0]);
+}
+
+#[test]
+fn nothing_blocked_is_singular_and_names_the_mode() {
+    let p = Problem {
+        k: bars(1.0),
+        conditions: vec![],
+    };
+    match Factorization::new(&p, &Default::default()) {
+        Err(SolveError::Singular { mut dofs }) => {
+            dofs.sort();
+            assert_eq!(dofs, vec![0, 1, 2]);
+        }
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn half_blocked_rigid_mode_names_only_the_free_part() {
+    // Bars 0–1 blocked at 0; a separate bar 2–3 floats.
+    let mut k = bars(1.0);
+    k.n = 4;
+    k.entries.retain(|e| e.0 != 2 && e.1 != 2);
+    k.entries
+        .extend([(2, 2, 1.0), (2, 3, -1.0), (3, 2, -1.0), (3, 3, 1.0)]);
+    let p = Problem {
+        k,
+        conditions: vec![eq(&[(0, 1.0)])],
+    };
+    match Factorization::new(&p, &Default::default()) {
+        Err(SolveError::Singular { mut dofs }) => {
+            dofs.sort();
+            assert_eq!(dofs, vec![2, 3]);
+        }
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn doubly_blocked_and_untouched() {
+    let p = Problem {
+        k: bars(1.0),
+        conditions: vec![eq(&[(0, 1.0)]), eq(&[(0, 2.0)])],
+    };
+    assert_eq!(
+        Factorization::new(&p, &Default::default()).unwrap_err(),
+        SolveError::DoublyConstrained {
+            dof: 0,
+            conditions: vec![0, 1]
+        }
+    );
+    let mut k = bars(1.0);
+    k.n = 4;
+    let p = Problem {
+        k,
+        conditions: vec![eq(&[(0, 1.0)])],
+    };
+    assert_eq!(
+        Factorization::new(&p, &Default::default()).unwrap_err(),
+        SolveError::Untouched { dofs: vec![3] }
+    );
+}
+
+#[test]
+fn proportional_relations_are_dependent() {
+    let p = Problem {
+        k: bars(1.0),
+        conditions: vec![
+            eq(&[(0, 1.0)]),
+            eq(&[(1, 1.0), (2, -1.0)]),
+            eq(&[(2, 2.0), (1, -2.0)]),
+        ],
+    };
+    match Factorization::new(&p, &Default::default()) {
+        Err(SolveError::DependentConditions { conditions }) => {
+            assert!(conditions.contains(&1) && conditions.contains(&2));
+        }
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn non_symmetric_stiffness_goes_through_lu() {
+    let p = Problem {
+        k: Matrix {
+            n: 3,
+            entries: vec![
+                (0, 0, 1.0),
+                (1, 0, -1.0),
+                (1, 1, 2.0),
+                (1, 2, -0.5),
+                (2, 1, -1.0),
+                (2, 2, 1.0),
+            ],
+            symmetric: false,
+        },
+        conditions: vec![eq(&[(0, 1.0)])],
+    };
+    let s = solve(&p, &[load([0.0, 0.0, 1.0], &[1.0])], &Default::default()).unwrap();
+    close(&s[0].u, &[1.0, 1.0, 2.0]);
+    close(&s[0].lambda, &[-1.0]);
+}
+
+#[test]
+fn stab_lets_an_unloaded_mechanism_through() {
+    let p = Problem {
+        k: bars(1.0),
+        conditions: vec![],
+    };
+    let opts = DirectOptions {
+        check_residual: true,
+        stab: true,
+    };
+    let s = solve(&p, &[load([0.0; 3], &[])], &opts).unwrap();
+    close(&s[0].u, &[0.0; 3]);
+}
