@@ -9,10 +9,7 @@ use gibi::solve::direct::{DirectOptions, Factorization};
 use gibi::solve::{Condition, Kind, Load, Problem};
 
 fn line(case: &str, n: usize, m: usize, f: f64, t: f64) {
-    println!(
-        "case={case} n={n} m={m} method=direct F_s={f:.3} reso_s={t:.3} ratio={:.3}",
-        t / f
-    );
+    println!("case={case} n={n} m={m} method=direct F_s={f:.3} reso_s={t:.3} ratio={:.3}", t / f);
 }
 
 fn main() {
@@ -20,13 +17,8 @@ fn main() {
     let k = common::laplacian(nx);
     let n = k.n;
     let fixed = common::perimeter(nx);
-    let conditions: Vec<Condition> = fixed
-        .iter()
-        .map(|&j| Condition {
-            terms: vec![(j, 1.0)],
-            kind: Kind::Equal,
-        })
-        .collect();
+    let conditions: Vec<Condition> =
+        fixed.iter().map(|&j| Condition { terms: vec![(j, 1.0)], kind: Kind::Equal }).collect();
     let m = conditions.len();
     let mut p = Problem { k, conditions };
     let load = |s: f64| Load {

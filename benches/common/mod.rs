@@ -22,11 +22,7 @@ pub fn laplacian(nx: usize) -> Matrix {
             }
         }
     }
-    Matrix {
-        n: nx * nx,
-        entries,
-        symmetric: true,
-    }
+    Matrix { n: nx * nx, entries, symmetric: true }
 }
 
 /// Boundary nodes of the grid, counter-clockwise from the origin.
@@ -71,8 +67,5 @@ pub fn reference_f(k: &Matrix, fixed: &[usize]) -> f64 {
 
 /// Grid size, from `GIBI_BENCH_N` (default 500, n = 250,000).
 pub fn grid() -> usize {
-    std::env::var("GIBI_BENCH_N")
-        .ok()
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(500)
+    std::env::var("GIBI_BENCH_N").ok().and_then(|s| s.parse().ok()).unwrap_or(500)
 }

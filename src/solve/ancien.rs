@@ -58,20 +58,13 @@ pub fn run(
     let (u, lambda) = if rows.is_empty() {
         // No condition: plain solve (K_c must then be regular).
         old.active = Vec::new();
-        old.set_status(&[]).map_err(|_| SolveError::Singular {
-            dofs: (0..n).collect(),
-        })?;
+        old.set_status(&[]).map_err(|_| SolveError::Singular { dofs: (0..n).collect() })?;
         old.solve()?;
         (old.u.clone(), Vec::new())
     } else {
         (old.u.clone(), old.lambda.clone())
     };
-    Ok(AncienResult {
-        u,
-        lambda,
-        active,
-        records,
-    })
+    Ok(AncienResult { u, lambda, active, records })
 }
 
 struct Old<'a> {
@@ -102,11 +95,7 @@ impl<'a> Old<'a> {
         if kc.nrows() != n || kc.ncols() != n || sense.len() != m || d.len() != m {
             return bad("dimensions differ");
         }
-        if rows
-            .iter()
-            .flatten()
-            .any(|&(j, v)| j >= n || !v.is_finite())
-        {
+        if rows.iter().flatten().any(|&(j, v)| j >= n || !v.is_finite()) {
             return bad("row entry out of range or not finite");
         }
         let kc = Mat::<f64>::from_fn(n, n, |i, j| 0.5 * (kc[(i, j)] + kc[(j, i)]));
@@ -118,24 +107,17 @@ impl<'a> Old<'a> {
         if sense.iter().any(|&s| s != 1.0 && s != -1.0) {
             return bad("sense must be ±1");
         }
-        if p.k_ref
-            .is_some_and(|k| k.len() != m || k.iter().any(|&v| !(v.is_finite() && v > 0.0)))
-        {
+        if p.k_ref.is_some_and(|k| k.len() != m || k.iter().any(|&v| !(v.is_finite() && v > 0.0))) {
             return bad("k_ref must hold one positive value per condition");
         }
-        let kmax = (0..n)
-            .flat_map(|j| kc.col_as_slice(j).to_vec())
-            .fold(0.0_f64, |a, v| a.max(v.abs()));
+        let kmax = (0..n).flat_map(|j| kc.col_as_slice(j).to_vec()).fold(0.0_f64, |a, v| a.max(v.abs()));
         // The stiffness reference of the singularity tests.
         let kmax = p.k_ref.unwrap_or(&[]).iter().fold(kmax, |a, &v| a.max(v));
         // §2.2 scaling, as Cast3M: k_i from the stiffness rows of the dofs
         // of condition i, κ = 1.5 k, σ = κ/ĉ, α = 2κ.
         let (mut sigma, mut alpha, mut chat) = (vec![0.0; m], vec![0.0; m], vec![0.0; m]);
         for (i, r) in rows.iter().enumerate() {
-            let mut k = r
-                .iter()
-                .flat_map(|&(j, _)| kc.col_as_slice(j).to_vec())
-                .fold(0.0_f64, |a, v| a.max(v.abs()));
+            let mut k = r.iter().flat_map(|&(j, _)| kc.col_as_slice(j).to_vec()).fold(0.0_f64, |a, v| a.max(v.abs()));
             if k.is_nan() || k <= 1e-12 * kmax {
                 k = if kmax > 0.0 { kmax } else { 1.0 };
             }
@@ -227,9 +209,7 @@ impl<'a> Old<'a> {
     /// Solves the current system for `rhs`, with one refinement step.
     fn solve_rhs(&self, rhs: &[f64]) -> Result<Vec<f64>, SolveError> {
         let Some(f) = &self.factor else {
-            return Err(SolveError::Other(
-                "old method: solve before factorisation".into(),
-            ));
+            return Err(SolveError::Other("old method: solve before factorisation".into()));
         };
         let mut y = rhs.to_vec();
         f.solve_in_place(&mut y);
@@ -287,9 +267,8 @@ impl Backend for Old<'_> {
         self.lambda = vec![0.0; m];
         // x in the units of the condensed method: λ/(2σ) when active,
         // σ(d − c·u)/(2α) (the scaled gap of §2.4) when inactive.
-        let mut x: Vec<f64> = (0..m)
-            .map(|i| self.sigma[i] * (self.d[i] - self.row_dot(i, &self.u)) / (2.0 * self.alpha[i]))
-            .collect();
+        let mut x: Vec<f64> =
+            (0..m).map(|i| self.sigma[i] * (self.d[i] - self.row_dot(i, &self.u)) / (2.0 * self.alpha[i])).collect();
         for (p, &i) in self.list.iter().enumerate() {
             x[i] = 0.5 * (y[p] + y[n + a + p]);
             self.lambda[i] = self.sigma[i] * (y[p] + y[n + a + p]);
@@ -300,9 +279,7 @@ impl Backend for Old<'_> {
     fn release(&mut self, i: usize) -> Result<(bool, RigidMode), SolveError> {
         let (n, a, m) = (self.n(), self.list.len(), self.rows.len());
         let Some(p) = self.list.iter().position(|&k| k == i) else {
-            return Err(SolveError::Other(
-                "old method: release of an inactive condition".into(),
-            ));
+            return Err(SolveError::Other("old method: release of an inactive condition".into()));
         };
         // Impose c_i r = 1 with the other active rows held and no load:
         // K r = −Cᵀμ, and rᵀK r = −μ_i is the stiffness that condition i
@@ -312,27 +289,17 @@ impl Backend for Old<'_> {
         rhs[n + a + p] = self.sigma[i];
         let y = self.solve_rhs(&rhs)?;
         let r = &y[a..a + n];
-        let kr: f64 = (0..n)
-            .map(|j| r[j] * (0..n).map(|l| self.kc[(j, l)] * r[l]).sum::<f64>())
-            .sum();
+        let kr: f64 = (0..n).map(|j| r[j] * (0..n).map(|l| self.kc[(j, l)] * r[l]).sum::<f64>()).sum();
         let rr: f64 = r.iter().map(|v| v * v).sum();
         let singular = kr.abs() <= EPS_SING * self.kmax * rr;
         // Orient and normalise so that s_i c_i u_r = ĉ_i (unit motion of the
         // normalised row, away from the support).
         let ur: Vec<f64> = r.iter().map(|v| self.sense[i] * self.chat[i] * v).collect();
-        let motion = (0..m)
-            .map(|j| self.sigma[j] / (2.0 * self.alpha[j]) * self.sense[j] * self.row_dot(j, &ur))
-            .collect();
+        let motion =
+            (0..m).map(|j| self.sigma[j] / (2.0 * self.alpha[j]) * self.sense[j] * self.row_dot(j, &ur)).collect();
         let work = self.fc.iter().zip(&ur).map(|(f, u)| f * u).sum();
         let work_scale = self.fc.iter().zip(&ur).map(|(f, u)| (f * u).abs()).sum();
-        Ok((
-            singular,
-            RigidMode {
-                motion,
-                work,
-                work_scale,
-            },
-        ))
+        Ok((singular, RigidMode { motion, work, work_scale }))
     }
 
     fn dependent(&mut self, active: &[bool]) -> Vec<usize> {
@@ -342,9 +309,7 @@ impl Backend for Old<'_> {
         let k = list.len();
         let gram = Mat::<f64>::from_fn(k, k, |p, q| {
             let (ri, rj) = (&self.rows[list[p]], &self.rows[list[q]]);
-            ri.iter()
-                .map(|&(j, v)| v * rj.iter().filter(|e| e.0 == j).map(|e| e.1).sum::<f64>())
-                .sum()
+            ri.iter().map(|&(j, v)| v * rj.iter().filter(|e| e.0 == j).map(|e| e.1).sum::<f64>()).sum()
         });
         let scale: Vec<f64> = (0..k).map(|p| gram[(p, p)]).collect();
         let f = DenseLdlt::factor(gram.as_ref());
@@ -355,10 +320,7 @@ impl Backend for Old<'_> {
         let mut c: Vec<f64> = (0..b).map(|p| gram[(p, b)]).collect();
         lead.solve_in_place(&mut c);
         let cmax = c.iter().fold(1.0_f64, |s, v| s.max(v.abs()));
-        let mut out: Vec<usize> = (0..b)
-            .filter(|&p| c[p].abs() > 1e-8 * cmax)
-            .map(|p| list[p])
-            .collect();
+        let mut out: Vec<usize> = (0..b).filter(|&p| c[p].abs() > 1e-8 * cmax).map(|p| list[p]).collect();
         out.push(list[b]);
         out
     }
@@ -382,16 +344,10 @@ mod tests {
         };
         let kc = Mat::<f64>::from_fn(keep.len(), keep.len(), |a, b| {
             let y = solve_r(&|r| k[(rest[r], keep[b])]);
-            k[(keep[a], keep[b])]
-                - (0..rest.len())
-                    .map(|r| k[(keep[a], rest[r])] * y[r])
-                    .sum::<f64>()
+            k[(keep[a], keep[b])] - (0..rest.len()).map(|r| k[(keep[a], rest[r])] * y[r]).sum::<f64>()
         });
         let y = solve_r(&|r| f[rest[r]]);
-        let fc = keep
-            .iter()
-            .map(|&p| f[p] - (0..rest.len()).map(|r| k[(p, rest[r])] * y[r]).sum::<f64>())
-            .collect();
+        let fc = keep.iter().map(|&p| f[p] - (0..rest.len()).map(|r| k[(p, rest[r])] * y[r]).sum::<f64>()).collect();
         (kc, fc)
     }
 
@@ -399,10 +355,8 @@ mod tests {
     /// dofs only, as Cast3M's SUPER does: same answers as the full solve.
     #[test]
     fn old_method_on_guyan_condensed_beams() {
-        let cases: [(&[f64], usize, &[usize]); 2] = [
-            (&[0.0, 0.5, 1.0, 2.0], 2, &[0, 4, 6]),
-            (&[0.0, 1.0, 4.0], 2, &[0, 4]),
-        ];
+        let cases: [(&[f64], usize, &[usize]); 2] =
+            [(&[0.0, 0.5, 1.0, 2.0], 2, &[0, 4, 6]), (&[0.0, 1.0, 4.0], 2, &[0, 4])];
         for (x, loaded, supports) in cases {
             let n = 2 * x.len();
             let mut f = vec![0.0; n];
@@ -413,23 +367,13 @@ mod tests {
             }
             let full = solve(&p, &StatusOptions::default()).unwrap();
             let (kc, fc) = guyan(&p.k, &f, supports);
-            let rows: Vec<Vec<(usize, f64)>> =
-                (0..supports.len()).map(|q| vec![(q, 1.0)]).collect();
+            let rows: Vec<Vec<(usize, f64)>> = (0..supports.len()).map(|q| vec![(q, 1.0)]).collect();
             let sense = vec![1.0; supports.len()];
             let d = vec![0.0; supports.len()];
             // k_i from the full stiffness (§2.2), as the caller would.
-            let k_ref: Vec<f64> = supports
-                .iter()
-                .map(|&s| (0..n).fold(0.0_f64, |a, l| a.max(p.k[(s, l)].abs())))
-                .collect();
-            let pb = AncienProblem {
-                kc: &kc,
-                fc: &fc,
-                rows: &rows,
-                sense: &sense,
-                d: &d,
-                k_ref: Some(&k_ref),
-            };
+            let k_ref: Vec<f64> =
+                supports.iter().map(|&s| (0..n).fold(0.0_f64, |a, l| a.max(p.k[(s, l)].abs()))).collect();
+            let pb = AncienProblem { kc: &kc, fc: &fc, rows: &rows, sense: &sense, d: &d, k_ref: Some(&k_ref) };
             let old = run(&pb, &StatusOptions::default(), &mut |_| {}).unwrap();
             for (q, &s) in supports.iter().enumerate() {
                 assert!(
@@ -450,24 +394,12 @@ mod tests {
         // Case (d) started from all inactive: the beam would be free.
         let mut f = vec![0.0; 6];
         f[2] = -1.0;
-        let p = Dense::new(beam(&[0.0, 1.0, 4.0], 1.0), f)
-            .cond(&[(0, 1.0)], MINI, 0.0)
-            .cond(&[(4, 1.0)], MINI, 0.0);
-        let o = StatusOptions {
-            start: Some(vec![false, false]),
-            ..Default::default()
-        };
+        let p = Dense::new(beam(&[0.0, 1.0, 4.0], 1.0), f).cond(&[(0, 1.0)], MINI, 0.0).cond(&[(4, 1.0)], MINI, 0.0);
+        let o = StatusOptions { start: Some(vec![false, false]), ..Default::default() };
         let a = solve(&p, &o).unwrap();
         assert!((a.lambda[0] + 0.75).abs() < 1e-10 && (a.lambda[1] + 0.25).abs() < 1e-10);
         assert_eq!(a.iterations, 1);
-        let pb = AncienProblem {
-            kc: &p.k,
-            fc: &p.f,
-            rows: &p.rows,
-            sense: &p.sense,
-            d: &p.d,
-            k_ref: None,
-        };
+        let pb = AncienProblem { kc: &p.k, fc: &p.f, rows: &p.rows, sense: &p.sense, d: &p.d, k_ref: None };
         let b = run(&pb, &o, &mut |_| {}).unwrap();
         assert!((b.lambda[0] + 0.75).abs() < 1e-10);
     }
@@ -475,20 +407,10 @@ mod tests {
     #[test]
     fn no_condition_is_a_plain_solve() {
         let k = Mat::<f64>::from_fn(1, 1, |_, _| 4.0);
-        let pb = AncienProblem {
-            kc: &k,
-            fc: &[2.0],
-            rows: &[],
-            sense: &[],
-            d: &[],
-            k_ref: None,
-        };
+        let pb = AncienProblem { kc: &k, fc: &[2.0], rows: &[], sense: &[], d: &[], k_ref: None };
         let r = run(&pb, &StatusOptions::default(), &mut |_| {}).unwrap();
         assert_eq!(r.u, vec![0.5]);
-        let pb = AncienProblem {
-            fc: &[2.0, 1.0],
-            ..pb
-        };
+        let pb = AncienProblem { fc: &[2.0, 1.0], ..pb };
         let bad = run(&pb, &StatusOptions::default(), &mut |_| {});
         assert!(matches!(bad, Err(SolveError::Other(_))));
     }

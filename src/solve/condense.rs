@@ -46,17 +46,10 @@ struct Interrupted {
 
 impl Interrupted {
     /// `sys`, if given, must have been built with the tail `fwd[cut..]`.
-    fn new(
-        p: &Problem,
-        fwd: Vec<usize>,
-        cut: usize,
-        sys: Option<Doubled>,
-    ) -> Result<Self, SolveError> {
+    fn new(p: &Problem, fwd: Vec<usize>, cut: usize, sys: Option<Doubled>) -> Result<Self, SolveError> {
         check_structure(p)?;
         if !p.k.symmetric {
-            return Err(SolveError::Other(
-                "condensation needs a symmetric stiffness".into(),
-            ));
+            return Err(SolveError::Other("condensation needs a symmetric stiffness".into()));
         }
         let tail = fwd[cut..].to_vec();
         let sys = match sys {
@@ -67,17 +60,9 @@ impl Interrupted {
         let sup = factor.supernodal();
         let n_sup = sup.n_supernodes();
         if tail.is_empty() || n_sup == 0 || sup.supernode_begin()[n_sup - 1] > cut {
-            return Err(SolveError::Other(
-                "the condensed block does not form one trailing supernode".into(),
-            ));
+            return Err(SolveError::Other("the condensed block does not form one trailing supernode".into()));
         }
-        let mut it = Interrupted {
-            sys,
-            factor,
-            cut,
-            tail,
-            schur: Mat::zeros(0, 0),
-        };
+        let mut it = Interrupted { sys, factor, cut, tail, schur: Mat::zeros(0, 0) };
         it.numeric(p)?;
         Ok(it)
     }
@@ -109,14 +94,7 @@ impl Interrupted {
             self.sys.add_diag(t, s);
         }
         let sys = &self.sys;
-        if let Err(z) = self.factor.factor(
-            &sys.col_ptr,
-            &sys.row_idx,
-            &sys.values,
-            &sys.row_scale,
-            self.cut,
-            None,
-        ) {
+        if let Err(z) = self.factor.factor(&sys.col_ptr, &sys.row_idx, &sys.values, &sys.row_scale, self.cut, None) {
             return Err(diagnose(sys, &mut self.factor, z));
         }
         let f = self.factor.ldlt_ref();
@@ -208,9 +186,7 @@ pub struct Condenser {
 
 impl Condenser {
     pub fn new(p: &Problem) -> Result<Self, SolveError> {
-        let uni: Vec<usize> = (0..p.conditions.len())
-            .filter(|&i| p.conditions[i].kind.is_unilateral())
-            .collect();
+        let uni: Vec<usize> = (0..p.conditions.len()).filter(|&i| p.conditions[i].kind.is_unilateral()).collect();
         if uni.is_empty() {
             return Err(SolveError::Other("no unilateral condition".into()));
         }
@@ -242,11 +218,7 @@ impl Condenser {
     /// New values on the same structure: numeric factorisation only.
     pub fn refactor(&mut self, p: &Problem) -> Result<(), SolveError> {
         self.core.numeric(p)?;
-        self.rows = self
-            .uni
-            .iter()
-            .map(|&i| p.conditions[i].terms.clone())
-            .collect();
+        self.rows = self.uni.iter().map(|&i| p.conditions[i].terms.clone()).collect();
         Ok(())
     }
 
@@ -315,11 +287,7 @@ impl Condenser {
             act[i] = active[q];
             lambda[i] = if active[q] { 2.0 * sg[i] * x[q] } else { 0.0 };
         }
-        Ok(Solution {
-            u: z[..n].to_vec(),
-            lambda,
-            active: act,
-        })
+        Ok(Solution { u: z[..n].to_vec(), lambda, active: act })
     }
 }
 
@@ -367,9 +335,7 @@ impl SchurOnto {
         let z = self.core.solve_with_tail(&rhs, tail_values);
         Solution {
             u: z[..n].to_vec(),
-            lambda: (0..m)
-                .map(|i| sys.scaling.sigma[i] * (z[n + i] + z[n + m + i]))
-                .collect(),
+            lambda: (0..m).map(|i| sys.scaling.sigma[i] * (z[n + i] + z[n + m + i])).collect(),
             active: vec![true; m],
         }
     }
@@ -408,9 +374,7 @@ pub fn schur_onto(p: &Problem, keep: &[usize]) -> Result<SchurOnto, SolveError> 
     } {
         cut -= 1;
     }
-    Ok(SchurOnto {
-        core: Interrupted::new(p, fwd, cut, None)?,
-    })
+    Ok(SchurOnto { core: Interrupted::new(p, fwd, cut, None)? })
 }
 
 #[cfg(test)]

@@ -12,18 +12,11 @@ fn chain(n: usize) -> Matrix {
         let k = 1.0 + 0.5 * i as f64;
         entries.extend([(i, i, k), (i, i + 1, -k), (i + 1, i, -k), (i + 1, i + 1, k)]);
     }
-    Matrix {
-        n,
-        entries,
-        symmetric: true,
-    }
+    Matrix { n, entries, symmetric: true }
 }
 
 fn cond(terms: &[(usize, f64)], kind: Kind) -> Condition {
-    Condition {
-        terms: terms.to_vec(),
-        kind,
-    }
+    Condition { terms: terms.to_vec(), kind }
 }
 
 fn dense(p: &Problem) -> Mat<f64> {
@@ -54,10 +47,7 @@ fn trailing_supernode_gives_g_h_and_xtf() {
             cond(&[(4, 1.0)], Kind::Maxi),
         ],
     };
-    let load = Load {
-        f: vec![0.3, -1.0, 0.0, 2.0, 0.5, -0.7],
-        d: vec![-0.1, 0.2, 0.05, -0.3, 0.4],
-    };
+    let load = Load { f: vec![0.3, -1.0, 0.0, 2.0, 0.5, -0.7], d: vec![-0.1, 0.2, 0.05, -0.3, 0.4] };
     let c = Condenser::new(&p).unwrap();
     let cd = c.condensed(&load).unwrap();
     let m = p.conditions.len();
@@ -117,10 +107,7 @@ fn mixed() -> (Problem, Load) {
             cond(&[(4, 1.0)], Kind::Mini),
         ],
     };
-    let load = Load {
-        f: vec![0.1, -0.4, 0.0, 1.0, 0.5, -2.0, 0.7],
-        d: vec![0.2, -0.1, 0.3, 0.05, -0.2],
-    };
+    let load = Load { f: vec![0.1, -0.4, 0.0, 1.0, 0.5, -2.0, 0.7], d: vec![0.2, -0.1, 0.3, 0.05, -0.2] };
     (p, load)
 }
 
@@ -144,20 +131,12 @@ fn check_against_direct(active: &[bool]) {
     for (q, &i) in c.unilateral().iter().enumerate() {
         q_of[i] = Some(q);
     }
-    let keep: Vec<usize> = (0..p.conditions.len())
-        .filter(|&i| q_of[i].is_none_or(|q| active[q]))
-        .collect();
+    let keep: Vec<usize> = (0..p.conditions.len()).filter(|&i| q_of[i].is_none_or(|q| active[q])).collect();
     let pr = Problem {
         k: p.k.clone(),
-        conditions: keep
-            .iter()
-            .map(|&i| cond(&p.conditions[i].terms, Kind::Equal))
-            .collect(),
+        conditions: keep.iter().map(|&i| cond(&p.conditions[i].terms, Kind::Equal)).collect(),
     };
-    let lr = Load {
-        f: load.f.clone(),
-        d: keep.iter().map(|&i| load.d[i]).collect(),
-    };
+    let lr = Load { f: load.f.clone(), d: keep.iter().map(|&i| load.d[i]).collect() };
     let r = direct::solve(&pr, &[lr], &DirectOptions::default()).unwrap();
     for j in 0..p.k.n {
         assert_close(s.u[j], r[0].u[j], 1.0 + r[0].u[j].abs());
@@ -206,17 +185,8 @@ fn refactor_reuses_the_analysis() {
 #[test]
 fn static_condensation_onto_kept_unknowns() {
     let n = 6;
-    let p = Problem {
-        k: chain(n),
-        conditions: vec![
-            cond(&[(0, 1.0)], Kind::Equal),
-            cond(&[(5, 1.0)], Kind::Equal),
-        ],
-    };
-    let load = Load {
-        f: vec![0.0, 1.0, -0.5, 0.0, 2.0, 0.3],
-        d: vec![0.1, -0.2],
-    };
+    let p = Problem { k: chain(n), conditions: vec![cond(&[(0, 1.0)], Kind::Equal), cond(&[(5, 1.0)], Kind::Equal)] };
+    let load = Load { f: vec![0.0, 1.0, -0.5, 0.0, 2.0, 0.3], d: vec![0.1, -0.2] };
     let s = schur_onto(&p, &[2, 5]).unwrap();
     // The tail: kept unknowns plus the multipliers of the BLOQ on 5.
     let tail = s.unknowns().to_vec();
@@ -239,10 +209,7 @@ fn static_condensation_onto_kept_unknowns() {
 #[test]
 fn pure_stiffness_condensation_is_the_guyan_matrix() {
     // Dof 0 blocked (not kept): K_c is K without dof 0, condensed on {1, 3}.
-    let p = Problem {
-        k: chain(4),
-        conditions: vec![cond(&[(0, 1.0)], Kind::Equal)],
-    };
+    let p = Problem { k: chain(4), conditions: vec![cond(&[(0, 1.0)], Kind::Equal)] };
     let s = schur_onto(&p, &[1, 3]).unwrap();
     assert_eq!(s.unknowns(), &[1, 3]);
     // Springs 1.5 (1–2) and 2 (2–3) in series between 1 and 3: 6/7; plus

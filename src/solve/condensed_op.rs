@@ -41,28 +41,14 @@ impl<'a> TOperator<'a> {
         if c.g.nrows() != m || c.g.ncols() != m {
             return bad("G is not m×m");
         }
-        if [
-            c.alpha.len(),
-            c.sigma.len(),
-            c.sense.len(),
-            c.xtf.len(),
-            c.rows.len(),
-            c.d.len(),
-        ]
-        .iter()
-        .any(|&l| l != m)
-        {
+        if [c.alpha.len(), c.sigma.len(), c.sense.len(), c.xtf.len(), c.rows.len(), c.d.len()].iter().any(|&l| l != m) {
             return bad("vector lengths differ");
         }
         let finite = |v: &[f64]| v.iter().all(|x| x.is_finite());
         if !finite(&c.h) || !finite(&c.xtf) || !finite(&c.d) {
             return bad("non-finite h, XᵀF or d");
         }
-        if c.alpha
-            .iter()
-            .chain(&c.sigma)
-            .any(|&a| !(a > 0.0 && a.is_finite()))
-        {
+        if c.alpha.iter().chain(&c.sigma).any(|&a| !(a > 0.0 && a.is_finite())) {
             return bad("α and σ must be positive");
         }
         if c.sense.iter().any(|&s| s != 1.0 && s != -1.0) {
@@ -73,20 +59,8 @@ impl<'a> TOperator<'a> {
             return bad("non-finite G");
         }
         let scale = (0..m).map(|k| g[(k, k)].abs().max(c.alpha[k])).collect();
-        let chat = c
-            .rows
-            .iter()
-            .map(|r| r.iter().fold(1.0_f64, |a, &(_, v)| a.max(v.abs())))
-            .collect();
-        Ok(TOperator {
-            c,
-            g,
-            scale,
-            chat,
-            active: vec![true; m],
-            factor: None,
-            fresh_residual: 0.0,
-        })
+        let chat = c.rows.iter().map(|r| r.iter().fold(1.0_f64, |a, &(_, v)| a.max(v.abs()))).collect();
+        Ok(TOperator { c, g, scale, chat, active: vec![true; m], factor: None, fresh_residual: 0.0 })
     }
 
     fn t_matrix(&self, active: &[bool]) -> Mat<f64> {
@@ -149,20 +123,14 @@ impl<'a> TOperator<'a> {
 impl Backend for TOperator<'_> {
     fn set_status(&mut self, active: &[bool]) -> Result<(), usize> {
         if let Some(f) = &self.factor {
-            let changed: Vec<usize> = (0..active.len())
-                .filter(|&k| active[k] != self.active[k])
-                .collect();
+            let changed: Vec<usize> = (0..active.len()).filter(|&k| active[k] != self.active[k]).collect();
             if changed.is_empty() {
                 return Ok(());
             }
             if f.updates() + changed.len() <= MAX_UPDATES {
                 let mut up = f.clone();
                 for &k in &changed {
-                    let delta = if active[k] {
-                        self.c.alpha[k]
-                    } else {
-                        -self.c.alpha[k]
-                    };
+                    let delta = if active[k] { self.c.alpha[k] } else { -self.c.alpha[k] };
                     up.update_diag(k, delta);
                 }
                 if self.check(&up, active).is_none() {
@@ -185,9 +153,7 @@ impl Backend for TOperator<'_> {
 
     fn solve(&mut self) -> Result<Vec<f64>, SolveError> {
         let Some(f) = &self.factor else {
-            return Err(SolveError::Other(
-                "status solve before factorisation".into(),
-            ));
+            return Err(SolveError::Other("status solve before factorisation".into()));
         };
         let (mut x, mut res) = self.solve_with(f);
         let grew = res > RESIDUAL_OK && res > 10.0 * self.fresh_residual;
@@ -209,9 +175,7 @@ impl Backend for TOperator<'_> {
         let c = self.c;
         let m = c.h.len();
         let Some(f) = &self.factor else {
-            return Err(SolveError::Other(
-                "status solve before factorisation".into(),
-            ));
+            return Err(SolveError::Other("status solve before factorisation".into()));
         };
         let mut z = vec![0.0; m];
         z[i] = 1.0;
@@ -234,21 +198,8 @@ impl Backend for TOperator<'_> {
         // the normalised row, as the old method reports it.
         let unit = c.sigma[i] * self.chat[i] / 2.0;
         let work = -2.0 * unit * c.xtf.iter().zip(&y).map(|(a, b)| a * b).sum::<f64>();
-        let work_scale = 2.0
-            * unit
-            * c.xtf
-                .iter()
-                .zip(&y)
-                .map(|(a, b)| (a * b).abs())
-                .sum::<f64>();
-        Ok((
-            singular,
-            RigidMode {
-                motion,
-                work,
-                work_scale,
-            },
-        ))
+        let work_scale = 2.0 * unit * c.xtf.iter().zip(&y).map(|(a, b)| (a * b).abs()).sum::<f64>();
+        Ok((singular, RigidMode { motion, work, work_scale }))
     }
 
     fn dependent(&mut self, active: &[bool]) -> Vec<usize> {

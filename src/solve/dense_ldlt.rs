@@ -33,19 +33,9 @@ impl DenseLdlt {
         // Sequential on purpose: results must not depend on a thread pool
         // (and faer's global parallelism may be disabled by the embedder).
         let par = Par::Seq;
-        let mut mem = MemBuffer::new(ldlt::factor::cholesky_in_place_scratch::<f64>(
-            n,
-            par,
-            Default::default(),
-        ));
+        let mut mem = MemBuffer::new(ldlt::factor::cholesky_in_place_scratch::<f64>(n, par, Default::default()));
         let stack = MemStack::new(&mut mem);
-        let res = ldlt::factor::cholesky_in_place(
-            ld.as_mut(),
-            Default::default(),
-            par,
-            stack,
-            Default::default(),
-        );
+        let res = ldlt::factor::cholesky_in_place(ld.as_mut(), Default::default(), par, stack, Default::default());
         if let Err(ldlt::factor::LdltError::ZeroPivot { index }) = res {
             for k in index + 1..n {
                 ld[(k, k)] = f64::NAN;
@@ -183,10 +173,7 @@ mod tests {
             for r in 0..n {
                 for c in 0..=r {
                     let (u, v) = (f.ld[(r, c)], fresh.ld[(r, c)]);
-                    assert!(
-                        (u - v).abs() <= 1e-9 * (1.0 + v.abs()),
-                        "step {step} ({r},{c}): {u} vs {v}"
-                    );
+                    assert!((u - v).abs() <= 1e-9 * (1.0 + v.abs()), "step {step} ({r},{c}): {u} vs {v}");
                 }
             }
         }
@@ -198,16 +185,10 @@ mod tests {
         // [[1, 1], [1, 1]]: second pivot exactly 0.
         let a = Mat::<f64>::from_fn(2, 2, |_, _| 1.0);
         let f = DenseLdlt::factor(a.as_ref());
-        assert_eq!(
-            f.first_bad_pivot(&[true, true], &[1.0, 1.0], 1e-10),
-            Some(1)
-        );
+        assert_eq!(f.first_bad_pivot(&[true, true], &[1.0, 1.0], 1e-10), Some(1));
         // Wrong sign: [[1, 0], [0, 1]] with the second expected negative.
         let a = Mat::<f64>::identity(2, 2);
         let f = DenseLdlt::factor(a.as_ref());
-        assert_eq!(
-            f.first_bad_pivot(&[true, false], &[1.0, 1.0], 1e-10),
-            Some(1)
-        );
+        assert_eq!(f.first_bad_pivot(&[true, false], &[1.0, 1.0], 1e-10), Some(1));
     }
 }

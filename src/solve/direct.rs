@@ -26,10 +26,7 @@ pub struct DirectOptions {
 
 impl Default for DirectOptions {
     fn default() -> Self {
-        DirectOptions {
-            check_residual: true,
-            stab: false,
-        }
+        DirectOptions { check_residual: true, stab: false }
     }
 }
 
@@ -67,25 +64,14 @@ impl Factorization {
             let primal = ordering::primal_amd(p, &[], Some((&sys.col_ptr, &sys.row_idx)))?;
             let fwd = ordering::doubled_order(p, &primal, &[]);
             let mut f = SymFactor::analyse(&sys.col_ptr, &sys.row_idx, fwd)?;
-            if let Err(z) = f.factor(
-                &sys.col_ptr,
-                &sys.row_idx,
-                &sys.values,
-                &sys.row_scale,
-                usize::MAX,
-                None,
-            ) {
+            if let Err(z) = f.factor(&sys.col_ptr, &sys.row_idx, &sys.values, &sys.row_scale, usize::MAX, None) {
                 return Err(diagnose(&sys, &mut f, z));
             }
             Engine::Ldlt(f)
         } else {
             Engine::Lu(LuFactor::new(&sys.col_ptr, &sys.row_idx, &sys.values)?)
         };
-        Ok(Factorization {
-            sys,
-            engine,
-            opts: *opts,
-        })
+        Ok(Factorization { sys, engine, opts: *opts })
     }
 
     /// Whether `p` has the structure this factorisation was built for.
@@ -100,14 +86,7 @@ impl Factorization {
         let sys = &self.sys;
         match &mut self.engine {
             Engine::Ldlt(f) => {
-                if let Err(z) = f.factor(
-                    &sys.col_ptr,
-                    &sys.row_idx,
-                    &sys.values,
-                    &sys.row_scale,
-                    usize::MAX,
-                    None,
-                ) {
+                if let Err(z) = f.factor(&sys.col_ptr, &sys.row_idx, &sys.values, &sys.row_scale, usize::MAX, None) {
                     return Err(diagnose(sys, f, z));
                 }
             }
@@ -155,9 +134,7 @@ impl Factorization {
                 let zc = z.col(j);
                 Solution {
                     u: (0..n).map(|i| zc[i]).collect(),
-                    lambda: (0..m)
-                        .map(|i| self.sys.scaling.sigma[i] * (zc[n + i] + zc[n + m + i]))
-                        .collect(),
+                    lambda: (0..m).map(|i| self.sys.scaling.sigma[i] * (zc[n + i] + zc[n + m + i])).collect(),
                     active: vec![true; m],
                 }
             })
@@ -231,11 +208,7 @@ pub(crate) fn backward_error(sys: &Doubled, b: &Mat<f64>, z: &Mat<f64>) -> f64 {
 }
 
 /// Convenience: factorise and solve in one call.
-pub fn solve(
-    p: &Problem,
-    loads: &[Load],
-    opts: &DirectOptions,
-) -> Result<Vec<Solution>, SolveError> {
+pub fn solve(p: &Problem, loads: &[Load], opts: &DirectOptions) -> Result<Vec<Solution>, SolveError> {
     Factorization::new(p, opts)?.solve(loads)
 }
 
@@ -266,10 +239,7 @@ pub fn check_structure(p: &Problem) -> Result<(), SolveError> {
         return Err(SolveError::Untouched { dofs: untouched });
     }
     if let Some((dof, cs)) = single.iter().enumerate().find(|(_, c)| c.len() > 1) {
-        return Err(SolveError::DoublyConstrained {
-            dof,
-            conditions: cs.clone(),
-        });
+        return Err(SolveError::DoublyConstrained { dof, conditions: cs.clone() });
     }
     Ok(())
 }
@@ -284,9 +254,7 @@ pub(crate) fn diagnose(sys: &Doubled, f: &mut SymFactor, z: ZeroPivot) -> SolveE
         // A vanishing multiplier pivot: row i is a combination of the rows
         // eliminated before it. Name it and the rows sharing its unknowns.
         let ci = (z.index - n) % m;
-        return SolveError::DependentConditions {
-            conditions: sharing_rows(sys, ci),
-        };
+        return SolveError::DependentConditions { conditions: sharing_rows(sys, ci) };
     }
     let dofs = null_dofs(sys, f).unwrap_or_else(|| vec![z.index]);
     // The regularised factor used for the diagnosis must not be solved with.
@@ -313,9 +281,7 @@ fn sharing_rows(sys: &Doubled, ci: usize) -> Vec<usize> {
             continue;
         }
         let lj = n + cj;
-        let shares = dofs
-            .iter()
-            .any(|&d| sys.find(d, lj).is_some_and(|k| sys.values[k] != 0.0));
+        let shares = dofs.iter().any(|&d| sys.find(d, lj).is_some_and(|k| sys.values[k] != 0.0));
         if shares {
             out.push(cj);
         }
@@ -331,15 +297,7 @@ fn null_dofs(sys: &Doubled, f: &mut SymFactor) -> Option<Vec<usize>> {
     let scale = sys.row_scale.iter().fold(0.0f64, |a, &b| a.max(b));
     let signs: Vec<i8> = (0..dim).map(|i| if i < n { 1 } else { -1 }).collect();
     let reg = Some((&signs[..], 1e-8 * scale, 1e-10 * scale));
-    f.factor(
-        &sys.col_ptr,
-        &sys.row_idx,
-        &sys.values,
-        &sys.row_scale,
-        usize::MAX,
-        reg,
-    )
-    .ok()?;
+    f.factor(&sys.col_ptr, &sys.row_idx, &sys.values, &sys.row_scale, usize::MAX, reg).ok()?;
     let mut y = Mat::<f64>::zeros(dim, 1);
     for i in 0..n {
         // Not all ones: a symmetric start could be orthogonal to the mode.

@@ -9,18 +9,11 @@ fn bars(scale: f64) -> Matrix {
     for (a, b, k) in [(0, 1, 1.0 * scale), (1, 2, 0.5 * scale)] {
         entries.extend([(a, a, k), (a, b, -k), (b, a, -k), (b, b, k)]);
     }
-    Matrix {
-        n: 3,
-        entries,
-        symmetric: true,
-    }
+    Matrix { n: 3, entries, symmetric: true }
 }
 
 fn eq(terms: &[(usize, f64)]) -> Condition {
-    Condition {
-        terms: terms.to_vec(),
-        kind: Kind::Equal,
-    }
+    Condition { terms: terms.to_vec(), kind: Kind::Equal }
 }
 
 fn close(a: &[f64], b: &[f64]) {
@@ -31,27 +24,16 @@ fn close(a: &[f64], b: &[f64]) {
 }
 
 fn blocked_bars() -> Problem {
-    Problem {
-        k: bars(1.0),
-        conditions: vec![eq(&[(0, 1.0)])],
-    }
+    Problem { k: bars(1.0), conditions: vec![eq(&[(0, 1.0)])] }
 }
 
 fn load(f: [f64; 3], d: &[f64]) -> Load {
-    Load {
-        f: f.to_vec(),
-        d: d.to_vec(),
-    }
+    Load { f: f.to_vec(), d: d.to_vec() }
 }
 
 #[test]
 fn two_bars_in_series() {
-    let s = solve(
-        &blocked_bars(),
-        &[load([0.0, 0.0, 2.0], &[0.0])],
-        &Default::default(),
-    )
-    .unwrap();
+    let s = solve(&blocked_bars(), &[load([0.0, 0.0, 2.0], &[0.0])], &Default::default()).unwrap();
     close(&s[0].u, &[0.0, 2.0, 6.0]);
     // K u + Cᵀλ = F at unknown 0: −2 + λ = 0.
     close(&s[0].lambda, &[2.0]);
@@ -60,10 +42,7 @@ fn two_bars_in_series() {
 
 #[test]
 fn imposed_displacements() {
-    let p = Problem {
-        k: bars(1.0),
-        conditions: vec![eq(&[(0, 1.0)]), eq(&[(2, 1.0)])],
-    };
+    let p = Problem { k: bars(1.0), conditions: vec![eq(&[(0, 1.0)]), eq(&[(2, 1.0)])] };
     let s = solve(&p, &[load([0.0; 3], &[0.5, 1.5])], &Default::default()).unwrap();
     close(&s[0].u, &[0.5, 5.0 / 6.0, 1.5]);
     // Force in bar 1 = 1/3: reactions −(−1/3) at 0 and −(1/3) at 2.
@@ -73,10 +52,7 @@ fn imposed_displacements() {
 #[test]
 fn two_term_relation() {
     // u2 − u1 = 1 with u0 blocked: bar 2 stretched by 1, bar 1 unloaded.
-    let p = Problem {
-        k: bars(1.0),
-        conditions: vec![eq(&[(0, 1.0)]), eq(&[(2, 1.0), (1, -1.0)])],
-    };
+    let p = Problem { k: bars(1.0), conditions: vec![eq(&[(0, 1.0)]), eq(&[(2, 1.0), (1, -1.0)])] };
     let s = solve(&p, &[load([0.0; 3], &[0.0, 1.0])], &Default::default()).unwrap();
     close(&s[0].u, &[0.0, 0.0, 1.0]);
     close(&s[0].lambda, &[0.0, -0.5]);
@@ -101,10 +77,7 @@ fn several_right_hand_sides_and_refactor() {
 
 #[test]
 fn nothing_blocked_is_singular_and_names_the_mode() {
-    let p = Problem {
-        k: bars(1.0),
-        conditions: vec![],
-    };
+    let p = Problem { k: bars(1.0), conditions: vec![] };
     match Factorization::new(&p, &Default::default()) {
         Err(SolveError::Singular { mut dofs }) => {
             dofs.sort();
@@ -120,12 +93,8 @@ fn half_blocked_rigid_mode_names_only_the_free_part() {
     let mut k = bars(1.0);
     k.n = 4;
     k.entries.retain(|e| e.0 != 2 && e.1 != 2);
-    k.entries
-        .extend([(2, 2, 1.0), (2, 3, -1.0), (3, 2, -1.0), (3, 3, 1.0)]);
-    let p = Problem {
-        k,
-        conditions: vec![eq(&[(0, 1.0)])],
-    };
+    k.entries.extend([(2, 2, 1.0), (2, 3, -1.0), (3, 2, -1.0), (3, 3, 1.0)]);
+    let p = Problem { k, conditions: vec![eq(&[(0, 1.0)])] };
     match Factorization::new(&p, &Default::default()) {
         Err(SolveError::Singular { mut dofs }) => {
             dofs.sort();
@@ -137,38 +106,22 @@ fn half_blocked_rigid_mode_names_only_the_free_part() {
 
 #[test]
 fn doubly_blocked_and_untouched() {
-    let p = Problem {
-        k: bars(1.0),
-        conditions: vec![eq(&[(0, 1.0)]), eq(&[(0, 2.0)])],
-    };
+    let p = Problem { k: bars(1.0), conditions: vec![eq(&[(0, 1.0)]), eq(&[(0, 2.0)])] };
     assert_eq!(
         Factorization::new(&p, &Default::default()).unwrap_err(),
-        SolveError::DoublyConstrained {
-            dof: 0,
-            conditions: vec![0, 1]
-        }
+        SolveError::DoublyConstrained { dof: 0, conditions: vec![0, 1] }
     );
     let mut k = bars(1.0);
     k.n = 4;
-    let p = Problem {
-        k,
-        conditions: vec![eq(&[(0, 1.0)])],
-    };
-    assert_eq!(
-        Factorization::new(&p, &Default::default()).unwrap_err(),
-        SolveError::Untouched { dofs: vec![3] }
-    );
+    let p = Problem { k, conditions: vec![eq(&[(0, 1.0)])] };
+    assert_eq!(Factorization::new(&p, &Default::default()).unwrap_err(), SolveError::Untouched { dofs: vec![3] });
 }
 
 #[test]
 fn proportional_relations_are_dependent() {
     let p = Problem {
         k: bars(1.0),
-        conditions: vec![
-            eq(&[(0, 1.0)]),
-            eq(&[(1, 1.0), (2, -1.0)]),
-            eq(&[(2, 2.0), (1, -2.0)]),
-        ],
+        conditions: vec![eq(&[(0, 1.0)]), eq(&[(1, 1.0), (2, -1.0)]), eq(&[(2, 2.0), (1, -2.0)])],
     };
     match Factorization::new(&p, &Default::default()) {
         Err(SolveError::DependentConditions { conditions }) => {
@@ -183,14 +136,7 @@ fn non_symmetric_stiffness_goes_through_lu() {
     let p = Problem {
         k: Matrix {
             n: 3,
-            entries: vec![
-                (0, 0, 1.0),
-                (1, 0, -1.0),
-                (1, 1, 2.0),
-                (1, 2, -0.5),
-                (2, 1, -1.0),
-                (2, 2, 1.0),
-            ],
+            entries: vec![(0, 0, 1.0), (1, 0, -1.0), (1, 1, 2.0), (1, 2, -0.5), (2, 1, -1.0), (2, 2, 1.0)],
             symmetric: false,
         },
         conditions: vec![eq(&[(0, 1.0)])],
@@ -202,14 +148,8 @@ fn non_symmetric_stiffness_goes_through_lu() {
 
 #[test]
 fn stab_lets_an_unloaded_mechanism_through() {
-    let p = Problem {
-        k: bars(1.0),
-        conditions: vec![],
-    };
-    let opts = DirectOptions {
-        check_residual: true,
-        stab: true,
-    };
+    let p = Problem { k: bars(1.0), conditions: vec![] };
+    let opts = DirectOptions { check_residual: true, stab: true };
     let s = solve(&p, &[load([0.0; 3], &[])], &opts).unwrap();
     close(&s[0].u, &[0.0; 3]);
 }

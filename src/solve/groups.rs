@@ -47,19 +47,14 @@ fn canonical(row: &[(usize, f64)]) -> Vec<(usize, f64)> {
 /// smallest upper bound; `DependentConditions` for an empty (all-zero) row.
 pub fn analyse(rows: &[Vec<(usize, f64)>], sense: &[f64], d: &[f64]) -> Result<Groups, SolveError> {
     let m = rows.len();
-    let mut groups = Groups {
-        partner: vec![None; m],
-        fixed_inactive: vec![false; m],
-    };
+    let mut groups = Groups { partner: vec![None; m], fixed_inactive: vec![false; m] };
     // Normalised rows: first coefficient 1, so c_i = mu_i · ĉ with ĉ shared.
     let mut mu = vec![0.0; m];
     let mut normal: Vec<Vec<(usize, f64)>> = Vec::with_capacity(m);
     for (i, row) in rows.iter().enumerate() {
         let r = canonical(row);
         let Some(&(_, first)) = r.first() else {
-            return Err(SolveError::DependentConditions {
-                conditions: vec![i],
-            });
+            return Err(SolveError::DependentConditions { conditions: vec![i] });
         };
         mu[i] = first;
         normal.push(r.iter().map(|&(j, v)| (j, v / first)).collect());
@@ -80,11 +75,7 @@ pub fn analyse(rows: &[Vec<(usize, f64)>], sense: &[f64], d: &[f64]) -> Result<G
             None => list.push(vec![i]),
         }
     }
-    let mut all: Vec<Vec<usize>> = buckets
-        .into_values()
-        .flatten()
-        .filter(|g| g.len() > 1)
-        .collect();
+    let mut all: Vec<Vec<usize>> = buckets.into_values().flatten().filter(|g| g.len() > 1).collect();
     all.sort();
     for g in all {
         // s_i (mu_i t − d_i) ≥ 0: a lower bound on t when s_i mu_i > 0.
@@ -137,12 +128,7 @@ mod tests {
         // 0.3 ≤ u ≤ 0.2 (case l2), written with a scaled MAXI row.
         let rows = vec![vec![(0, 1.0)], vec![(0, 2.0)]];
         let e = analyse(&rows, &[1.0, -1.0], &[0.3, 0.4]).unwrap_err();
-        assert_eq!(
-            e,
-            SolveError::Conflicting {
-                conditions: vec![0, 1]
-            }
-        );
+        assert_eq!(e, SolveError::Conflicting { conditions: vec![0, 1] });
     }
 
     #[test]
@@ -164,9 +150,6 @@ mod tests {
     #[test]
     fn empty_row_is_dependent() {
         let rows = vec![vec![(0, 0.0)]];
-        assert!(matches!(
-            analyse(&rows, &[1.0], &[0.0]),
-            Err(SolveError::DependentConditions { .. })
-        ));
+        assert!(matches!(analyse(&rows, &[1.0], &[0.0]), Err(SolveError::DependentConditions { .. })));
     }
 }

@@ -65,28 +65,20 @@ pub fn validate(p: &Problem) -> Result<(), SolveError> {
     let n = p.k.n;
     for &(i, j, v) in &p.k.entries {
         if i >= n || j >= n {
-            return Err(SolveError::Other(format!(
-                "matrix entry ({i}, {j}) outside the {n} unknowns"
-            )));
+            return Err(SolveError::Other(format!("matrix entry ({i}, {j}) outside the {n} unknowns")));
         }
         if !v.is_finite() {
-            return Err(SolveError::Other(format!(
-                "matrix entry ({i}, {j}) is not finite"
-            )));
+            return Err(SolveError::Other(format!("matrix entry ({i}, {j}) is not finite")));
         }
     }
     for (ci, c) in p.conditions.iter().enumerate() {
         if c.terms.is_empty() {
             // A row without unknowns makes the multiplier block singular.
-            return Err(SolveError::DependentConditions {
-                conditions: vec![ci],
-            });
+            return Err(SolveError::DependentConditions { conditions: vec![ci] });
         }
         for &(j, v) in &c.terms {
             if j >= n || !v.is_finite() {
-                return Err(SolveError::Other(format!(
-                    "condition {ci}: bad term on unknown {j}"
-                )));
+                return Err(SolveError::Other(format!("condition {ci}: bad term on unknown {j}")));
             }
         }
     }
@@ -219,10 +211,7 @@ impl Doubled {
             values: vec![0.0; row_idx.len()],
             col_ptr,
             row_idx,
-            scaling: Scaling {
-                sigma: vec![],
-                alpha: vec![],
-            },
+            scaling: Scaling { sigma: vec![], alpha: vec![] },
             row_scale: vec![],
             pos,
             upper,
@@ -248,9 +237,7 @@ impl Doubled {
     /// ('STAB').
     pub fn fill(&mut self, p: &Problem, stab: f64) -> Result<(), SolveError> {
         if !self.same_pattern(p) {
-            return Err(SolveError::Other(
-                "the matrix structure changed since the analysis".into(),
-            ));
+            return Err(SolveError::Other("the matrix structure changed since the analysis".into()));
         }
         validate(p)?;
         self.scatter(p, stab);
@@ -323,11 +310,7 @@ impl Doubled {
 
     /// Slot of entry (r, c) (upper triangle when symmetric), if stored.
     pub fn find(&self, r: usize, c: usize) -> Option<usize> {
-        let (r, c) = if self.symmetric && r > c {
-            (c, r)
-        } else {
-            (r, c)
-        };
+        let (r, c) = if self.symmetric && r > c { (c, r) } else { (r, c) };
         let rows = &self.row_idx[self.col_ptr[c]..self.col_ptr[c + 1]];
         rows.binary_search(&r).ok().map(|k| k + self.col_ptr[c])
     }
@@ -443,15 +426,8 @@ mod tests {
 
     fn bar() -> Problem {
         Problem {
-            k: Matrix {
-                n: 2,
-                entries: vec![(0, 0, 4.0), (0, 1, -4.0), (1, 0, -4.0), (1, 1, 4.0)],
-                symmetric: true,
-            },
-            conditions: vec![Condition {
-                terms: vec![(0, 2.0)],
-                kind: Kind::Equal,
-            }],
+            k: Matrix { n: 2, entries: vec![(0, 0, 4.0), (0, 1, -4.0), (1, 0, -4.0), (1, 1, 4.0)], symmetric: true },
+            conditions: vec![Condition { terms: vec![(0, 2.0)], kind: Kind::Equal }],
         }
     }
 

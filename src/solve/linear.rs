@@ -24,9 +24,8 @@ use faer::linalg::cholesky::ldlt::factor::LdltRegularization;
 use faer::linalg::solvers::SolveCore;
 use faer::prelude::{Reborrow, ReborrowMut};
 use faer::sparse::linalg::cholesky::{
-    factorize_symbolic_cholesky, supernodal::SupernodalLdltRef,
-    supernodal::SymbolicSupernodalCholesky, CholeskySymbolicParams, LdltRef, SymbolicCholesky,
-    SymbolicCholeskyRaw, SymmetricOrdering,
+    factorize_symbolic_cholesky, supernodal::SupernodalLdltRef, supernodal::SymbolicSupernodalCholesky,
+    CholeskySymbolicParams, LdltRef, SymbolicCholesky, SymbolicCholeskyRaw, SymmetricOrdering,
 };
 use faer::sparse::linalg::solvers::{Lu, SymbolicLu};
 use faer::sparse::linalg::SupernodalThreshold;
@@ -64,11 +63,7 @@ pub struct SymFactor {
 impl SymFactor {
     /// Symbolic analysis of the upper-triangle pattern in the order `fwd`
     /// (`fwd[new] = old`).
-    pub fn analyse(
-        col_ptr: &[usize],
-        row_idx: &[usize],
-        fwd: Vec<usize>,
-    ) -> Result<Self, SolveError> {
+    pub fn analyse(col_ptr: &[usize], row_idx: &[usize], fwd: Vec<usize>) -> Result<Self, SolveError> {
         let n = col_ptr.len() - 1;
         let inv = super::ordering::inverse(&fwd);
         let a = SymbolicSparseColMatRef::new_checked(n, n, col_ptr, None, row_idx);
@@ -77,23 +72,10 @@ impl SymFactor {
             supernodal_flop_ratio_threshold: SupernodalThreshold::FORCE_SUPERNODAL,
             ..Default::default()
         };
-        let symbolic = factorize_symbolic_cholesky(
-            a,
-            faer::Side::Upper,
-            SymmetricOrdering::Custom(perm),
-            params,
-        )
-        .map_err(|e| SolveError::Other(format!("symbolic analysis failed: {e:?}")))?;
+        let symbolic = factorize_symbolic_cholesky(a, faer::Side::Upper, SymmetricOrdering::Custom(perm), params)
+            .map_err(|e| SolveError::Other(format!("symbolic analysis failed: {e:?}")))?;
         let l = vec![0.0; symbolic.len_val()];
-        Ok(SymFactor {
-            symbolic,
-            l,
-            fwd,
-            inv,
-            n,
-            par: faer::get_global_parallelism(),
-            factored: false,
-        })
+        Ok(SymFactor { symbolic, l, fwd, inv, n, par: faer::get_global_parallelism(), factored: false })
     }
 
     pub fn dim(&self) -> usize {
@@ -151,10 +133,7 @@ impl SymFactor {
             self.factored = true;
             return Ok(());
         }
-        let a = SparseColMatRef::new(
-            SymbolicSparseColMatRef::new_checked(n, n, col_ptr, None, row_idx),
-            values,
-        );
+        let a = SparseColMatRef::new(SymbolicSparseColMatRef::new_checked(n, n, col_ptr, None, row_idx), values);
         let reg = match regularise {
             Some((signs, delta, eps)) => LdltRegularization {
                 dynamic_regularization_signs: Some(signs),
@@ -163,9 +142,7 @@ impl SymFactor {
             },
             None => LdltRegularization::default(),
         };
-        let req = self
-            .symbolic
-            .factorize_numeric_ldlt_scratch::<f64>(self.par, Default::default());
+        let req = self.symbolic.factorize_numeric_ldlt_scratch::<f64>(self.par, Default::default());
         let Ok(mut mem) = MemBuffer::try_new(req) else {
             return Err(ZeroPivot { index: usize::MAX });
         };
@@ -180,9 +157,7 @@ impl SymFactor {
         );
         if let Err(e) = res {
             let faer::linalg::cholesky::ldlt::factor::LdltError::ZeroPivot { index } = e;
-            return Err(ZeroPivot {
-                index: self.fwd[index.min(n - 1)],
-            });
+            return Err(ZeroPivot { index: self.fwd[index.min(n - 1)] });
         }
         if regularise.is_none() {
             if let Some(k) = self.first_tiny_pivot(row_scale, limit) {
@@ -234,9 +209,7 @@ impl SymFactor {
         if self.n == 0 {
             return Ok(());
         }
-        let req = self
-            .symbolic
-            .solve_in_place_scratch::<f64>(rhs.ncols(), self.par);
+        let req = self.symbolic.solve_in_place_scratch::<f64>(rhs.ncols(), self.par);
         let mut mem = MemBuffer::try_new(req).map_err(|_| oom())?;
         LdltRef::new(&self.symbolic, &self.l).solve_in_place_with_conj(
             Conj::No,
@@ -252,10 +225,7 @@ impl SymFactor {
     /// once per supernode).
     fn scratch(&self, k: usize) -> Mat<f64> {
         let f = self.ldlt_ref();
-        let rows = (0..self.supernodal().n_supernodes())
-            .map(|s| f.supernode(s).val().nrows())
-            .max()
-            .unwrap_or(0);
+        let rows = (0..self.supernodal().n_supernodes()).map(|s| f.supernode(s).val().nrows()).max().unwrap_or(0);
         Mat::zeros(rows, k)
     }
 
@@ -300,11 +270,7 @@ impl SymFactor {
             let pattern = sn.pattern();
             for j in 0..k {
                 for r in 0..nr {
-                    let row = if r + w < ncols {
-                        start + w + r
-                    } else {
-                        pattern[r + w - ncols]
-                    };
+                    let row = if r + w < ncols { start + w + r } else { pattern[r + w - ncols] };
                     x[(row, j)] -= tmp[(r, j)];
                 }
             }
@@ -342,11 +308,7 @@ impl SymFactor {
             let mut gathered = scratch.as_mut().submatrix_mut(0, 0, nr, k);
             for j in 0..k {
                 for r in 0..nr {
-                    let row = if r + w < ncols {
-                        start + w + r
-                    } else {
-                        pattern[r + w - ncols]
-                    };
+                    let row = if r + w < ncols { start + w + r } else { pattern[r + w - ncols] };
                     gathered[(r, j)] = x[(row, j)];
                 }
             }
@@ -380,8 +342,7 @@ impl LuFactor {
     pub fn new(col_ptr: &[usize], row_idx: &[usize], values: &[f64]) -> Result<Self, SolveError> {
         let n = col_ptr.len() - 1;
         let sym = SymbolicSparseColMatRef::new_checked(n, n, col_ptr, None, row_idx);
-        let symbolic = SymbolicLu::try_new(sym)
-            .map_err(|e| SolveError::Other(format!("LU analysis failed: {e:?}")))?;
+        let symbolic = SymbolicLu::try_new(sym).map_err(|e| SolveError::Other(format!("LU analysis failed: {e:?}")))?;
         let lu = Self::numeric(&symbolic, col_ptr, row_idx, values)?;
         Ok(LuFactor { symbolic, lu })
     }
@@ -393,25 +354,15 @@ impl LuFactor {
         values: &[f64],
     ) -> Result<Lu<usize, f64>, SolveError> {
         let n = col_ptr.len() - 1;
-        let a = SparseColMatRef::new(
-            SymbolicSparseColMatRef::new_checked(n, n, col_ptr, None, row_idx),
-            values,
-        );
+        let a = SparseColMatRef::new(SymbolicSparseColMatRef::new_checked(n, n, col_ptr, None, row_idx), values);
         Lu::try_new_with_symbolic(symbolic.clone(), a).map_err(|e| match e {
-            faer::sparse::linalg::LuError::SymbolicSingular { .. } => {
-                SolveError::Singular { dofs: vec![] }
-            }
+            faer::sparse::linalg::LuError::SymbolicSingular { .. } => SolveError::Singular { dofs: vec![] },
             e => SolveError::Other(format!("LU failed: {e:?}")),
         })
     }
 
     /// New values on the same pattern: numeric factorisation only.
-    pub fn refactor(
-        &mut self,
-        col_ptr: &[usize],
-        row_idx: &[usize],
-        values: &[f64],
-    ) -> Result<(), SolveError> {
+    pub fn refactor(&mut self, col_ptr: &[usize], row_idx: &[usize], values: &[f64]) -> Result<(), SolveError> {
         self.lu = Self::numeric(&self.symbolic, col_ptr, row_idx, values)?;
         Ok(())
     }

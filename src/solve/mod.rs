@@ -28,17 +28,16 @@ pub mod ordering;
 pub mod problem;
 pub mod status;
 #[doc(hidden)]
-pub mod status_placeholder;
 pub mod unilateral;
 
-#[cfg(test)]
-mod status_testkit;
-#[cfg(test)]
-mod status_tests;
 #[cfg(test)]
 mod status_loop_tests;
 #[cfg(test)]
 mod status_props;
+#[cfg(test)]
+mod status_testkit;
+#[cfg(test)]
+mod status_tests;
 
 pub use error::SolveError;
 pub use problem::{Condensed, Condition, Kind, Load, Matrix, Problem, Solution};

@@ -109,14 +109,8 @@ fn amd_order(nf: usize, col_ptr: &[usize], row_idx: &[usize]) -> Result<Vec<usiz
         let a = SymbolicSparseColMatRef::new_checked(nf, nf, col_ptr, None, row_idx);
         let mut mem = MemBuffer::try_new(amd::order_scratch::<usize>(nf, row_idx.len()))
             .map_err(|_| SolveError::Other("out of memory in AMD".into()))?;
-        amd::order(
-            &mut perm,
-            &mut perm_inv,
-            a,
-            amd::Control::default(),
-            MemStack::new(&mut mem),
-        )
-        .map_err(|e| SolveError::Other(format!("AMD failed: {e:?}")))?;
+        amd::order(&mut perm, &mut perm_inv, a, amd::Control::default(), MemStack::new(&mut mem))
+            .map_err(|e| SolveError::Other(format!("AMD failed: {e:?}")))?;
     }
     Ok(perm)
 }
@@ -178,24 +172,11 @@ mod tests {
             e.extend([(i, i, 1.0), (i + 1, i + 1, 1.0), (i, i + 1, -1.0)]);
         }
         Problem {
-            k: Matrix {
-                n,
-                entries: e,
-                symmetric: true,
-            },
+            k: Matrix { n, entries: e, symmetric: true },
             conditions: vec![
-                Condition {
-                    terms: vec![(0, 1.0)],
-                    kind: Kind::Equal,
-                },
-                Condition {
-                    terms: vec![(2, 1.0), (5, -1.0), (3, 2.0)],
-                    kind: Kind::Equal,
-                },
-                Condition {
-                    terms: vec![(4, 1.0)],
-                    kind: Kind::Mini,
-                },
+                Condition { terms: vec![(0, 1.0)], kind: Kind::Equal },
+                Condition { terms: vec![(2, 1.0), (5, -1.0), (3, 2.0)], kind: Kind::Equal },
+                Condition { terms: vec![(4, 1.0)], kind: Kind::Mini },
             ],
         }
     }

@@ -183,10 +183,7 @@ pub(crate) fn iterate(
     let cold = start_status(&groups, &vec![true; m]);
     let mut status = match &opts.start {
         Some(s) if s.len() != m => {
-            return Err(SolveError::Other(format!(
-                "start status has {} entries for {m} conditions",
-                s.len()
-            )))
+            return Err(SolveError::Other(format!("start status has {} entries for {m} conditions", s.len())))
         }
         Some(s) => start_status(&groups, s),
         None => cold.clone(),
@@ -195,18 +192,12 @@ pub(crate) fn iterate(
         // A warm start that frees a rigid mode falls back to the cold start,
         // which holds every mode that any support holds.
         if status == cold || b.set_status(&cold).is_err() {
-            return Err(SolveError::DependentConditions {
-                conditions: b.dependent(&cold),
-            });
+            return Err(SolveError::DependentConditions { conditions: b.dependent(&cold) });
         }
         status = cold;
     }
 
-    let mut mode = if opts.rule == Rule::SingleChange {
-        Mode::Safe
-    } else {
-        Mode::Fast
-    };
+    let mut mode = if opts.rule == Rule::SingleChange { Mode::Safe } else { Mode::Fast };
     let maxit = opts.max_iter.unwrap_or((20 * m).max(100));
     let mut history: HashSet<Vec<bool>> = HashSet::new();
     let mut frozen = vec![false; m];
@@ -216,9 +207,7 @@ pub(crate) fn iterate(
         let x = b.solve()?;
         let v: Vec<f64> = (0..m).map(|i| sense[i] * x[i]).collect();
         let worst = |act: bool| {
-            (0..m)
-                .filter(|&i| status[i] == act && !groups.fixed_inactive[i])
-                .fold(0.0_f64, |a, i| a.max(v[i]))
+            (0..m).filter(|&i| status[i] == act && !groups.fixed_inactive[i]).fold(0.0_f64, |a, i| a.max(v[i]))
         };
         let mut rec = IterRecord {
             iteration: it,
@@ -232,9 +221,7 @@ pub(crate) fn iterate(
         let lref = x.iter().fold(lref0, |a, xi| a.max(xi.abs()));
         let violated = |mode: Mode, frozen: &[bool]| -> Vec<usize> {
             let tau = EPS_TOL * lref * if mode == Mode::Slow { SLOW_FACTOR } else { 1.0 };
-            (0..m)
-                .filter(|&i| v[i] > tau && !groups.fixed_inactive[i] && !frozen[i])
-                .collect()
+            (0..m).filter(|&i| v[i] > tau && !groups.fixed_inactive[i] && !frozen[i]).collect()
         };
         let mut set = violated(mode, &frozen);
         if !set.is_empty() && !history.insert(status.clone()) {
@@ -245,10 +232,7 @@ pub(crate) fn iterate(
                 Mode::Slow => {
                     on_iter(&rec);
                     records.push(rec);
-                    return Err(SolveError::NoConvergence {
-                        iterations: it,
-                        conditions: set,
-                    });
+                    return Err(SolveError::NoConvergence { iterations: it, conditions: set });
                 }
             };
             history.clear();
@@ -262,16 +246,9 @@ pub(crate) fn iterate(
                 records.push(rec);
                 return Ok((x, status, records));
             }
-            let ctx = Ctx {
-                groups: &groups,
-                v: &v,
-                rule: opts.rule,
-            };
+            let ctx = Ctx { groups: &groups, v: &v, rule: opts.rule };
             match decide(b, &ctx, mode, &set, &mut status) {
-                Ok(Decision::Changed {
-                    activated,
-                    released,
-                }) => {
+                Ok(Decision::Changed { activated, released }) => {
                     rec.activated = activated;
                     rec.released = released;
                     frozen.fill(false);
@@ -292,10 +269,7 @@ pub(crate) fn iterate(
         records.push(rec);
         last_set = set;
     }
-    Err(SolveError::NoConvergence {
-        iterations: maxit,
-        conditions: last_set,
-    })
+    Err(SolveError::NoConvergence { iterations: maxit, conditions: last_set })
 }
 
 fn mode_name(mode: Mode, rule: Rule) -> &'static str {
@@ -310,11 +284,7 @@ fn mode_name(mode: Mode, rule: Rule) -> &'static str {
 /// The requested start made admissible: dominated conditions inactive, at
 /// most one active per proportional pair (the lower index).
 fn start_status(groups: &Groups, wanted: &[bool]) -> Vec<bool> {
-    let mut s: Vec<bool> = wanted
-        .iter()
-        .zip(&groups.fixed_inactive)
-        .map(|(&w, &f)| w && !f)
-        .collect();
+    let mut s: Vec<bool> = wanted.iter().zip(&groups.fixed_inactive).map(|(&w, &f)| w && !f).collect();
     for i in 0..s.len() {
         if let Some(p) = groups.partner[i] {
             if p < i && s[p] {
@@ -364,17 +334,12 @@ fn activate_all(
         activated.push(i);
     }
     if b.set_status(&trial).is_err() {
-        return Err(SolveError::DependentConditions {
-            conditions: b.dependent(&trial),
-        });
+        return Err(SolveError::DependentConditions { conditions: b.dependent(&trial) });
     }
     *status = trial;
     activated.sort_unstable();
     released.sort_unstable();
-    Ok(Decision::Changed {
-        activated,
-        released,
-    })
+    Ok(Decision::Changed { activated, released })
 }
 
 fn decide(
@@ -386,19 +351,11 @@ fn decide(
 ) -> Result<Decision, SolveError> {
     let rel: Vec<usize> = set.iter().copied().filter(|&i| status[i]).collect();
     let act: Vec<usize> = set.iter().copied().filter(|&i| !status[i]).collect();
-    let most_violated = |l: &[usize]| {
-        l.iter()
-            .copied()
-            .fold(l[0], |a, i| if ctx.v[i] > ctx.v[a] { i } else { a })
-    };
+    let most_violated = |l: &[usize]| l.iter().copied().fold(l[0], |a, i| if ctx.v[i] > ctx.v[a] { i } else { a });
     if mode != Mode::Fast {
         // Murty's least-index rule: one change, the smallest violated index.
         let i = set[0];
-        return if status[i] {
-            single_release(b, ctx, i, status)
-        } else {
-            activate_all(b, ctx, &[i], status)
-        };
+        return if status[i] { single_release(b, ctx, i, status) } else { activate_all(b, ctx, &[i], status) };
     }
     if ctx.rule == Rule::Pdas {
         let mut trial = status.clone();
@@ -416,25 +373,16 @@ fn decide(
         if b.set_status(&trial).is_ok() {
             *status = trial;
             released.sort_unstable();
-            return Ok(Decision::Changed {
-                activated,
-                released,
-            });
+            return Ok(Decision::Changed { activated, released });
         }
         if rel.is_empty() {
-            return Err(SolveError::DependentConditions {
-                conditions: b.dependent(&trial),
-            });
+            return Err(SolveError::DependentConditions { conditions: b.dependent(&trial) });
         }
         return single_release(b, ctx, most_violated(&rel), status);
     }
     if rel.is_empty() {
         let vmax = act.iter().fold(0.0_f64, |a, &i| a.max(ctx.v[i]));
-        let chosen: Vec<usize> = act
-            .iter()
-            .copied()
-            .filter(|&i| ctx.v[i] >= ACTIVATION_FRACTION * vmax)
-            .collect();
+        let chosen: Vec<usize> = act.iter().copied().filter(|&i| ctx.v[i] >= ACTIVATION_FRACTION * vmax).collect();
         return activate_all(b, ctx, &chosen, status);
     }
     let mut trial = status.clone();
@@ -443,40 +391,27 @@ fn decide(
     }
     if b.set_status(&trial).is_ok() {
         *status = trial;
-        return Ok(Decision::Changed {
-            activated: Vec::new(),
-            released: rel,
-        });
+        return Ok(Decision::Changed { activated: Vec::new(), released: rel });
     }
     single_release(b, ctx, most_violated(&rel), status)
 }
 
 /// Releases the active condition i, or resolves the rigid mode it would
 /// free (RIGID_MODE_STEP of §7.5).
-fn single_release(
-    b: &mut dyn Backend,
-    ctx: &Ctx,
-    i: usize,
-    status: &mut Vec<bool>,
-) -> Result<Decision, SolveError> {
+fn single_release(b: &mut dyn Backend, ctx: &Ctx, i: usize, status: &mut Vec<bool>) -> Result<Decision, SolveError> {
     let (singular, mode) = b.release(i)?;
     if !singular {
         let mut trial = status.clone();
         trial[i] = false;
         if b.set_status(&trial).is_ok() {
             *status = trial;
-            return Ok(Decision::Changed {
-                activated: Vec::new(),
-                released: vec![i],
-            });
+            return Ok(Decision::Changed { activated: Vec::new(), released: vec![i] });
         }
         // The factorisation disagrees with the lemma (round-off near a
         // singular release): treat it as the singular case.
     }
     if !mode.work.is_finite() || mode.motion.iter().any(|x| !x.is_finite()) {
-        return Err(SolveError::Inaccurate {
-            residual: f64::INFINITY,
-        });
+        return Err(SolveError::Inaccurate { residual: f64::INFINITY });
     }
     if mode.work <= EPS_WORK * mode.work_scale {
         // The load does no work along the mode: the wrong sign on i is
@@ -501,24 +436,16 @@ fn single_release(
     let Some((j, _)) = best else {
         let mut conditions = vec![i];
         conditions.extend((0..m).filter(|&k| k != i && mode.motion[k] > thr));
-        return Err(SolveError::Infeasible {
-            conditions,
-            work: mode.work,
-        });
+        return Err(SolveError::Infeasible { conditions, work: mode.work });
     };
     let mut trial = status.clone();
     trial[i] = false;
     let mut released = vec![i];
     activate(ctx, &mut trial, j, &mut released);
     if b.set_status(&trial).is_err() {
-        return Err(SolveError::DependentConditions {
-            conditions: vec![i.min(j), i.max(j)],
-        });
+        return Err(SolveError::DependentConditions { conditions: vec![i.min(j), i.max(j)] });
     }
     *status = trial;
     released.sort_unstable();
-    Ok(Decision::Changed {
-        activated: vec![j],
-        released,
-    })
+    Ok(Decision::Changed { activated: vec![j], released })
 }

@@ -20,10 +20,7 @@ fn records_are_consistent() {
         assert_eq!(rec.mode, "fast");
     }
     assert_eq!(r.records[0].released, vec![0, 2]);
-    assert!(
-        r.records.last().unwrap().activated.is_empty()
-            && r.records.last().unwrap().released.is_empty()
-    );
+    assert!(r.records.last().unwrap().activated.is_empty() && r.records.last().unwrap().released.is_empty());
 }
 
 #[test]
@@ -31,19 +28,13 @@ fn bad_input_is_an_error_not_a_panic() {
     let p = spring(10.0, 5.0).cond(&[(0, 1.0)], MAXI, 1.0);
     let mut b = build(&p);
     b.c.h.push(1.0);
-    assert!(matches!(
-        super::status::run(&b.c, &opts(), &mut |_| {}),
-        Err(SolveError::Other(_))
-    ));
+    assert!(matches!(super::status::run(&b.c, &opts(), &mut |_| {}), Err(SolveError::Other(_))));
     let b = build(&p);
     let r = super::status::run(&b.c, &warm(vec![true, false]), &mut |_| {});
     assert!(matches!(r, Err(SolveError::Other(_))));
     let mut b = build(&p);
     b.c.h[0] = f64::NAN;
-    assert!(matches!(
-        super::status::run(&b.c, &opts(), &mut |_| {}),
-        Err(SolveError::Other(_))
-    ));
+    assert!(matches!(super::status::run(&b.c, &opts(), &mut |_| {}), Err(SolveError::Other(_))));
 }
 
 #[test]
@@ -55,16 +46,8 @@ fn dependent_rows_are_reported() {
         .cond(&[(1, 1.0)], MINI, 0.0)
         .cond(&[(0, 1.0), (1, 1.0)], MINI, 0.0);
     let r = solve(&p, &opts());
-    assert_eq!(
-        r.unwrap_err(),
-        SolveError::DependentConditions {
-            conditions: vec![0, 1, 2]
-        }
-    );
-    assert!(matches!(
-        solve_ancien(&p, &opts()),
-        Err(SolveError::DependentConditions { .. })
-    ));
+    assert_eq!(r.unwrap_err(), SolveError::DependentConditions { conditions: vec![0, 1, 2] });
+    assert!(matches!(solve_ancien(&p, &opts()), Err(SolveError::DependentConditions { .. })));
 }
 
 /// A backend whose only condition is always violated, whatever its status:
@@ -83,11 +66,7 @@ impl super::status::Backend for AlwaysViolated {
         Ok(vec![1.0])
     }
     fn release(&mut self, _: usize) -> Result<(bool, super::status::RigidMode), SolveError> {
-        let mode = super::status::RigidMode {
-            motion: vec![1.0],
-            work: 1.0,
-            work_scale: 1.0,
-        };
+        let mode = super::status::RigidMode { motion: vec![1.0], work: 1.0, work_scale: 1.0 };
         Ok((false, mode))
     }
     fn dependent(&mut self, _: &[bool]) -> Vec<usize> {
@@ -100,34 +79,14 @@ fn cycling_climbs_the_mode_ladder_then_stops() {
     let mut b = AlwaysViolated { active: Vec::new() };
     let mut recs = Vec::new();
     let rows = vec![vec![(0, 1.0)]];
-    let r = super::status::iterate(&mut b, &[1.0], &rows, &[0.0], &opts(), &mut |r| {
-        recs.push(r.clone())
-    });
-    assert_eq!(
-        r.unwrap_err(),
-        SolveError::NoConvergence {
-            iterations: 7,
-            conditions: vec![0]
-        }
-    );
+    let r = super::status::iterate(&mut b, &[1.0], &rows, &[0.0], &opts(), &mut |r| recs.push(r.clone()));
+    assert_eq!(r.unwrap_err(), SolveError::NoConvergence { iterations: 7, conditions: vec![0] });
     let modes: Vec<&str> = recs.iter().map(|r| r.mode).collect();
-    assert_eq!(
-        modes,
-        ["fast", "fast", "safe", "safe", "slow", "slow", "slow"]
-    );
+    assert_eq!(modes, ["fast", "fast", "safe", "safe", "slow", "slow", "slow"]);
     // The cap applies too.
-    let o = StatusOptions {
-        max_iter: Some(2),
-        ..opts()
-    };
+    let o = StatusOptions { max_iter: Some(2), ..opts() };
     let r = super::status::iterate(&mut b, &[1.0], &rows, &[0.0], &o, &mut |_| {});
-    assert_eq!(
-        r.unwrap_err(),
-        SolveError::NoConvergence {
-            iterations: 2,
-            conditions: vec![0]
-        }
-    );
+    assert_eq!(r.unwrap_err(), SolveError::NoConvergence { iterations: 2, conditions: vec![0] });
 }
 
 /// Prints the solve counts of every case next to the spec's "ours"
@@ -136,14 +95,8 @@ fn cycling_climbs_the_mode_ladder_then_stops() {
 fn solve_counts_against_the_spec() {
     let mut f_d = vec![0.0; 6];
     f_d[2] = -1.0;
-    let d_case = Dense::new(beam(&[0.0, 1.0, 4.0], 1.0), f_d)
-        .cond(&[(0, 1.0)], MINI, 0.0)
-        .cond(&[(4, 1.0)], MINI, 0.0);
-    let k_case = Dense::new(Mat::<f64>::identity(3, 3), vec![0.0; 3]).cond(
-        &[(0, 2.5), (1, -1.0), (2, 3.0)],
-        MINI,
-        0.3,
-    );
+    let d_case = Dense::new(beam(&[0.0, 1.0, 4.0], 1.0), f_d).cond(&[(0, 1.0)], MINI, 0.0).cond(&[(4, 1.0)], MINI, 0.0);
+    let k_case = Dense::new(Mat::<f64>::identity(3, 3), vec![0.0; 3]).cond(&[(0, 2.5), (1, -1.0), (2, 3.0)], MINI, 0.3);
     let g = |load: f64| {
         let k = Mat::from_fn(2, 2, |i, j| if i == j { [2.0, 3.0][i] } else { 0.0 });
         Dense::new(k, vec![load, 0.0]).cond(&[(1, 1.0), (0, -1.0)], MINI, -1.0)
@@ -172,30 +125,20 @@ fn solve_counts_against_the_spec() {
     let mut status = vec![false; 3];
     for (load, ours) in [(1.0, 2), (3.0, 1), (0.4, 3)] {
         let a = solve(&chain(load), &warm(status.clone())).unwrap();
-        eprintln!(
-            "b warm P = {load}: {} solves (spec ours {ours})",
-            a.iterations
-        );
+        eprintln!("b warm P = {load}: {} solves (spec ours {ours})", a.iterations);
         assert!(a.iterations <= ours + 1);
         status = a.active;
     }
     let mut f_e3 = vec![0.0; 6];
     f_e3[4] = -1.0;
-    let e3 = Dense::new(beam(&[0.0, 3.0, 4.0], 1.0), f_e3)
-        .cond(&[(0, 1.0)], MINI, 0.0)
-        .cond(&[(2, 1.0)], MINI, 0.0);
+    let e3 = Dense::new(beam(&[0.0, 3.0, 4.0], 1.0), f_e3).cond(&[(0, 1.0)], MINI, 0.0).cond(&[(2, 1.0)], MINI, 0.0);
     let mut f_e2 = vec![0.0; 6];
     f_e2[2] = 1.0;
-    let e2 = Dense::new(beam(&[0.0, 1.0, 4.0], 1.0), f_e2)
-        .cond(&[(0, 1.0)], MINI, 0.0)
-        .cond(&[(4, 1.0)], MINI, 0.0);
+    let e2 = Dense::new(beam(&[0.0, 1.0, 4.0], 1.0), f_e2).cond(&[(0, 1.0)], MINI, 0.0).cond(&[(4, 1.0)], MINI, 0.0);
     let e1 = spring(0.0, 1.0).cond(&[(0, 1.0)], MINI, 0.0);
     for (name, p) in [("c2", two_spans(-1.0)), ("e1", e1), ("e2", e2), ("e3", e3)] {
         let (r, solves) = solve_counting(&p, &opts());
-        eprintln!(
-            "{name}: {solves} solves before {r:?} (m + 2 = {})",
-            p.rows.len() + 2
-        );
+        eprintln!("{name}: {solves} solves before {r:?} (m + 2 = {})", p.rows.len() + 2);
         assert!(solves <= p.rows.len() + 2);
     }
 }

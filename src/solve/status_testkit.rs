@@ -41,13 +41,7 @@ pub const MAXI: f64 = -1.0;
 
 impl Dense {
     pub fn new(k: Mat<f64>, f: Vec<f64>) -> Self {
-        Dense {
-            k,
-            rows: Vec::new(),
-            sense: Vec::new(),
-            d: Vec::new(),
-            f,
-        }
+        Dense { k, rows: Vec::new(), sense: Vec::new(), d: Vec::new(), f }
     }
     /// Adds `row ⋈ d` with s = MINI or MAXI.
     pub fn cond(mut self, row: &[(usize, f64)], s: f64, d: f64) -> Self {
@@ -77,9 +71,7 @@ impl Dense {
 /// §2.2 scaling and §3.2 condensation, densely.
 pub fn build(p: &Dense) -> Built {
     let (n, m) = (p.n(), p.rows.len());
-    let kmax = (0..n)
-        .flat_map(|j| (0..n).map(move |i| (i, j)))
-        .fold(0.0_f64, |a, (i, j)| a.max(p.k[(i, j)].abs()));
+    let kmax = (0..n).flat_map(|j| (0..n).map(move |i| (i, j))).fold(0.0_f64, |a, (i, j)| a.max(p.k[(i, j)].abs()));
     let (mut sigma, mut alpha, mut w) = (vec![0.0; m], vec![0.0; m], vec![0.0; m]);
     for (i, r) in p.rows.iter().enumerate() {
         let mut k = r
@@ -122,20 +114,9 @@ pub fn build(p: &Dense) -> Built {
     let mut hf = p.f.clone();
     h.solve_in_place(&mut hf);
     let g = Mat::<f64>::from_fn(m, m, |a, b| sigma[a] * p.dot(a, &x[b]));
-    let hv = (0..m)
-        .map(|i| 0.5 * (sigma[i] * p.dot(i, &uf) - sigma[i] * p.d[i]))
-        .collect();
+    let hv = (0..m).map(|i| 0.5 * (sigma[i] * p.dot(i, &uf) - sigma[i] * p.d[i])).collect();
     let xtf = (0..m).map(|i| sigma[i] * p.dot(i, &hf)).collect();
-    let c = Condensed {
-        g,
-        h: hv,
-        alpha,
-        sigma,
-        sense: p.sense.clone(),
-        xtf,
-        rows: p.rows.clone(),
-        d: p.d.clone(),
-    };
+    let c = Condensed { g, h: hv, alpha, sigma, sense: p.sense.clone(), xtf, rows: p.rows.clone(), d: p.d.clone() };
     Built { c, h, w }
 }
 
@@ -148,21 +129,8 @@ pub fn recover(p: &Dense, b: &Built, r: &StatusResult) -> Answer {
         }
     }
     b.h.solve_in_place(&mut rhs);
-    let lambda = (0..r.x.len())
-        .map(|i| {
-            if r.active[i] {
-                2.0 * b.c.sigma[i] * r.x[i]
-            } else {
-                0.0
-            }
-        })
-        .collect();
-    Answer {
-        u: rhs,
-        lambda,
-        active: r.active.clone(),
-        iterations: r.records.len(),
-    }
+    let lambda = (0..r.x.len()).map(|i| if r.active[i] { 2.0 * b.c.sigma[i] * r.x[i] } else { 0.0 }).collect();
+    Answer { u: rhs, lambda, active: r.active.clone(), iterations: r.records.len() }
 }
 
 /// One spring k to the ground on one dof, loaded by f.
@@ -178,10 +146,7 @@ pub fn solve(p: &Dense, opts: &StatusOptions) -> Result<Answer, SolveError> {
 }
 
 /// The status iteration's records, whatever the outcome.
-pub fn solve_recording(
-    p: &Dense,
-    opts: &StatusOptions,
-) -> (Result<Answer, SolveError>, Vec<IterRecord>) {
+pub fn solve_recording(p: &Dense, opts: &StatusOptions) -> (Result<Answer, SolveError>, Vec<IterRecord>) {
     let b = build(p);
     let mut recs = Vec::new();
     let r = status::run(&b.c, opts, &mut |r| recs.push(r.clone()));
@@ -196,14 +161,7 @@ pub fn solve_counting(p: &Dense, opts: &StatusOptions) -> (Result<Answer, SolveE
 
 /// The old method with K_c = K (every dof in P).
 pub fn solve_ancien(p: &Dense, opts: &StatusOptions) -> Result<AncienResult, SolveError> {
-    let pb = ancien::AncienProblem {
-        kc: &p.k,
-        fc: &p.f,
-        rows: &p.rows,
-        sense: &p.sense,
-        d: &p.d,
-        k_ref: None,
-    };
+    let pb = ancien::AncienProblem { kc: &p.k, fc: &p.f, rows: &p.rows, sense: &p.sense, d: &p.d, k_ref: None };
     ancien::run(&pb, opts, &mut |_| {})
 }
 
@@ -253,13 +211,8 @@ impl Rng {
 pub fn kkt_ok(p: &Dense, u: &[f64], lambda: &[f64], tol: f64) -> bool {
     let n = p.n();
     let umax = u.iter().fold(1e-300_f64, |a, v| a.max(v.abs()));
-    let fmax =
-        p.f.iter()
-            .chain(lambda)
-            .fold(1e-300_f64, |a, v| a.max(v.abs()));
-    let kmax = (0..n)
-        .flat_map(|j| (0..n).map(move |i| (i, j)))
-        .fold(0.0_f64, |a, (i, j)| a.max(p.k[(i, j)].abs()));
+    let fmax = p.f.iter().chain(lambda).fold(1e-300_f64, |a, v| a.max(v.abs()));
+    let kmax = (0..n).flat_map(|j| (0..n).map(move |i| (i, j))).fold(0.0_f64, |a, (i, j)| a.max(p.k[(i, j)].abs()));
     let r = p.reactions(lambda);
     let eq = (0..n).all(|i| {
         let ku: f64 = (0..n).map(|j| p.k[(i, j)] * u[j]).sum();
@@ -269,9 +222,7 @@ pub fn kkt_ok(p: &Dense, u: &[f64], lambda: &[f64], tol: f64) -> bool {
         let chat = p.rows[i].iter().fold(1.0_f64, |a, &(_, v)| a.max(v.abs()));
         let gap = p.sense[i] * (p.dot(i, u) - p.d[i]) / chat;
         let scale = tol * (umax + p.d[i].abs() / chat);
-        gap >= -scale
-            && p.sense[i] * lambda[i] <= tol * fmax
-            && (lambda[i].abs() <= tol * fmax || gap.abs() <= scale)
+        gap >= -scale && p.sense[i] * lambda[i] <= tol * fmax && (lambda[i].abs() <= tol * fmax || gap.abs() <= scale)
     });
     eq && ok_rows
 }
@@ -302,8 +253,7 @@ pub fn brute_force(p: &Dense) -> Option<(Vec<f64>, Vec<f64>)> {
         // Regularity: a singular KKT matrix leaves a free mode (no unique
         // u), which random data never needs.
         let res = &kkt * &sol - Mat::<f64>::from_fn(n + a, 1, |i, _| rhs[i]);
-        let bad = (0..n + a)
-            .any(|i| !sol[(i, 0)].is_finite() || res[(i, 0)].abs() > 1e-9 * (1.0 + rhs[i].abs()));
+        let bad = (0..n + a).any(|i| !sol[(i, 0)].is_finite() || res[(i, 0)].abs() > 1e-9 * (1.0 + rhs[i].abs()));
         let sv = kkt.singular_values().unwrap_or_default();
         let smax = sv.iter().fold(0.0_f64, |x, v| x.max(*v));
         if bad || sv.iter().any(|&s| s <= 1e-9 * smax) {

@@ -9,10 +9,7 @@ use faer::Mat;
 fn close(got: &[f64], want: &[f64], tol: f64, what: &str) {
     assert_eq!(got.len(), want.len(), "{what}: lengths");
     for (k, (g, w)) in got.iter().zip(want).enumerate() {
-        assert!(
-            (g - w).abs() <= tol * w.abs().max(1.0),
-            "{what}[{k}]: got {g}, want {w} (all: {got:?})"
-        );
+        assert!((g - w).abs() <= tol * w.abs().max(1.0), "{what}[{k}]: got {g}, want {w} (all: {got:?})");
     }
 }
 
@@ -21,10 +18,7 @@ pub(super) fn opts() -> StatusOptions {
 }
 
 pub(super) fn warm(start: Vec<bool>) -> StatusOptions {
-    StatusOptions {
-        start: Some(start),
-        ..Default::default()
-    }
+    StatusOptions { start: Some(start), ..Default::default() }
 }
 
 /// Solves by both methods, checks they agree and satisfy KKT, and returns
@@ -62,9 +56,7 @@ fn a_spring_against_a_stop() {
 }
 
 pub(super) fn chain(load: f64) -> Dense {
-    let k = Mat::from_fn(3, 3, |i, j| {
-        [[2.0, -1.0, 0.0], [-1.0, 2.0, -1.0], [0.0, -1.0, 1.0]][i][j]
-    });
+    let k = Mat::from_fn(3, 3, |i, j| [[2.0, -1.0, 0.0], [-1.0, 2.0, -1.0], [0.0, -1.0, 1.0]][i][j]);
     let mut p = Dense::new(k, vec![0.0, 0.0, load]);
     for (i, g) in [2.0, 1.5, 2.4].into_iter().enumerate() {
         p = p.cond(&[(i, 1.0)], MAXI, g);
@@ -85,11 +77,7 @@ fn b_chain_with_three_stops() {
         close(&a.u, &u, 1e-10, "u");
         close(&a.lambda, &l, 1e-10, "λ");
         close(&p.reactions(&a.lambda), &l.map(|v| -v), 1e-10, "REAC");
-        assert!(
-            a.iterations <= ours + 1,
-            "P = {load}: {} solves",
-            a.iterations
-        );
+        assert!(a.iterations <= ours + 1, "P = {load}: {} solves", a.iterations);
     }
     // Warm starts (j): 2/5 → 1 → 3 → 2/5 reusing the previous status.
     let mut status = vec![false; 3];
@@ -98,11 +86,7 @@ fn b_chain_with_three_stops() {
         let cold = solve(&chain(load), &opts()).unwrap();
         close(&a.u, &cold.u, 1e-10, "warm u");
         close(&a.lambda, &cold.lambda, 1e-10, "warm λ");
-        assert!(
-            a.iterations <= ours + 1,
-            "warm P = {load}: {} solves",
-            a.iterations
-        );
+        assert!(a.iterations <= ours + 1, "warm P = {load}: {} solves", a.iterations);
         status = a.active;
     }
 }
@@ -124,10 +108,11 @@ fn b_intermediate_values_all_active() {
 pub(super) fn two_spans(p: f64) -> Dense {
     let mut f = vec![0.0; 8];
     f[2] = -p;
-    Dense::new(beam(&[0.0, 0.5, 1.0, 2.0], 1.0), f)
-        .cond(&[(0, 1.0)], MINI, 0.0)
-        .cond(&[(4, 1.0)], MINI, 0.0)
-        .cond(&[(6, 1.0)], MINI, 0.0)
+    Dense::new(beam(&[0.0, 0.5, 1.0, 2.0], 1.0), f).cond(&[(0, 1.0)], MINI, 0.0).cond(&[(4, 1.0)], MINI, 0.0).cond(
+        &[(6, 1.0)],
+        MINI,
+        0.0,
+    )
 }
 
 #[test]
@@ -141,18 +126,8 @@ fn c_continuous_beam_with_uplift() {
     assert!(a.iterations <= 3, "{} solves", a.iterations);
     // The first solve (all active) has the three-moment reactions.
     let b = build(&p);
-    let r = super::status::run(
-        &b.c,
-        &StatusOptions {
-            max_iter: Some(1),
-            ..opts()
-        },
-        &mut |_| {},
-    );
-    assert!(matches!(
-        r,
-        Err(SolveError::NoConvergence { iterations: 1, .. })
-    ));
+    let r = super::status::run(&b.c, &StatusOptions { max_iter: Some(1), ..opts() }, &mut |_| {});
+    assert!(matches!(r, Err(SolveError::NoConvergence { iterations: 1, .. })));
 }
 
 #[test]
@@ -161,19 +136,14 @@ fn c2_uplift_everywhere_is_infeasible() {
     let (r, solves) = solve_counting(&p, &opts());
     assert!(matches!(r, Err(SolveError::Infeasible { .. })), "{r:?}");
     assert!(solves <= 3 + 2, "{solves} solves");
-    assert!(matches!(
-        solve_ancien(&p, &opts()),
-        Err(SolveError::Infeasible { .. })
-    ));
+    assert!(matches!(solve_ancien(&p, &opts()), Err(SolveError::Infeasible { .. })));
 }
 
 /// Case (d): nodes x = 0, 1, 4, supports A and B only.
 fn held_by_supports(p: f64) -> Dense {
     let mut f = vec![0.0; 6];
     f[2] = -p;
-    Dense::new(beam(&[0.0, 1.0, 4.0], 1.0), f)
-        .cond(&[(0, 1.0)], MINI, 0.0)
-        .cond(&[(4, 1.0)], MINI, 0.0)
+    Dense::new(beam(&[0.0, 1.0, 4.0], 1.0), f).cond(&[(0, 1.0)], MINI, 0.0).cond(&[(4, 1.0)], MINI, 0.0)
 }
 
 #[test]
@@ -182,26 +152,17 @@ fn d_body_held_only_by_unilateral_supports() {
     let a = both(&p, &opts(), 1e-8);
     close(&a.u, &[0.0, -0.875, -0.75, -0.5, 0.0, 0.625], 1e-8, "u");
     close(&a.lambda, &[-0.75, -0.25], 1e-8, "λ");
-    close(
-        &p.reactions(&a.lambda),
-        &[0.75, 0.0, 0.0, 0.0, 0.25, 0.0],
-        1e-8,
-        "REAC",
-    );
+    close(&p.reactions(&a.lambda), &[0.75, 0.0, 0.0, 0.0, 0.25, 0.0], 1e-8, "REAC");
     assert_eq!(a.iterations, 1);
 }
 
 fn assert_infeasible(p: &Dense, max_solves: usize) -> f64 {
     let (r, solves) = solve_counting(p, &opts());
-    let Err(SolveError::Infeasible { work, .. }) = r else {
-        panic!("expected Infeasible, got {r:?}")
-    };
+    let Err(SolveError::Infeasible { work, .. }) = r else { panic!("expected Infeasible, got {r:?}") };
     assert!(work > 0.0, "work {work}");
     assert!(solves <= max_solves, "{solves} solves");
     match solve_ancien(p, &opts()) {
-        Err(SolveError::Infeasible { work: w2, .. }) => {
-            close(&[w2], &[work], 1e-8, "old method work")
-        }
+        Err(SolveError::Infeasible { work: w2, .. }) => close(&[w2], &[work], 1e-8, "old method work"),
         other => panic!("old method: expected Infeasible, got {other:?}"),
     }
     work
@@ -225,32 +186,18 @@ fn e_infeasible_and_pushed_cases() {
     // e3: tipping over the support at x = 3.
     let mut f = vec![0.0; 6];
     f[4] = -1.0;
-    let p = Dense::new(beam(&[0.0, 3.0, 4.0], 1.0), f)
-        .cond(&[(0, 1.0)], MINI, 0.0)
-        .cond(&[(2, 1.0)], MINI, 0.0);
+    let p = Dense::new(beam(&[0.0, 3.0, 4.0], 1.0), f).cond(&[(0, 1.0)], MINI, 0.0).cond(&[(2, 1.0)], MINI, 0.0);
     assert_infeasible(&p, 4);
     // e4: u ≥ 1 and u ≤ 0: conflicting, before any solve.
-    let p = spring(10.0, 0.0)
-        .cond(&[(0, 1.0)], MINI, 1.0)
-        .cond(&[(0, 1.0)], MAXI, 0.0);
+    let p = spring(10.0, 0.0).cond(&[(0, 1.0)], MINI, 1.0).cond(&[(0, 1.0)], MAXI, 0.0);
     let (r, solves) = solve_counting(&p, &opts());
-    assert_eq!(
-        r.unwrap_err(),
-        SolveError::Conflicting {
-            conditions: vec![0, 1]
-        }
-    );
+    assert_eq!(r.unwrap_err(), SolveError::Conflicting { conditions: vec![0, 1] });
     assert_eq!(solves, 0);
-    assert!(matches!(
-        solve_ancien(&p, &opts()),
-        Err(SolveError::Conflicting { .. })
-    ));
+    assert!(matches!(solve_ancien(&p, &opts()), Err(SolveError::Conflicting { .. })));
 }
 
 pub(super) fn cycling() -> Dense {
-    let k = Mat::from_fn(3, 3, |i, j| {
-        [[5.0, -7.0, -7.0], [-7.0, 14.0, 16.0], [-7.0, 16.0, 19.0]][i][j]
-    });
+    let k = Mat::from_fn(3, 3, |i, j| [[5.0, -7.0, -7.0], [-7.0, 14.0, 16.0], [-7.0, 16.0, 19.0]][i][j]);
     let mut p = Dense::new(k, vec![-3.0, 3.0, 1.0]);
     for i in 0..3 {
         p = p.cond(&[(i, 1.0)], MINI, 0.0);
@@ -264,12 +211,7 @@ fn f_cycling_needs_the_single_change_fallback() {
     let check = |a: &Answer| {
         close(&a.u, &[0.0, 3.0 / 14.0, 0.0], 1e-10, "u");
         close(&a.lambda, &[-1.5, 0.0, -17.0 / 7.0], 1e-10, "λ");
-        close(
-            &p.reactions(&a.lambda),
-            &[1.5, 0.0, 17.0 / 7.0],
-            1e-10,
-            "REAC",
-        );
+        close(&p.reactions(&a.lambda), &[1.5, 0.0, 17.0 / 7.0], 1e-10, "REAC");
     };
     // Damped: {1,2,3} → {1} → {} → {3} → {1,3}, 5 solves.
     let b = build(&p);
@@ -282,37 +224,21 @@ fn f_cycling_needs_the_single_change_fallback() {
     assert_eq!(a.iterations, 5);
     // PDAS cycles; the repeated status is seen by solve 4 and the
     // least-index fallback finishes within 3 more.
-    let pdas = StatusOptions {
-        rule: Rule::Pdas,
-        ..opts()
-    };
+    let pdas = StatusOptions { rule: Rule::Pdas, ..opts() };
     let mut recs = Vec::new();
     let r = super::status::run(&b.c, &pdas, &mut |r| recs.push(r.clone())).unwrap();
-    let first_safe = recs
-        .iter()
-        .position(|r| r.mode == "safe")
-        .expect("cycle detected");
+    let first_safe = recs.iter().position(|r| r.mode == "safe").expect("cycle detected");
     assert!(first_safe < 4, "detected at solve {}", first_safe + 1);
     assert!(recs.len() <= first_safe + 1 + 3);
     assert_eq!(r.active, vec![true, false, true]);
     check(&both(&p, &pdas, 1e-10));
     // Least index from the start: 2 solves.
-    let single = StatusOptions {
-        rule: Rule::SingleChange,
-        ..opts()
-    };
+    let single = StatusOptions { rule: Rule::SingleChange, ..opts() };
     let a = both(&p, &single, 1e-10);
     check(&a);
     assert_eq!(a.iterations, 2);
     // From all inactive, single change: 3 solves.
-    let a = solve(
-        &p,
-        &StatusOptions {
-            start: Some(vec![false; 3]),
-            ..single
-        },
-    )
-    .unwrap();
+    let a = solve(&p, &StatusOptions { start: Some(vec![false; 3]), ..single }).unwrap();
     check(&a);
     assert!(a.iterations <= 4);
 }
@@ -332,9 +258,7 @@ fn g_rela_between_two_bodies() {
 
 #[test]
 fn h_duplicate_conditions() {
-    let p = spring(10.0, -5.0)
-        .cond(&[(0, 1.0)], MINI, -0.2)
-        .cond(&[(0, 1.0)], MINI, -0.2);
+    let p = spring(10.0, -5.0).cond(&[(0, 1.0)], MINI, -0.2).cond(&[(0, 1.0)], MINI, -0.2);
     let a = both(&p, &opts(), 1e-10);
     close(&a.u, &[-0.2], 1e-10, "u");
     close(&[a.lambda.iter().sum()], &[-3.0], 1e-10, "Σλ");
@@ -376,19 +300,13 @@ fn l_gap_on_both_sides() {
         let build_p = |f: f64, dmin: f64, dmax: f64| {
             let p = spring(10.0, f);
             if mini_first {
-                p.cond(&[(0, 1.0)], MINI, dmin)
-                    .cond(&[(0, 1.0)], MAXI, dmax)
+                p.cond(&[(0, 1.0)], MINI, dmin).cond(&[(0, 1.0)], MAXI, dmax)
             } else {
-                p.cond(&[(0, 1.0)], MAXI, dmax)
-                    .cond(&[(0, 1.0)], MINI, dmin)
+                p.cond(&[(0, 1.0)], MAXI, dmax).cond(&[(0, 1.0)], MINI, dmin)
             }
         };
         let order = |l: [f64; 2]| if mini_first { l } else { [l[1], l[0]] };
-        for (f, u, l) in [
-            (5.0, 0.2, [0.0, 3.0]),
-            (-5.0, -0.1, [-4.0, 0.0]),
-            (1.0, 0.1, [0.0, 0.0]),
-        ] {
+        for (f, u, l) in [(5.0, 0.2, [0.0, 3.0]), (-5.0, -0.1, [-4.0, 0.0]), (1.0, 0.1, [0.0, 0.0])] {
             let p = build_p(f, -0.1, 0.2);
             let a = both(&p, &opts(), 1e-10);
             close(&a.u, &[u], 1e-10, "u");

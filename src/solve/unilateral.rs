@@ -15,8 +15,7 @@ use std::time::Instant;
 use super::condense::Condenser;
 use super::error::SolveError;
 use super::problem::{Load, Problem, Solution};
-// Switch to `super::status` once the real status loop has landed.
-use super::status_placeholder as status;
+use super::status;
 pub use status::{IterRecord, Rule};
 
 /// How the unilateral problem is solved.
@@ -47,12 +46,7 @@ pub struct UnilOptions {
 
 impl Default for UnilOptions {
     fn default() -> Self {
-        UnilOptions {
-            method: Method::Auto,
-            max_iter: None,
-            initial: None,
-            rule: Rule::Damped,
-        }
+        UnilOptions { method: Method::Auto, max_iter: None, initial: None, rule: Rule::Damped }
     }
 }
 
@@ -88,10 +82,7 @@ pub fn solve_unilateral(
     match opts.method {
         Method::Auto | Method::Condense => {}
         Method::Ancien | Method::Iter | Method::Creux => {
-            return Err(SolveError::Other(format!(
-                "unilateral method {:?} is not available yet",
-                opts.method
-            )))
+            return Err(SolveError::Other(format!("unilateral method {:?} is not available yet", opts.method)))
         }
     }
     let mut phases = Vec::new();
@@ -127,11 +118,7 @@ pub fn solve_unilateral(
         Some(s) => Some(s.clone()),
         None => cache.status.clone(),
     };
-    let sopts = status::StatusOptions {
-        max_iter: opts.max_iter,
-        start,
-        rule: opts.rule,
-    };
+    let sopts = status::StatusOptions { max_iter: opts.max_iter, start, rule: opts.rule };
     let global = |v: &[usize]| v.iter().map(|&q| uni[q]).collect::<Vec<_>>();
     let mut records = Vec::new();
     let mut forward = |r: &IterRecord| {
@@ -167,29 +154,14 @@ pub fn solve_unilateral(
 
 /// Condition positions among the unilateral ones → global numbers.
 fn to_global(e: SolveError, uni: &[usize]) -> SolveError {
-    let g = |v: Vec<usize>| {
-        v.into_iter()
-            .map(|q| uni.get(q).copied().unwrap_or(q))
-            .collect()
-    };
+    let g = |v: Vec<usize>| v.into_iter().map(|q| uni.get(q).copied().unwrap_or(q)).collect();
     match e {
-        SolveError::DependentConditions { conditions } => SolveError::DependentConditions {
-            conditions: g(conditions),
-        },
-        SolveError::Conflicting { conditions } => SolveError::Conflicting {
-            conditions: g(conditions),
-        },
-        SolveError::Infeasible { conditions, work } => SolveError::Infeasible {
-            conditions: g(conditions),
-            work,
-        },
-        SolveError::NoConvergence {
-            iterations,
-            conditions,
-        } => SolveError::NoConvergence {
-            iterations,
-            conditions: g(conditions),
-        },
+        SolveError::DependentConditions { conditions } => SolveError::DependentConditions { conditions: g(conditions) },
+        SolveError::Conflicting { conditions } => SolveError::Conflicting { conditions: g(conditions) },
+        SolveError::Infeasible { conditions, work } => SolveError::Infeasible { conditions: g(conditions), work },
+        SolveError::NoConvergence { iterations, conditions } => {
+            SolveError::NoConvergence { iterations, conditions: g(conditions) }
+        }
         e => e,
     }
 }

@@ -5,27 +5,13 @@ use crate::solve::problem::{Condition, Kind, Matrix};
 
 fn spring(kind: Kind) -> Problem {
     Problem {
-        k: Matrix {
-            n: 1,
-            entries: vec![(0, 0, 10.0)],
-            symmetric: true,
-        },
-        conditions: vec![Condition {
-            terms: vec![(0, 1.0)],
-            kind,
-        }],
+        k: Matrix { n: 1, entries: vec![(0, 0, 10.0)], symmetric: true },
+        conditions: vec![Condition { terms: vec![(0, 1.0)], kind }],
     }
 }
 
 fn run(p: &Problem, f: Vec<f64>, d: Vec<f64>, cache: &mut UnilCache) -> (Solution, UnilReport) {
-    solve_unilateral(
-        p,
-        &Load { f, d },
-        &UnilOptions::default(),
-        cache,
-        &mut |_| {},
-    )
-    .unwrap()
+    solve_unilateral(p, &Load { f, d }, &UnilOptions::default(), cache, &mut |_| {}).unwrap()
 }
 
 fn close(a: f64, b: f64) {
@@ -36,22 +22,12 @@ fn close(a: f64, b: f64) {
 fn spring_against_a_stop() {
     // (a): k = 10, F = 5, MAXI u ≤ g: u = min(F/k, g), λ = max(0, F − k g).
     for (g, u, lam) in [(1.0, 0.5, 0.0), (0.2, 0.2, 3.0), (0.5, 0.5, 0.0)] {
-        let (s, _) = run(
-            &spring(Kind::Maxi),
-            vec![5.0],
-            vec![g],
-            &mut UnilCache::default(),
-        );
+        let (s, _) = run(&spring(Kind::Maxi), vec![5.0], vec![g], &mut UnilCache::default());
         close(s.u[0], u);
         close(s.lambda[0], lam);
     }
     // (a4): MINI u ≥ −0.2 under F = −5: active, λ = −3.
-    let (s, r) = run(
-        &spring(Kind::Mini),
-        vec![-5.0],
-        vec![-0.2],
-        &mut UnilCache::default(),
-    );
+    let (s, r) = run(&spring(Kind::Mini), vec![-5.0], vec![-0.2], &mut UnilCache::default());
     close(s.u[0], -0.2);
     close(s.lambda[0], -3.0);
     assert!(s.active[0]);
@@ -69,17 +45,8 @@ fn chain_with_three_stops_and_warm_start() {
         }
     }
     let p = Problem {
-        k: Matrix {
-            n: 3,
-            entries,
-            symmetric: true,
-        },
-        conditions: (0..3)
-            .map(|i| Condition {
-                terms: vec![(i, 1.0)],
-                kind: Kind::Maxi,
-            })
-            .collect(),
+        k: Matrix { n: 3, entries, symmetric: true },
+        conditions: (0..3).map(|i| Condition { terms: vec![(i, 1.0)], kind: Kind::Maxi }).collect(),
     };
     let g = vec![2.0, 1.5, 2.4];
     let mut cache = UnilCache::default();
@@ -110,29 +77,16 @@ fn bilateral_and_unilateral_together() {
         entries.extend([(i, i, 1.0), (i + 1, i + 1, 1.0), (i, i + 1, -1.0)]);
     }
     let p = Problem {
-        k: Matrix {
-            n: 3,
-            entries,
-            symmetric: true,
-        },
+        k: Matrix { n: 3, entries, symmetric: true },
         conditions: vec![
-            Condition {
-                terms: vec![(0, 1.0)],
-                kind: Kind::Equal,
-            },
-            Condition {
-                terms: vec![(2, 1.0)],
-                kind: Kind::Maxi,
-            },
+            Condition { terms: vec![(0, 1.0)], kind: Kind::Equal },
+            Condition { terms: vec![(2, 1.0)], kind: Kind::Maxi },
         ],
     };
     let mut seen = 0;
     let (s, r) = solve_unilateral(
         &p,
-        &Load {
-            f: vec![0.0, 0.0, 1.0],
-            d: vec![0.0, 1.0],
-        },
+        &Load { f: vec![0.0, 0.0, 1.0], d: vec![0.0, 1.0] },
         &UnilOptions::default(),
         &mut UnilCache::default(),
         &mut |_| seen += 1,
