@@ -13,9 +13,27 @@ use crate::value::{Chpoint, Nature, Rigidite, Value};
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
-    OpDef { name: "BLOQ", signature: "BLOQ ('MINI'|'MAXI') (comps|LISTMOTS|'DEPL'|'ROTA'|'DIRECTION' VEC|'RADIAL' P1|'ORTHO' P1) GEO", doc: "Block unknowns of a point or mesh: one condition per node and component (MINI: u >= d, MAXI: u <= d).", example: "cl = bloq 'UX' 'UY' p1 ;", f: bloq },
-    OpDef { name: "RELA", signature: "RELA ('MINI'|'MAXI') (c1) comp1 GEO1 (+|-) (c2) comp2 GEO2 … | RELA ('MINI'|'MAXI') CHPOINT", doc: "Linear relations between unknowns, node by node (MINI: >= d, MAXI: <= d).", example: "r = rela 'MINI' 1. 'UX' pb - 1. 'UX' pa ;", f: rela },
-    OpDef { name: "DEPI", signature: "DEPI RIGIDITE (FLOT|CHPOINT)", doc: "Imposed values (limits) of conditions, as the FLX field to add to the right-hand side.", example: "d = depi cl 0.3 ;", f: depi },
+    OpDef {
+        name: "BLOQ",
+        signature: "BLOQ ('MINI'|'MAXI') (comps|LISTMOTS|'DEPL'|'ROTA'|'DIRECTION' VEC|'RADIAL' P1|'ORTHO' P1) GEO",
+        doc: "Block unknowns of a point or mesh: one condition per node and component (MINI: u >= d, MAXI: u <= d).",
+        example: "cl = bloq 'UX' 'UY' p1 ;",
+        f: bloq,
+    },
+    OpDef {
+        name: "RELA",
+        signature: "RELA ('MINI'|'MAXI') (c1) comp1 GEO1 (+|-) (c2) comp2 GEO2 … | RELA ('MINI'|'MAXI') CHPOINT",
+        doc: "Linear relations between unknowns, node by node (MINI: >= d, MAXI: <= d).",
+        example: "r = rela 'MINI' 1. 'UX' pb - 1. 'UX' pa ;",
+        f: rela,
+    },
+    OpDef {
+        name: "DEPI",
+        signature: "DEPI RIGIDITE (FLOT|CHPOINT)",
+        doc: "Imposed values (limits) of conditions, as the FLX field to add to the right-hand side.",
+        example: "d = depi cl 0.3 ;",
+        f: depi,
+    },
 ];
 
 fn kind_keyword(a: &mut Args) -> Kind {
@@ -119,11 +137,7 @@ fn direction_terms(it: &Interp, node: usize, v: [f64; 3]) -> std::result::Result
     if norm == 0.0 {
         return Err("the direction is a zero vector".into());
     }
-    Ok(t.iter()
-        .enumerate()
-        .filter(|(k, _)| v[*k] != 0.0)
-        .map(|(k, c)| (node, c.to_string(), v[k] / norm))
-        .collect())
+    Ok(t.iter().enumerate().filter(|(k, _)| v[*k] != 0.0).map(|(k, c)| (node, c.to_string(), v[k] / norm)).collect())
 }
 
 fn rela(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
@@ -196,7 +210,9 @@ fn depi(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                     out.add(c.mult_node, "FLX", v * coef, true);
                 }
             } else {
-                return Err(a.err("per-node values apply to single-unknown conditions (BLOQ); give a number for relations"));
+                return Err(
+                    a.err("per-node values apply to single-unknown conditions (BLOQ); give a number for relations")
+                );
             }
         }
     } else {

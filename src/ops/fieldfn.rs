@@ -5,20 +5,24 @@ use super::Args;
 use crate::error::Result;
 use crate::eval::Interp;
 use crate::value::Value;
+use std::rc::Rc;
 
-pub(crate) fn abs(_it: &mut Interp, _v: &Value) -> Option<Value> {
-    None
+pub(crate) fn abs(_it: &mut Interp, v: &Value) -> Option<Value> {
+    match v {
+        Value::Chpo(c) => Some(Value::Chpo(Rc::new(c.map(f64::abs)))),
+        _ => None,
+    }
 }
 
-pub(crate) fn extremum(_it: &mut Interp, _a: &mut Args, _max: bool, _abs: bool) -> Result<Option<Value>> {
-    Ok(None)
+pub(crate) fn extremum(_it: &mut Interp, a: &mut Args, max: bool, abs: bool) -> Result<Option<Value>> {
+    super::fields::extremum(a, max, abs)
 }
 
 /// EXTR on FE objects; None when the arguments are not FE objects.
-pub(crate) fn extr(_it: &mut Interp, _a: &mut Args) -> Result<Option<Vec<Value>>> {
-    Ok(None)
+pub(crate) fn extr(it: &mut Interp, a: &mut Args) -> Result<Option<Vec<Value>>> {
+    super::fields::extr(it, a)
 }
 
-pub(crate) fn dime(_v: &Value) -> Option<i64> {
-    None
+pub(crate) fn dime(v: &Value) -> Option<i64> {
+    super::fields::dime(v)
 }

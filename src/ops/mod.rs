@@ -4,12 +4,19 @@
 
 mod args;
 mod arith;
+mod assemble;
+mod bc;
+mod dofs;
 mod fieldfn;
+mod fields;
 mod io;
 mod lists;
+mod manu;
 mod math;
 mod mesh;
+mod model;
 mod objects;
+mod reso;
 pub mod solver_cache;
 mod union;
 
@@ -108,7 +115,20 @@ impl Registry {
     /// Every built-in family.
     pub fn standard() -> Self {
         let mut r = Registry::default();
-        for table in [arith::OPS, math::OPS, lists::OPS, objects::OPS, io::OPS, union::OPS, mesh::OPS] {
+        for table in [
+            arith::OPS,
+            math::OPS,
+            lists::OPS,
+            objects::OPS,
+            io::OPS,
+            union::OPS,
+            mesh::OPS,
+            bc::OPS,
+            model::OPS,
+            manu::OPS,
+            fields::OPS,
+            reso::OPS,
+        ] {
             for d in table {
                 r.insert(OpSpec::from(d));
             }

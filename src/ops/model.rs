@@ -20,7 +20,8 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "APPU", signature: "APPU ('DEPL') ('ROTA') (comps) ('DIRECTION' VEC) VALUE GEO", doc: "Springs to ground of stiffness VALUE on the listed unknowns of every node.", example: "ri = appu 'UX' 10. p1 ;", f: appu },
 ];
 
-const FORMS: &[&str] = &["BARR", "POUT", "TIMO", "Q4RI", "TRI3", "TRI6", "QUA4", "QUA8", "CUB8", "TET4", "PRI6", "SEG2"];
+const FORMS: &[&str] =
+    &["BARR", "POUT", "TIMO", "Q4RI", "TRI3", "TRI6", "QUA4", "QUA8", "CUB8", "TET4", "PRI6", "SEG2"];
 
 fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let geo = req_geo(a)?;
@@ -37,7 +38,9 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         } else if ["ELAS", "ISOT"].iter().any(|k| w.starts_with(k)) {
             behaviour.push(w);
         } else {
-            return Err(a.err(format!("{} is not supported (elastic isotropic BARR, POUT, TIMO and massive elements are)", w)));
+            return Err(
+                a.err(format!("{} is not supported (elastic isotropic BARR, POUT, TIMO and massive elements are)", w))
+            );
         }
     }
     let mode = it.opts.mode.clone();
@@ -60,7 +63,8 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 const PROPS: &[&str] = &[
-    "YOUN", "NU", "RHO", "ALPH", "SECT", "INRY", "INRZ", "TORS", "SECY", "SECZ", "EPAI", "DIM3", "DX", "DY", "DZ", "VECT",
+    "YOUN", "NU", "RHO", "ALPH", "SECT", "INRY", "INRZ", "TORS", "SECY", "SECZ", "EPAI", "DIM3", "DX", "DY", "DZ",
+    "VECT",
 ];
 
 fn props(it: &Interp, a: &mut Args, subtype: &str) -> Result<Vec<Value>> {

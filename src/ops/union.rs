@@ -81,11 +81,17 @@ pub(crate) fn as_mesh(v: &Value) -> Option<Mesh> {
 }
 
 /// ET of FE objects (fields, rigidities, models, element fields).
-pub(crate) fn fields_union(_it: &mut Interp, _a: &Args, _x: &Value, _y: &Value, _noer: bool) -> Result<Option<Value>> {
-    Ok(None)
+pub(crate) fn fields_union(_it: &mut Interp, a: &Args, x: &Value, y: &Value, noer: bool) -> Result<Option<Value>> {
+    match super::fields::union(x, y, noer) {
+        Some(r) => super::fields::to_err(a, r).map(Some),
+        None => Ok(None),
+    }
 }
 
 /// `+ - * /` on FE objects.
-pub(crate) fn fields_binary(_it: &mut Interp, _a: &Args, _op: Bin, _x: &Value, _y: &Value) -> Result<Option<Value>> {
-    Ok(None)
+pub(crate) fn fields_binary(_it: &mut Interp, a: &Args, op: Bin, x: &Value, y: &Value) -> Result<Option<Value>> {
+    match super::fields::binary(op, x, y) {
+        Some(r) => super::fields::to_err(a, r).map(Some),
+        None => Ok(None),
+    }
 }

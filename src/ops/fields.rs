@@ -1,0 +1,571 @@
+//! Node fields (CHPOINT): loads, extraction, renaming, algebra, and the
+//! matrix-vector product `RIGIDITE * CHPOINT`.
+
+use super::arith::Bin;
+use super::mesh::req_geo;
+use super::{dofs, Args, OpDef, PointId};
+use crate::error::{Error, Result};
+use crate::eval::Interp;
+use crate::fem::mesh::Mesh;
+use crate::value::rigidity::Subtype;
+use crate::value::{Chpoint, Mchaml, Model, Nature, Rigidite, Value};
+use std::collections::HashMap;
+use std::rc::Rc;
+
+pub(crate) const OPS: &[OpDef] = &[
+    OpDef {
+        name: "FORC",
+        signature: "FORC ('FX' v 'FY' v …) | VECTOR  GEO",
+        doc: "Nodal forces on a point, or a total force spread evenly over the nodes of a mesh (DISCRET field).",
+        example: "f = forc 'FY' -3. p1 ;",
+        f: forc,
+    },
+    OpDef {
+        name: "MOME",
+        signature: "MOME ('MZ' v …) | VECTOR  GEO",
+        doc: "Nodal moments.",
+        example: "m = mome 'MZ' 2. p1 ;",
+        f: mome,
+    },
+    OpDef {
+        name: "EXCO",
+        signature: "EXCO COMP|LISTMOTS ('NOID') CHPOINT (NEWNAME|LISTMOTS)",
+        doc: "Extract components (a single one is renamed SCAL unless a new name is given).",
+        example: "ux = exco u 'UX' ;",
+        f: exco,
+    },
+    OpDef {
+        name: "NOMC",
+        signature: "NOMC NEWNAME CHPOINT | NOMC LISTMOTS_OLD LISTMOTS_NEW CHPOINT",
+        doc: "Rename components.",
+        example: "c = nomc 'UX' (coor 1 l) ;",
+        f: nomc,
+    },
+    OpDef {
+        name: "ENLE",
+        signature: "ENLE CHPOINT COMP|LISTMOTS",
+        doc: "Remove components of a field.",
+        example: "u2 = enle u 'LX' ;",
+        f: enle,
+    },
+    OpDef {
+        name: "REDU",
+        signature: "REDU CHPOINT GEO",
+        doc: "Restrict a field to the nodes of a mesh or point.",
+        example: "u2 = redu u l ;",
+        f: redu,
+    },
+    OpDef { name: "XTX", signature: "XTX CHPOINT", doc: "Squared norm of a field.", example: "n = xtx r ;", f: xtx },
+    OpDef {
+        name: "RESU",
+        signature: "RESU CHPOINT",
+        doc: "Resultant: the sum of each component, on the first node of the field.",
+        example: "r = resu f ;",
+        f: resu,
+    },
+];
+
+fn loads(it: &mut Interp, a: &mut Args, vec_names: &[&'static str]) -> Result<Vec<Value>> {
+    let mut comps: Vec<(String, f64)> = Vec::new();
+    while let Some(w) = a.word_not_operator() {
+        comps.push((w, a.req_num()?));
+    }
+    let geo = if comps.is_empty() {
+        let v = a.req::<PointId>()?;
+        let x = it.nodes.get(v.0);
+        comps = vec_names.iter().enumerate().map(|(k, c)| (c.to_string(), x[k])).collect();
+        req_geo(a)?
+    } else {
+        req_geo(a)?
+    };
+    let nodes = geo.node_list();
+    // A total load on a mesh is shared evenly by its nodes (forc.notice).
+    let share = 1.0 / nodes.len().max(1) as f64;
+    let mut c = Chpoint::new(Nature::Discret);
+    for n in &nodes {
+        for (comp, v) in &comps {
+            c.add(*n, comp, v * share, true);
+        }
+    }
+    Ok(vec![Value::Chpo(Rc::new(c))])
+}
+
+fn forc(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let names = dofs::forces(it);
+    loads(it, a, names)
+}
+
+fn mome(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let names = dofs::moments(it);
+    loads(it, a, names)
+}
+
+fn comp_list(a: &mut Args) -> Option<Vec<String>> {
+    if let Some(l) = a.opt::<Rc<Vec<String>>>() {
+        return Some(l.to_vec());
+    }
+    a.word_not_operator().map(|w| vec![w])
+}
+
+fn exco(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let ch = a.req::<Rc<Chpoint>>()?;
+    let comps = comp_list(a).ok_or_else(|| a.missing("a component"))?;
+    let noid = a.keyword(&["NOID"]).is_some();
+    let new = comp_list(a);
+    let names: Vec<String> = match &new {
+        Some(n) if n.len() == comps.len() => n.clone(),
+        Some(_) => return Err(a.err("as many new names as components are needed")),
+        None if comps.len() == 1 => vec!["SCAL".into()],
+        None => comps.clone(),
+    };
+    a.keyword(&["NATU"]).map(|_| a.word());
+    let present = ch.components();
+    if !noid {
+        if let Some(c) = comps.iter().find(|c| !present.contains(c)) {
+            return Err(a.err(format!("the field has no component {} (it has {})", c, present.join(" "))));
+        }
+    }
+    let mut out = Chpoint::new(ch.nature);
+    for (n, c, v) in ch.entries() {
+        if let Some(i) = comps.iter().position(|x| x == c) {
+            out.add(n, &names[i], v, false);
+        }
+    }
+    Ok(vec![Value::Chpo(Rc::new(out))])
+}
+
+fn nomc(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let ch = a.req::<Rc<Chpoint>>()?;
+    let first = comp_list(a).ok_or_else(|| a.missing("new component names"))?;
+    let (old, new) = match comp_list(a) {
+        Some(second) => (first, second),
+        None => (ch.components(), first),
+    };
+    if old.len() != new.len() {
+        return Err(a.err(format!("{} component(s) to rename with {} name(s)", old.len(), new.len())));
+    }
+    let mut out = Chpoint::new(ch.nature);
+    for (n, c, v) in ch.entries() {
+        let name = old.iter().position(|x| x == c).map_or(c, |i| new[i].as_str());
+        out.add(n, name, v, false);
+    }
+    Ok(vec![Value::Chpo(Rc::new(out))])
+}
+
+fn enle(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let ch = a.req::<Rc<Chpoint>>()?;
+    let comps = comp_list(a).ok_or_else(|| a.missing("components to remove"))?;
+    let out = Chpoint::from_entries(ch.nature, ch.entries().filter(|(_, c, _)| !comps.iter().any(|x| x == c)));
+    Ok(vec![Value::Chpo(Rc::new(out))])
+}
+
+fn redu(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let ch = a.req::<Rc<Chpoint>>()?;
+    let geo = req_geo(a)?;
+    let keep: std::collections::HashSet<usize> = geo.node_list().into_iter().collect();
+    let out = Chpoint::from_entries(ch.nature, ch.entries().filter(|(n, _, _)| keep.contains(n)));
+    Ok(vec![Value::Chpo(Rc::new(out))])
+}
+
+fn xtx(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let ch = a.req::<Rc<Chpoint>>()?;
+    Ok(vec![Value::Float(ch.entries().map(|(_, _, v)| v * v).sum())])
+}
+
+fn resu(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let ch = a.req::<Rc<Chpoint>>()?;
+    let first = *ch.nodes.first().ok_or_else(|| a.err("the field is empty"))?;
+    let mut out = Chpoint::new(Nature::Discret);
+    for (_, c, v) in ch.entries() {
+        out.add(first, c, v, true);
+    }
+    Ok(vec![Value::Chpo(Rc::new(out))])
+}
+
+// ---- algebra reached through the generic operators ----------------------
+
+fn combine(x: &Chpoint, y: &Chpoint, f: impl Fn(f64, f64) -> f64) -> Chpoint {
+    let nature = if x.nature == Nature::Discret && y.nature == Nature::Discret { Nature::Discret } else { x.nature };
+    let mut out = Chpoint::new(nature);
+    for (n, c, v) in x.entries() {
+        out.add(n, c, f(v, y.get(n, c).unwrap_or(0.0)), false);
+    }
+    for (n, c, v) in y.entries() {
+        if x.get(n, c).is_none() {
+            out.add(n, c, f(0.0, v), false);
+        }
+    }
+    out
+}
+
+/// Product of two fields: a single-component SCAL field multiplies every
+/// component of the other (aaa2.notice); otherwise component by component.
+fn product(x: &Chpoint, y: &Chpoint, div: bool) -> Chpoint {
+    let op = |p: f64, q: f64| if div { p / q } else { p * q };
+    let scal = |c: &Chpoint| c.components() == ["SCAL"];
+    let mut out = Chpoint::new(x.nature);
+    if scal(y) && !scal(x) {
+        for (n, c, v) in x.entries() {
+            if let Some(s) = y.get(n, "SCAL") {
+                out.add(n, c, op(v, s), false);
+            }
+        }
+    } else if scal(x) && !scal(y) && !div {
+        for (n, c, v) in y.entries() {
+            if let Some(s) = x.get(n, "SCAL") {
+                out.add(n, c, s * v, false);
+            }
+        }
+    } else {
+        for (n, c, v) in x.entries() {
+            if let Some(w) = y.get(n, c) {
+                out.add(n, c, op(v, w), false);
+            }
+        }
+    }
+    out
+}
+
+fn scale_rigi(r: &Rigidite, s: f64) -> Rigidite {
+    let mut out = Rigidite::new(r.subtype);
+    out.blocks = r.blocks.clone();
+    for b in out.blocks.iter_mut() {
+        for v in b.mats.iter_mut() {
+            *v *= s;
+        }
+    }
+    out.conds = r.conds.clone();
+    out
+}
+
+/// `RIGIDITE * CHPOINT`: K u on the primal rows (dual names), and for the
+/// conditions c·u on FLX and cᵀλ on the primal rows (λ = LX of the field).
+pub(crate) fn matvec(r: &Rigidite, u: &Chpoint) -> Chpoint {
+    let mut out = Chpoint::new(Nature::Discret);
+    for b in &r.blocks {
+        let nd = b.ndof();
+        for e in 0..b.n_elem() {
+            let conn = &b.conn[e * b.nodes_per_elem..(e + 1) * b.nodes_per_elem];
+            let m = b.mat(e);
+            let ue: Vec<f64> = b.dofs.iter().map(|(l, c)| u.get(conn[*l], c).unwrap_or(0.0)).collect();
+            for i in 0..nd {
+                let s: f64 = (0..nd).map(|j| m[i * nd + j] * ue[j]).sum();
+                out.add(conn[b.dofs[i].0], &b.duals[i], s, true);
+            }
+        }
+    }
+    for c in &r.conds {
+        let cu: f64 = c.terms.iter().map(|(n, comp, k)| k * u.get(*n, comp).unwrap_or(0.0)).sum();
+        out.add(c.mult_node, "FLX", cu, true);
+        if let Some(l) = u.get(c.mult_node, "LX") {
+            for (n, comp, k) in &c.terms {
+                out.add(*n, &dofs::dual_of(comp), k * l, true);
+            }
+        }
+    }
+    out
+}
+
+pub(crate) fn binary(op: Bin, x: &Value, y: &Value) -> Option<std::result::Result<Value, String>> {
+    use Value::*;
+    let f = |p: f64, q: f64| match op {
+        Bin::Add => p + q,
+        Bin::Sub => p - q,
+        Bin::Mul => p * q,
+        Bin::Div => p / q,
+        Bin::Pow => p.powf(q),
+    };
+    Some(Ok(match (x, y) {
+        (Chpo(a), Chpo(b)) => match op {
+            Bin::Add | Bin::Sub => Chpo(Rc::new(combine(a, b, f))),
+            Bin::Mul | Bin::Div => Chpo(Rc::new(product(a, b, op == Bin::Div))),
+            Bin::Pow => return Some(Err("no power of two fields".into())),
+        },
+        (Chpo(a), Int(_) | Float(_)) => {
+            let s = y.as_f64().unwrap_or(0.0);
+            Chpo(Rc::new(a.map(|v| f(v, s))))
+        }
+        (Int(_) | Float(_), Chpo(b)) => {
+            let s = x.as_f64().unwrap_or(0.0);
+            Chpo(Rc::new(b.map(|v| f(s, v))))
+        }
+        (Rigi(r), Chpo(u)) | (Chpo(u), Rigi(r)) if op == Bin::Mul => Chpo(Rc::new(matvec(r, u))),
+        (Rigi(r), Int(_) | Float(_)) if op == Bin::Mul => Rigi(Rc::new(scale_rigi(r, y.as_f64().unwrap_or(0.0)))),
+        (Int(_) | Float(_), Rigi(r)) if op == Bin::Mul => Rigi(Rc::new(scale_rigi(r, x.as_f64().unwrap_or(0.0)))),
+        (Rigi(r), Rigi(s)) if op == Bin::Add => Rigi(Rc::new(assemble(r, s))),
+        (Rigi(r), Rigi(s)) if op == Bin::Sub => Rigi(Rc::new(assemble(r, &scale_rigi(s, -1.0)))),
+        _ => return None,
+    }))
+}
+
+/// `ET` of two rigidities: the lists are concatenated (lazy assembly). The
+/// result is a new object, so it starts with a fresh solver cache (no warm
+/// start after re-assembly, as in Cast3M).
+pub(crate) fn assemble(r: &Rigidite, s: &Rigidite) -> Rigidite {
+    let subtype = if r.subtype == Subtype::Blocage { s.subtype } else { r.subtype };
+    let mut out = Rigidite::new(subtype);
+    out.blocks = r.blocks.iter().chain(s.blocks.iter()).cloned().collect();
+    out.conds = r.conds.iter().chain(s.conds.iter()).cloned().collect();
+    out
+}
+
+pub(crate) fn union(x: &Value, y: &Value, noer: bool) -> Option<std::result::Result<Value, String>> {
+    use Value::*;
+    Some(Ok(match (x, y) {
+        (Chpo(a), Chpo(b)) => match merge_fields(a, b, noer) {
+            Ok(c) => Chpo(Rc::new(c)),
+            Err(e) => return Some(Err(e)),
+        },
+        (Rigi(a), Rigi(b)) => Rigi(Rc::new(assemble(a, b))),
+        (Model(a), Model(b)) => {
+            Model(Rc::new(crate::value::Model { zones: a.zones.iter().chain(b.zones.iter()).cloned().collect() }))
+        }
+        (Mchaml(a), Mchaml(b)) => Mchaml(Rc::new(merge_mchaml(a, b))),
+        _ => return None,
+    }))
+}
+
+fn merge_fields(a: &Chpoint, b: &Chpoint, noer: bool) -> std::result::Result<Chpoint, String> {
+    let diffus = a.nature != Nature::Discret || b.nature != Nature::Discret;
+    let nature =
+        if diffus && (a.nature == Nature::Diffus || b.nature == Nature::Diffus) { Nature::Diffus } else { a.nature };
+    let mut out = a.clone();
+    out.nature = nature;
+    for (n, c, v) in b.entries() {
+        match a.get(n, c) {
+            Some(w) if diffus => {
+                if !noer && (v - w).abs() > 1e-10 * v.abs().max(w.abs()).max(1e-300) {
+                    return Err(format!(
+                        "DIFFUS fields disagree at node {} on {} ({} and {}); use 'NOER' to keep the first",
+                        n + 1,
+                        c,
+                        w,
+                        v
+                    ));
+                }
+            }
+            _ => out.add(n, c, v, !diffus),
+        }
+    }
+    Ok(out)
+}
+
+fn merge_mchaml(a: &Mchaml, b: &Mchaml) -> Mchaml {
+    let mut out = a.clone();
+    for z in &b.zones {
+        match out.zones.iter_mut().find(|x| x.mesh == z.mesh && x.values.is_empty() && z.values.is_empty()) {
+            Some(x) => {
+                x.constants.extend(z.constants.clone());
+                x.vectors.extend(z.vectors.clone());
+            }
+            None => out.zones.push(z.clone()),
+        }
+    }
+    out
+}
+
+/// MAXI/MINI of a field ('ABS', 'AVEC'/'SANS' components).
+pub(crate) fn extremum(a: &mut Args, max: bool, use_abs: bool) -> Result<Option<Value>> {
+    let vals: Vec<f64> = if let Some(ch) = a.opt::<Rc<Chpoint>>() {
+        let filter = match a.keyword(&["AVEC", "SANS"]) {
+            Some(k) => Some((k == "AVEC", comp_list(a).ok_or_else(|| a.missing("components"))?)),
+            None => None,
+        };
+        let use_abs = use_abs || a.keyword(&["ABS"]).is_some();
+        ch.entries()
+            .filter(|(_, c, _)| match &filter {
+                Some((avec, l)) => l.iter().any(|x| x == c) == *avec,
+                None => true,
+            })
+            .map(|(_, _, v)| if use_abs { v.abs() } else { v })
+            .collect()
+    } else if let Some(m) = a.opt::<Rc<Mchaml>>() {
+        let use_abs = use_abs || a.keyword(&["ABS"]).is_some();
+        m.zones
+            .iter()
+            .flat_map(|z| z.values.iter().flatten().flatten())
+            .map(|v| if use_abs { v.abs() } else { *v })
+            .collect()
+    } else {
+        return Ok(None);
+    };
+    let r = vals.into_iter().reduce(|p, q| if max { p.max(q) } else { p.min(q) });
+    r.map(|v| Some(Value::Float(v))).ok_or_else(|| a.err("the field is empty"))
+}
+
+/// EXTR on a field, a rigidity, an element field or a model.
+pub(crate) fn extr(it: &mut Interp, a: &mut Args) -> Result<Option<Vec<Value>>> {
+    if let Some(ch) = a.opt::<Rc<Chpoint>>() {
+        return extr_chpo(it, a, &ch).map(Some);
+    }
+    if let Some(r) = a.opt::<Rc<Rigidite>>() {
+        return extr_rigi(a, &r).map(Some);
+    }
+    if let Some(m) = a.opt::<Rc<Mchaml>>() {
+        let comp = a.word_not_operator().ok_or_else(|| a.missing("a component"))?;
+        let mut idx = [1i64; 3];
+        for k in idx.iter_mut() {
+            match a.opt::<i64>() {
+                Some(v) => *k = v,
+                None => break,
+            }
+        }
+        let z = m.zones.get((idx[0] - 1).max(0) as usize).ok_or_else(|| a.err(format!("no zone {}", idx[0])))?;
+        if let Some(v) = z.constants.get(&comp) {
+            return Ok(Some(vec![Value::Float(*v)]));
+        }
+        let c = z
+            .comps
+            .iter()
+            .position(|x| *x == comp)
+            .ok_or_else(|| a.err(format!("the field has no component {} (it has {})", comp, z.comps.join(" "))))?;
+        let e = z.values.get((idx[1] - 1).max(0) as usize).ok_or_else(|| a.err(format!("no element {}", idx[1])))?;
+        let p = e.get((idx[2] - 1).max(0) as usize).ok_or_else(|| a.err(format!("no point {}", idx[2])))?;
+        return Ok(Some(vec![Value::Float(p[c])]));
+    }
+    if let Some(m) = a.opt::<Rc<Model>>() {
+        a.keyword(&["MAIL"]);
+        let mut mesh = Mesh::default();
+        for z in &m.zones {
+            mesh = mesh.union(&z.mesh);
+        }
+        return Ok(Some(vec![Value::Mesh(Rc::new(mesh))]));
+    }
+    Ok(None)
+}
+
+fn extr_chpo(it: &Interp, a: &mut Args, ch: &Chpoint) -> Result<Vec<Value>> {
+    if let Some(k) = a.keyword(&["MAIL", "VALE", "COMP", "NATU"]) {
+        return Ok(vec![match k {
+            "MAIL" => {
+                let nomu = a.keyword(&["NOMU"]).is_some();
+                let nodes: Vec<usize> = ch
+                    .nodes
+                    .iter()
+                    .copied()
+                    .filter(|n| !nomu || ch.get(*n, "LX").is_none() && ch.get(*n, "FLX").is_none())
+                    .collect();
+                Value::Mesh(Rc::new(Mesh::points(&nodes)))
+            }
+            "VALE" => {
+                let comp = a.word_not_operator().ok_or_else(|| a.missing("a component"))?;
+                let geo = super::mesh::opt_geo(a);
+                let nodes = geo.map_or_else(|| ch.nodes.clone(), |g| g.node_list());
+                Value::ListReel(Rc::new(nodes.iter().filter_map(|n| ch.get(*n, &comp)).collect()))
+            }
+            "COMP" => Value::ListMots(Rc::new(ch.components())),
+            _ => Value::mot(ch.nature.name()),
+        }]);
+    }
+    let comp = a.word_not_operator();
+    let p = a.req::<PointId>()?;
+    let comp = match comp.or_else(|| a.word_not_operator()) {
+        Some(c) => c,
+        None => {
+            let cs = ch.components();
+            if cs.len() != 1 {
+                return Err(a.missing("a component"));
+            }
+            cs[0].clone()
+        }
+    };
+    if !ch.components().contains(&comp) {
+        return Err(a.err(format!("the field has no component {} (it has {})", comp, ch.components().join(" "))));
+    }
+    // A node field is zero where it is not defined (aaa2.notice): an
+    // inactive unilateral condition has no LX, which reads as 0.
+    let v = ch.get(p.0, &comp).or_else(|| {
+        let x = it.nodes.get(p.0);
+        ch.nodes.iter().find(|n| it.nodes.get(**n) == x).and_then(|n| ch.get(*n, &comp))
+    });
+    Ok(vec![Value::Float(v.unwrap_or(0.0))])
+}
+
+fn extr_rigi(a: &mut Args, r: &Rigidite) -> Result<Vec<Value>> {
+    match a.req_keyword(&["MAIL", "COMP", "DIAG"])? {
+        "MAIL" => {
+            let which = a.keyword(&["NOMU", "MULT", "UNIL"]);
+            let mut phys = Vec::new();
+            for b in &r.blocks {
+                phys.extend_from_slice(&b.conn);
+            }
+            for c in &r.conds {
+                phys.extend(c.terms.iter().map(|t| t.0));
+            }
+            let mut seen = std::collections::HashSet::new();
+            phys.retain(|n| seen.insert(*n));
+            let nodes: Vec<usize> = match which {
+                Some("NOMU") => phys,
+                Some("MULT") => r.conds.iter().map(|c| c.mult_node).collect(),
+                Some(_) => r.conds.iter().filter(|c| c.kind.is_unilateral()).map(|c| c.mult_node).collect(),
+                None => phys.into_iter().chain(r.conds.iter().map(|c| c.mult_node)).collect(),
+            };
+            Ok(vec![Value::Mesh(Rc::new(Mesh::points(&nodes)))])
+        }
+        "COMP" => {
+            let mut comps: Vec<String> = Vec::new();
+            for b in &r.blocks {
+                for (_, c) in &b.dofs {
+                    if !comps.contains(c) {
+                        comps.push(c.clone());
+                    }
+                }
+            }
+            if !r.conds.is_empty() {
+                comps.push("LX".into());
+            }
+            Ok(vec![Value::ListMots(Rc::new(comps))])
+        }
+        _ => {
+            let mut diag: HashMap<(usize, String), f64> = HashMap::new();
+            let mut order = Vec::new();
+            for b in &r.blocks {
+                let nd = b.ndof();
+                for e in 0..b.n_elem() {
+                    let conn = &b.conn[e * b.nodes_per_elem..(e + 1) * b.nodes_per_elem];
+                    for (i, (l, c)) in b.dofs.iter().enumerate() {
+                        let key = (conn[*l], c.clone());
+                        if !diag.contains_key(&key) {
+                            order.push(key.clone());
+                        }
+                        *diag.entry(key).or_insert(0.0) += b.mat(e)[i * nd + i];
+                    }
+                }
+            }
+            let c = Chpoint::from_entries(Nature::Diffus, order.iter().map(|k| (k.0, k.1.as_str(), diag[k])));
+            Ok(vec![Value::Chpo(Rc::new(c))])
+        }
+    }
+}
+
+/// DIME of a RIGIDITE: the number of its unknowns (primal and LX).
+pub(crate) fn dime(v: &Value) -> Option<i64> {
+    match v {
+        Value::Rigi(r) => {
+            let mut set = std::collections::HashSet::new();
+            for b in &r.blocks {
+                for e in 0..b.n_elem() {
+                    for (l, c) in &b.dofs {
+                        set.insert((b.conn[e * b.nodes_per_elem + l], c.clone()));
+                    }
+                }
+            }
+            for c in &r.conds {
+                for (n, comp, _) in &c.terms {
+                    set.insert((*n, comp.clone()));
+                }
+            }
+            Some((set.len() + r.conds.len()) as i64)
+        }
+        Value::Chpo(c) => Some(c.len() as i64),
+        Value::Evol(e) => Some(e.curves.len() as i64),
+        _ => None,
+    }
+}
+
+pub(crate) fn to_err(a: &Args, r: std::result::Result<Value, String>) -> Result<Value> {
+    r.map_err(|e| a.err(e))
+}
+
+#[allow(dead_code)]
+fn unused(_: Error) {}

@@ -1,0 +1,185 @@
+//! MANU: meshes from points, constant fields, hand-written matrices.
+
+use super::{dofs, Args, OpDef, PointId};
+use crate::error::Result;
+use crate::eval::Interp;
+use crate::fem::mesh::{ElemType, Mesh};
+use crate::fem::meshing as mg;
+use crate::value::rigidity::{Block, Subtype, Symmetry};
+use crate::value::{Chpoint, Nature, Rigidite, Value};
+use std::rc::Rc;
+
+pub(crate) const OPS: &[OpDef] = &[OpDef {
+    name: "MANU",
+    signature: "MANU TYPE P1 P2 … | MANU 'SUPE' P1 P2 … | MANU 'CHPO' GEO (n) COMP1 V1 … ('NATURE' 'DIFFUS'|'DISCRET') | MANU 'RIGI' ('TYPE' 'RIGIDITE'|'MASSE') GEO LISTMOTS ('DUAL' LISTMOTS) ('ANTI'|'QUEL') LISTREEL | MANU 'RIGI' CHPOINT 'DIAG'",
+    doc: "Build a mesh from points, a field from values, or a matrix from a list of values.",
+    example: "k = manu 'RIGI' m (mots 'UX') (prog 2. -1. -1. 2.) ;",
+    f: manu,
+}];
+
+fn manu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let what = a.word().ok_or_else(|| a.missing("an element type, 'SUPE', 'CHPO' or 'RIGI'"))?.to_uppercase();
+    if super::args::keyword_matches(&what, "CHPO") {
+        return chpo(it, a);
+    }
+    if super::args::keyword_matches(&what, "RIGIDITE") {
+        return rigi(it, a);
+    }
+    let mut pts = Vec::new();
+    while let Some(p) = a.opt::<PointId>() {
+        pts.push(p.0);
+    }
+    if super::args::keyword_matches(&what, "SUPE") {
+        // A super-element: one element over all its points. gibi keeps it
+        // as the point set; MANU 'RIGI' then sees one element over them.
+        if pts.is_empty() {
+            return Err(a.missing("POINT"));
+        }
+        return Ok(vec![Value::Mesh(Rc::new(Mesh::points(&pts)))]);
+    }
+    let ty = ElemType::from_name(&what).ok_or_else(|| a.err(format!("unknown element type {}", what)))?;
+    Ok(vec![Value::Mesh(Rc::new(mg::manu(&it.nodes, ty, &pts)?))])
+}
+
+fn chpo(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let geo = super::mesh::req_geo(a)?;
+    let _count = a.opt::<i64>();
+    let nodes = geo.node_list();
+    let mut nature = Nature::Diffus;
+    let mut c = Chpoint::new(nature);
+    loop {
+        if a.keyword(&["NATURE"]).is_some() {
+            nature = match a.req_keyword(&["DIFFUS", "DISCRET", "INDETER"])? {
+                "DIFFUS" => Nature::Diffus,
+                "DISCRET" => Nature::Discret,
+                _ => Nature::Indeter,
+            };
+            continue;
+        }
+        let Some(comp) = a.word_not_operator() else { break };
+        if let Some(l) = a.opt_right::<Rc<Vec<f64>>>() {
+            if l.len() != nodes.len() {
+                return Err(a.err(format!("{} values for {} nodes", l.len(), nodes.len())));
+            }
+            for (n, v) in nodes.iter().zip(l.iter()) {
+                c.add(*n, &comp, *v, false);
+            }
+        } else {
+            let v = a.req_num()?;
+            for n in &nodes {
+                c.add(*n, &comp, v, false);
+            }
+        }
+    }
+    c.nature = nature;
+    let _ = it;
+    Ok(vec![Value::Chpo(Rc::new(c))])
+}
+
+fn rigi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let mut subtype = Subtype::Rigidite;
+    if a.keyword(&["TYPE"]).is_some() {
+        subtype = match a.req_keyword(&["RIGIDITE", "MASSE"])? {
+            "MASSE" => Subtype::Masse,
+            _ => Subtype::Rigidite,
+        };
+    }
+    if let Some(ch) = a.opt::<Rc<Chpoint>>() {
+        a.keyword(&["DIAG"]);
+        let mut rig = Rigidite::new(subtype);
+        for (n, c, v) in ch.entries() {
+            rig.blocks.push(Block {
+                nodes_per_elem: 1,
+                conn: vec![n],
+                dofs: vec![(0, c.to_string())],
+                duals: vec![dofs::dual_of(c)],
+                mats: vec![v],
+                symmetry: Symmetry::Symmetric,
+            });
+        }
+        return Ok(vec![Value::Rigi(Rc::new(rig))]);
+    }
+    let geo = super::mesh::req_geo(a)?;
+    let comps = a.req::<Rc<Vec<String>>>()?;
+    let mut duals: Vec<String> = comps.iter().map(|c| dofs::dual_of(c)).collect();
+    let mut symmetry = Symmetry::Symmetric;
+    let mut values: Option<Rc<Vec<f64>>> = None;
+    loop {
+        if a.keyword(&["DUAL"]).is_some() {
+            let d = a.req::<Rc<Vec<String>>>()?;
+            if d.len() != comps.len() {
+                return Err(a.err("the DUAL list must have as many names as the unknowns"));
+            }
+            duals = d.to_vec();
+        } else if let Some(k) = a.keyword(&["ANTI", "QUEL", "SYME"]) {
+            symmetry = match k {
+                "ANTI" => Symmetry::Antisymmetric,
+                "QUEL" => Symmetry::General,
+                _ => Symmetry::Symmetric,
+            };
+        } else if values.is_none() {
+            match a.opt::<Rc<Vec<f64>>>() {
+                Some(v) => values = Some(v),
+                None => break,
+            }
+        } else {
+            break;
+        }
+    }
+    let values = values.ok_or_else(|| a.missing("LISTREEL"))?;
+    // One element per mesh element, or one super-element over every node
+    // (MANU 'SUPE' meshes) when the list has that size.
+    let nc = comps.len();
+    let per_elem: Vec<Vec<usize>> = geo.parts.iter().flat_map(|p| p.elems().map(|e| e.to_vec())).collect();
+    let npe = per_elem.first().map_or(0, |e| e.len());
+    let fits = |nn: usize| {
+        let d = nn * nc;
+        values.len() == d * d || values.len() == d * (d + 1) / 2
+    };
+    let elems: Vec<Vec<usize>> = if fits(npe) && per_elem.iter().all(|e| e.len() == npe) {
+        per_elem
+    } else if fits(geo.node_list().len()) {
+        vec![geo.node_list()]
+    } else {
+        return Err(a.err(format!(
+            "{} values do not make a square (or lower-triangular) matrix over {} unknown(s) per element",
+            values.len(),
+            npe * nc
+        )));
+    };
+    let nn = elems[0].len();
+    let d = nn * nc;
+    let mut mat = vec![0.0; d * d];
+    if values.len() == d * d {
+        mat.copy_from_slice(&values);
+    } else {
+        if symmetry == Symmetry::General {
+            return Err(a.err("a general ('QUEL') matrix needs all its values"));
+        }
+        let sign = if symmetry == Symmetry::Antisymmetric { -1.0 } else { 1.0 };
+        let mut k = 0;
+        for i in 0..d {
+            for j in 0..=i {
+                mat[i * d + j] = values[k];
+                mat[j * d + i] = if i == j { values[k] } else { sign * values[k] };
+                k += 1;
+            }
+        }
+    }
+    let mut rig = Rigidite::new(subtype);
+    let mut block = Block {
+        nodes_per_elem: nn,
+        conn: Vec::new(),
+        dofs: (0..nn).flat_map(|l| comps.iter().map(move |c| (l, c.clone()))).collect(),
+        duals: (0..nn).flat_map(|_| duals.iter().cloned()).collect(),
+        mats: Vec::new(),
+        symmetry,
+    };
+    for e in &elems {
+        block.conn.extend_from_slice(e);
+        block.mats.extend_from_slice(&mat);
+    }
+    rig.blocks.push(block);
+    let _ = it;
+    Ok(vec![Value::Rigi(Rc::new(rig))])
+}

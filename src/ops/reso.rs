@@ -1,0 +1,270 @@
+//! RESO, REAC and UNIL: the bridge between RIGIDITE objects and `solve`.
+
+use super::assemble::{describe_condition, Assembled};
+use super::{Args, OpDef};
+use crate::error::{Error, Result};
+use crate::eval::Interp;
+use crate::solve::direct::{DirectOptions, Factorization};
+use crate::solve::unilateral::{solve_unilateral, Method, UnilOptions, UnilReport};
+use crate::solve::Load;
+use crate::value::{fmt_float, Chpoint, Key, Nature, Rigidite, Table, Value};
+use std::cell::RefCell;
+use std::rc::Rc;
+
+pub(crate) const OPS: &[OpDef] = &[
+    OpDef { name: "RESO", signature: "RESO RIGIDITE CHPOINT (CHPOINT …) ('NOID') ('NOUNIL') ('STAB') ('ENSE') ('SOUC') ('INIB' RIGIDITE LISTENTI)", doc: "Solve K u = F with bilateral and unilateral conditions; the result holds the unknowns and the LX of active conditions.", example: "u = reso (k et cl) f ;", f: reso },
+    OpDef { name: "REAC", signature: "REAC RIGIDITE CHPOINT", doc: "Reactions -Cᵀλ of the conditions of RIGIDITE, from the multipliers LX of a RESO result (DISCRET field).", example: "r = reac cl u ;", f: reac },
+    OpDef { name: "UNIL", signature: "UNIL RIGIDITE CHPOINT ('CONDENSE'|'ANCIEN'|'ITER'|'CREUX') ('PDAS'|'UNITAIRE') ('INIB' LISTENTI) ('MAXI' n) ('VERBEUX')", doc: "The unilateral solver (Cast3M's UNILATER): returns the solution and a TABLE of diagnostics.", example: "u diag = unil (k et c) f 'CONDENSE' ;", f: unil },
+];
+
+struct Opts {
+    noid: bool,
+    nounil: bool,
+    stab: bool,
+    soft: bool,
+    initial: Option<Vec<bool>>,
+    method: Method,
+    rule: crate::solve::unilateral::Rule,
+    max_iter: Option<usize>,
+    verbose: bool,
+}
+
+fn read_options(it: &Interp, a: &mut Args, r: &Rigidite) -> Result<Opts> {
+    let mut o = Opts {
+        noid: false,
+        nounil: false,
+        stab: false,
+        soft: false,
+        initial: None,
+        method: if it.opts.reso.starts_with("ITER") { Method::Iter } else { Method::Auto },
+        rule: crate::solve::unilateral::Rule::Damped,
+        max_iter: None,
+        verbose: it.opts.echo >= 1,
+    };
+    const KW: &[&str] = &[
+        "NOID", "NOUNIL", "STAB", "NOSTAB", "ENSE", "SOUC", "ELIM", "INIB", "CONDENSE", "ANCIEN", "ITER", "CREUX",
+        "PDAS", "UNITAIRE", "MAXI", "VERBEUX", "GRAD", "CHOL",
+    ];
+    while let Some(k) = a.keyword(KW) {
+        match k {
+            "NOID" => o.noid = true,
+            "NOUNIL" => o.nounil = true,
+            "STAB" => o.stab = true,
+            "SOUC" => o.soft = true,
+            "ELIM" => {
+                a.opt_right::<i64>();
+            }
+            "INIB" => {
+                let _ = a.opt::<Rc<Rigidite>>();
+                let l = a.req::<Rc<Vec<i64>>>()?;
+                let m = r.n_unilateral();
+                if l.len() != m {
+                    return Err(a.err(format!("'INIB': {} statuses for {} unilateral conditions", l.len(), m)));
+                }
+                o.initial = Some(l.iter().map(|&s| s != 0).collect());
+            }
+            "CONDENSE" => o.method = Method::Condense,
+            "ANCIEN" => o.method = Method::Ancien,
+            "ITER" => o.method = Method::Iter,
+            "CREUX" => o.method = Method::Creux,
+            "PDAS" => o.rule = crate::solve::unilateral::Rule::Pdas,
+            "UNITAIRE" => o.rule = crate::solve::unilateral::Rule::SingleChange,
+            "MAXI" => o.max_iter = Some(a.req::<i64>()?.max(1) as usize),
+            "VERBEUX" => o.verbose = true,
+            _ => {}
+        }
+    }
+    Ok(o)
+}
+
+/// The numbering of a RIGIDITE, computed once per object.
+fn assembled(r: &Rigidite) -> Rc<Assembled> {
+    let mut cache = r.cache.borrow_mut();
+    cache.assembled.get_or_insert_with(|| Rc::new(Assembled::new(r))).clone()
+}
+
+fn reso(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let r = a.req::<Rc<Rigidite>>()?;
+    let mut rhs: Vec<Rc<Chpoint>> = Vec::new();
+    let mut o = read_options(it, a, &r)?;
+    while let Some(c) = a.opt::<Rc<Chpoint>>() {
+        rhs.push(c);
+        let more = read_options(it, a, &r)?;
+        merge(&mut o, more);
+    }
+    if rhs.is_empty() {
+        return Err(a.missing("CHPOINT (the right-hand side)"));
+    }
+    let asm = assembled(&r);
+    let loads: Vec<Load> =
+        rhs.iter().map(|c| asm.load(it, &[c])).collect::<Result<_>>().map_err(|e| a.err(e.message))?;
+    let unilateral = r.n_unilateral() > 0 && !o.nounil;
+    let mut out = Vec::new();
+    if unilateral {
+        for load in &loads {
+            let (sol, report) = solve_unil(it, &r, &asm, load, &o).map_err(|e| soften(it, e, o.soft))?;
+            out.push(Value::Chpo(Rc::new(asm.field(&r, &sol))));
+            record(it, &report);
+        }
+    } else {
+        let t = std::time::Instant::now();
+        let sols = {
+            let mut cache = r.cache.borrow_mut();
+            let opts = DirectOptions { check_residual: !o.noid, stab: o.stab };
+            if cache.direct.is_none() || cache.direct_stab != o.stab {
+                cache.direct =
+                    Some(Factorization::new(&asm.problem, &opts).map_err(|e| asm.explain(it, &r, e, &loads))?);
+                cache.direct_stab = o.stab;
+                it.timers.phase("RESO factorisation", t.elapsed().as_secs_f64());
+            }
+            let t = std::time::Instant::now();
+            let f = cache.direct.as_ref().expect("built above");
+            let s = f.solve(&loads).map_err(|e| asm.explain(it, &r, e, &loads));
+            it.timers.phase("RESO solve", t.elapsed().as_secs_f64());
+            s
+        };
+        for s in sols.map_err(|e| soften(it, e, o.soft))? {
+            out.push(Value::Chpo(Rc::new(asm.field(&r, &s))));
+        }
+    }
+    Ok(out)
+}
+
+fn merge(o: &mut Opts, m: Opts) {
+    o.noid |= m.noid;
+    o.nounil |= m.nounil;
+    o.stab |= m.stab;
+    o.soft |= m.soft;
+    o.verbose |= m.verbose;
+    if m.initial.is_some() {
+        o.initial = m.initial;
+    }
+    if m.method != Method::Auto {
+        o.method = m.method;
+    }
+    if m.max_iter.is_some() {
+        o.max_iter = m.max_iter;
+    }
+    if m.rule != crate::solve::unilateral::Rule::Damped {
+        o.rule = m.rule;
+    }
+}
+
+/// 'SOUC' downgrades a failure to a warning (Cast3M's "souci"): we still
+/// stop, because returning a wrong field silently is worse.
+fn soften(_it: &mut Interp, e: Error, _soft: bool) -> Error {
+    e
+}
+
+fn solve_unil(
+    it: &mut Interp,
+    r: &Rigidite,
+    asm: &Assembled,
+    load: &Load,
+    o: &Opts,
+) -> Result<(crate::solve::Solution, UnilReport)> {
+    let opts = UnilOptions { method: o.method, max_iter: o.max_iter, initial: o.initial.clone(), rule: o.rule };
+    let mut lines = Vec::new();
+    let verbose = o.verbose;
+    let res = {
+        let mut cache = r.cache.borrow_mut();
+        let mut on_iter = |rec: &crate::solve::unilateral::IterRecord| {
+            if verbose {
+                lines.push(format!(
+                    "UNIL iteration {:>3} ({}): active {:>5}, activated {:>4}, released {:>4}, worst violation {}, worst wrong sign {}",
+                    rec.iteration,
+                    rec.mode,
+                    rec.active_count,
+                    rec.activated.len(),
+                    rec.released.len(),
+                    fmt_float(rec.worst_violation),
+                    fmt_float(rec.worst_wrong_sign)
+                ));
+            }
+        };
+        solve_unilateral(&asm.problem, load, &opts, &mut cache.unil, &mut on_iter)
+    };
+    for l in lines {
+        it.println(&l);
+    }
+    res.map_err(|e| asm.explain(it, r, e, std::slice::from_ref(load)))
+}
+
+fn record(it: &mut Interp, report: &UnilReport) {
+    for (name, s) in &report.phase_seconds {
+        it.timers.phase(&format!("UNIL {}", name), *s);
+    }
+    if it.opts.echo >= 1 {
+        it.println(&format!(
+            "UNIL {}: {} condition(s), {} solve(s), {} active",
+            report.method, report.m, report.iterations, report.active_count
+        ));
+    }
+}
+
+fn reac(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let r = a.req::<Rc<Rigidite>>()?;
+    let u = a.req::<Rc<Chpoint>>()?;
+    let mut out = Chpoint::new(Nature::Discret);
+    for c in &r.conds {
+        let Some(l) = u.get(c.mult_node, "LX") else { continue };
+        for (n, comp, coef) in &c.terms {
+            out.add(*n, &super::dofs::dual_of(comp), -coef * l, true);
+        }
+    }
+    let _ = it;
+    Ok(vec![Value::Chpo(Rc::new(out))])
+}
+
+/// UNIL: the unilateral solver called directly, with its diagnostics.
+fn unil(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let r = a.req::<Rc<Rigidite>>()?;
+    let mut o = read_options(it, a, &r)?;
+    let f = a.req::<Rc<Chpoint>>()?;
+    merge(&mut o, read_options(it, a, &r)?);
+    if r.n_unilateral() == 0 {
+        return Err(a.err("the RIGIDITE holds no unilateral condition"));
+    }
+    let asm = assembled(&r);
+    let load = asm.load(it, &[&f]).map_err(|e| a.err(e.message))?;
+    let (sol, rep) = solve_unil(it, &r, &asm, &load, &o)?;
+    record(it, &rep);
+    let mut t = Table::with_subtype("UNILATERAL");
+    let set = |t: &mut Table, k: &str, v: Value| t.set(Key::Mot(k.into()), v);
+    set(&mut t, "METHODE", Value::mot(rep.method));
+    set(&mut t, "NCONDITIONS", Value::Int(rep.m as i64));
+    set(&mut t, "NITER", Value::Int(rep.iterations as i64));
+    set(&mut t, "NACTIFS", Value::Int(rep.active_count as i64));
+    let mut iters = Table::new();
+    for (i, rec) in rep.records.iter().enumerate() {
+        let mut e = Table::new();
+        set(&mut e, "ACTIVES", Value::Int(rec.active_count as i64));
+        set(&mut e, "ACTIVEES", Value::Int(rec.activated.len() as i64));
+        set(&mut e, "RELACHEES", Value::Int(rec.released.len() as i64));
+        set(&mut e, "VIOLATION", Value::Float(rec.worst_violation));
+        set(&mut e, "MAUVAIS_SIGNE", Value::Float(rec.worst_wrong_sign));
+        set(&mut e, "MODE", Value::mot(rec.mode));
+        iters.set(Key::Int(i as i64 + 1), Value::Table(Rc::new(RefCell::new(e))));
+    }
+    set(&mut t, "ITERATIONS", Value::Table(Rc::new(RefCell::new(iters))));
+    let mut phases = Table::new();
+    for (name, s) in &rep.phase_seconds {
+        phases.set(Key::Mot(name.to_uppercase()), Value::Float(*s));
+    }
+    set(&mut t, "TEMPS", Value::Table(Rc::new(RefCell::new(phases))));
+    let statuses: Vec<i64> =
+        r.conds.iter().enumerate().filter(|(_, c)| c.kind.is_unilateral()).map(|(k, _)| sol.active[k] as i64).collect();
+    set(&mut t, "STATUTS", Value::ListEnti(Rc::new(statuses)));
+    let mut names = Vec::new();
+    for (k, c) in r.conds.iter().enumerate() {
+        if c.kind.is_unilateral() && sol.active[k] {
+            names.push(describe_condition(it, &r, k, load.d[k]));
+        }
+    }
+    let _ = names;
+    let field = asm.field(&r, &sol);
+    Ok(vec![Value::Chpo(Rc::new(field)), Value::Table(Rc::new(RefCell::new(t)))])
+}
+
+#[allow(dead_code)]
+fn unused(_: Error) {}
