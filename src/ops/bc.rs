@@ -140,6 +140,9 @@ fn direction_terms(it: &Interp, node: usize, v: [f64; 3]) -> std::result::Result
     Ok(t.iter().enumerate().filter(|(k, _)| v[*k] != 0.0).map(|(k, c)| (node, c.to_string(), v[k] / norm)).collect())
 }
 
+/// One written term of RELA: coefficient, weighted components, nodes.
+type RelaTerm = (f64, Vec<(String, f64)>, Vec<usize>);
+
 fn rela(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let kind = kind_keyword(a);
     if let Some(ch) = a.opt::<Rc<Chpoint>>() {
@@ -154,7 +157,7 @@ fn rela(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         return Ok(vec![Value::Rigi(Rc::new(rig))]);
     }
     // Terms: (sign) (coef) comp geo, repeated.
-    let mut terms: Vec<(f64, Vec<(String, f64)>, Vec<usize>)> = Vec::new();
+    let mut terms: Vec<RelaTerm> = Vec::new();
     loop {
         let sign = a.sign();
         if sign.is_none() && !terms.is_empty() {

@@ -1,20 +1,6 @@
 //! Unknown names per analysis mode and their duals (UX ↔ FX, LX ↔ FLX).
 
 use crate::eval::Interp;
-use crate::fem::element::Mode;
-
-/// The fem analysis mode of the current OPTI MODE.
-pub fn fem_mode(it: &Interp) -> Option<Mode> {
-    let m = it.opts.mode.as_str();
-    Some(match m {
-        "PLAN CONT" => Mode::PlanCont,
-        "PLAN DEFO" => Mode::PlanDefo,
-        "AXIS" => Mode::Axis,
-        "TRID" => Mode::Trid,
-        _ if it.opts.dime == 3 => Mode::Trid,
-        _ => return None,
-    })
-}
 
 /// Translations of the current mode (BLOQ DEPL, FORC vectors).
 pub fn translations(it: &Interp) -> &'static [&'static str] {
@@ -84,9 +70,4 @@ const PAIRS: &[(&str, &str)] = &[
 /// The dual (force) name of a primal unknown.
 pub fn dual_of(primal: &str) -> String {
     PAIRS.iter().find(|(p, _)| *p == primal).map_or_else(|| format!("F{}", primal), |(_, d)| d.to_string())
-}
-
-/// The primal unknown of a dual name, if it is a known pair.
-pub fn primal_of(dual: &str) -> Option<&'static str> {
-    PAIRS.iter().find(|(_, d)| *d == dual).map(|(p, _)| *p)
 }

@@ -16,6 +16,7 @@ mod math;
 mod mesh;
 mod model;
 mod objects;
+mod post;
 mod reso;
 pub mod solver_cache;
 mod union;
@@ -128,6 +129,7 @@ impl Registry {
             manu::OPS,
             fields::OPS,
             reso::OPS,
+            post::OPS,
         ] {
             for d in table {
                 r.insert(OpSpec::from(d));

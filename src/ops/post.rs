@@ -1,0 +1,304 @@
+//! Element fields and loads from models: SIGM, EPSI, VMIS, CHAN, PRES, MASS.
+
+use super::model::{formulation, material_for, zone_mode};
+use super::{dofs, Args, OpDef};
+use crate::error::{Error, Result};
+use crate::eval::Interp;
+use crate::fem::element::{self, GaussField};
+use crate::fem::mesh::{ElemType, Mesh};
+use crate::fem::meshing as mg;
+use crate::value::model::{MchamlZone, ModelZone};
+use crate::value::rigidity::{Block, Subtype, Symmetry};
+use crate::value::{Chpoint, Mchaml, Model, Nature, Rigidite, Value};
+use std::rc::Rc;
+
+pub(crate) const OPS: &[OpDef] = &[
+    OpDef { name: "SIGM", signature: "SIGM ('LINE') MMODEL MCHAML (MCHAML) CHPOINT", doc: "Elastic stresses (SMXX … for massive elements, EFFX … MOMZ resultants for bars and beams) at the element points.", example: "sig = sigm mo ma u ;", f: sigm },
+    OpDef { name: "EPSI", signature: "EPSI ('LINE') MMODEL (MCHAML) CHPOINT", doc: "Strains (EPXX … GAXY; generalised strains for bars and beams).", example: "eps = epsi mo ma u ;", f: epsi },
+    OpDef { name: "VMIS", signature: "VMIS MMODEL MCHAML_STRESS (MCHAML)", doc: "Von Mises equivalent stress (the beam formula for bars and beams).", example: "vm = vmis mo sig ma ;", f: vmis },
+    OpDef { name: "CHAN", signature: "CHAN 'POI1'|QUA8|TRI6|SEG3|QUA4|TRI3|SEG2 GEO | CHAN 'CHPO'|'NOEUD' MMODEL MCHAML | CHAN 'INCO' RIGIDITE LISTMOTS LISTMOTS | CHAN 'ATTRIBUT' CHPOINT 'NATURE' word", doc: "Change the type or attributes of an object.", example: "pts = chan 'POI1' l ;", f: chan },
+    OpDef { name: "PRES", signature: "PRES 'MASS' MMODEL VALUE GEO", doc: "Nodal forces equivalent to a pressure on edges/faces of a massive model (positive towards the solid).", example: "f = pres 'MASS' mo 10. haut ;", f: pres },
+    OpDef { name: "MASS", signature: "MASS MMODEL MCHAML (MCHAML) ('LUMP')", doc: "Mass matrix (consistent, or lumped with 'LUMP').", example: "m = mass mo ma ;", f: mass },
+];
+
+fn fem_err(e: element::FemError) -> Error {
+    Error::runtime(e.to_string())
+}
+
+/// The model, the material fields and (optionally) the displacement field.
+/// A model, its material fields and an optional displacement field.
+type ModelArgs = (Rc<Model>, Vec<Rc<Mchaml>>, Option<Rc<Chpoint>>);
+
+fn model_args(a: &mut Args) -> Result<ModelArgs> {
+    a.keyword(&["LINE"]);
+    let model = a.req::<Rc<Model>>()?;
+    let mut fields = Vec::new();
+    while let Some(f) = a.opt::<Rc<Mchaml>>() {
+        fields.push(f);
+    }
+    let u = a.opt::<Rc<Chpoint>>();
+    Ok((model, fields, u))
+}
+
+type PointFn = fn(
+    element::Formulation,
+    ElemType,
+    element::Mode,
+    &[[f64; 3]],
+    &element::Material,
+    &[f64],
+) -> std::result::Result<GaussField, element::FemError>;
+
+fn gauss_field(it: &Interp, a: &mut Args, subtype: &str, f: PointFn) -> Result<Vec<Value>> {
+    let (model, fields, u) = model_args(a)?;
+    let u = u.ok_or_else(|| a.missing("CHPOINT (the displacements)"))?;
+    let mut out = Mchaml { subtype: subtype.into(), zones: vec![] };
+    for zone in &model.zones {
+        let form = formulation(zone);
+        let mode = zone_mode(zone)?;
+        let mat = material_for(zone, &fields);
+        let names = element::node_dofs(form, mode).map_err(fem_err)?;
+        for part in &zone.mesh.parts {
+            let mut z =
+                MchamlZone { mesh: Mesh::single(part.clone()), element: zone.element.clone(), ..Default::default() };
+            for (e, nodes) in part.elems().enumerate() {
+                let x: Vec<[f64; 3]> = nodes.iter().map(|n| it.nodes.get(*n)).collect();
+                let u = &u;
+                let ue: Vec<f64> =
+                    nodes.iter().flat_map(|n| names.iter().map(move |c| u.get(*n, c).unwrap_or(0.0))).collect();
+                let g = f(form, part.ty, mode, &x, &mat, &ue)
+                    .map_err(|err| a.err(format!("element {}: {}", e + 1, fem_err(err).message)))?;
+                if z.comps.is_empty() {
+                    z.comps = g.comps.iter().map(|c| c.to_string()).collect();
+                }
+                z.values.push(g.values);
+            }
+            out.zones.push(z);
+        }
+    }
+    Ok(vec![Value::Mchaml(Rc::new(out))])
+}
+
+fn sigm(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    gauss_field(it, a, "CONTRAINTES", element::stress)
+}
+
+fn epsi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    gauss_field(it, a, "DEFORMATIONS", element::strain)
+}
+
+/// Component names as the element library wants them (`&'static str`).
+fn intern(c: &str) -> &'static str {
+    const NAMES: &[&str] = &[
+        "SMXX", "SMYY", "SMZZ", "SMXY", "SMXZ", "SMYZ", "SMRR", "SMTT", "SMRZ", "EPXX", "EPYY", "EPZZ", "GAXY", "GAXZ",
+        "GAYZ", "EPRR", "EPTT", "GARZ", "EFFX", "EFFY", "EFFZ", "MOMX", "MOMY", "MOMZ", "EPSS", "CURX", "CURY", "CURZ",
+        "VMIS", "SCAL",
+    ];
+    NAMES.iter().find(|n| **n == c).copied().unwrap_or("?")
+}
+
+fn to_gauss(z: &MchamlZone, e: usize) -> GaussField {
+    let comps: Vec<&'static str> = z.comps.iter().map(|c| intern(c)).collect();
+    GaussField { comps, values: z.values[e].clone() }
+}
+
+fn zone_of<'a>(model: &'a Model, z: &MchamlZone) -> Option<&'a ModelZone> {
+    model.zones.iter().find(|m| m.mesh.parts.iter().any(|p| z.mesh.parts.first() == Some(p)) || m.mesh == z.mesh)
+}
+
+fn vmis(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let (model, fields, _) = model_args(a)?;
+    let sig = fields
+        .iter()
+        .find(|f| f.subtype == "CONTRAINTES")
+        .cloned()
+        .ok_or_else(|| a.missing("MCHAML of stresses (from SIGM)"))?;
+    let mut out = Mchaml { subtype: "SCALAIRE".into(), zones: vec![] };
+    for z in &sig.zones {
+        let mz = zone_of(&model, z).ok_or_else(|| a.err("the stress field does not belong to this model"))?;
+        let (form, mode) = (formulation(mz), zone_mode(mz)?);
+        let mat = material_for(mz, &fields);
+        let mut nz = MchamlZone { mesh: z.mesh.clone(), element: z.element.clone(), ..Default::default() };
+        nz.comps = vec!["VMIS".into()];
+        for e in 0..z.values.len() {
+            let g = crate::fem::stress::von_mises(form, mode, &mat, &to_gauss(z, e)).map_err(fem_err)?;
+            nz.values.push(g.values);
+        }
+        out.zones.push(nz);
+    }
+    Ok(vec![Value::Mchaml(Rc::new(out))])
+}
+
+fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    const KW: &[&str] =
+        &["POI1", "QUA8", "TRI6", "SEG3", "QUA4", "TRI3", "SEG2", "CHPO", "NOEUD", "INCO", "ATTRIBUT", "COMP"];
+    let k = a.req_keyword(KW)?;
+    match k {
+        "POI1" => Ok(vec![Value::Mesh(Rc::new(mg::change_to_poi1(&super::mesh::req_geo(a)?)))]),
+        "QUA8" | "TRI6" | "SEG3" => {
+            let m = super::mesh::req_geo(a)?;
+            Ok(vec![Value::Mesh(Rc::new(mg::change_to_quadratic(&mut it.nodes, &m)?))])
+        }
+        "QUA4" | "TRI3" | "SEG2" => Ok(vec![Value::Mesh(Rc::new(mg::change_to_linear(&super::mesh::req_geo(a)?)))]),
+        "INCO" => {
+            let r = a.req::<Rc<Rigidite>>()?;
+            let old = a.req::<Rc<Vec<String>>>()?;
+            let new = a.req::<Rc<Vec<String>>>()?;
+            if old.len() != new.len() {
+                return Err(a.err("as many new names as old ones are needed"));
+            }
+            let (dold, dnew) = match a.opt::<Rc<Vec<String>>>() {
+                Some(d1) => (d1.to_vec(), a.req::<Rc<Vec<String>>>()?.to_vec()),
+                None => {
+                    (old.iter().map(|c| dofs::dual_of(c)).collect(), new.iter().map(|c| dofs::dual_of(c)).collect())
+                }
+            };
+            let ren = |c: &String, from: &[String], to: &[String]| {
+                from.iter().position(|x| x == c).map_or_else(|| c.clone(), |i| to[i].clone())
+            };
+            let mut out = Rigidite::new(r.subtype);
+            out.blocks = r.blocks.clone();
+            for b in out.blocks.iter_mut() {
+                for d in b.dofs.iter_mut() {
+                    d.1 = ren(&d.1, &old, &new);
+                }
+                for d in b.duals.iter_mut() {
+                    *d = ren(d, &dold, &dnew);
+                }
+            }
+            out.conds = r.conds.clone();
+            for c in out.conds.iter_mut() {
+                for t in c.terms.iter_mut() {
+                    t.1 = ren(&t.1, &old, &new);
+                }
+            }
+            Ok(vec![Value::Rigi(Rc::new(out))])
+        }
+        "ATTRIBUT" => {
+            let ch = a.req::<Rc<Chpoint>>()?;
+            a.keyword(&["NATURE"]);
+            let mut c = (*ch).clone();
+            c.nature = match a.req_keyword(&["DIFFUS", "DISCRET", "INDETER"])? {
+                "DIFFUS" => Nature::Diffus,
+                "DISCRET" => Nature::Discret,
+                _ => Nature::Indeter,
+            };
+            Ok(vec![Value::Chpo(Rc::new(c))])
+        }
+        "COMP" => Err(a.err("CHAN 'COMP' is not supported; use NOMC to rename components")),
+        _ => {
+            // CHPO / NOEUD: element values to nodes.
+            let model = a.req::<Rc<Model>>()?;
+            let m = a.req::<Rc<Mchaml>>()?;
+            let mut sum = Chpoint::new(Nature::Diffus);
+            let mut count = std::collections::HashMap::<(usize, String), f64>::new();
+            let mut out_m = Mchaml { subtype: m.subtype.clone(), zones: vec![] };
+            for z in &m.zones {
+                let mz = zone_of(&model, z).ok_or_else(|| a.err("the field does not belong to this model"))?;
+                let form = formulation(mz);
+                let part = z.mesh.parts.first().ok_or_else(|| a.err("empty zone"))?;
+                let mut nz = MchamlZone {
+                    mesh: z.mesh.clone(),
+                    element: z.element.clone(),
+                    comps: z.comps.clone(),
+                    ..Default::default()
+                };
+                for (e, nodes) in part.elems().enumerate() {
+                    let g = crate::fem::stress::to_nodes(form, part.ty, &to_gauss(z, e)).map_err(fem_err)?;
+                    for (k, n) in nodes.iter().enumerate() {
+                        for (c, name) in z.comps.iter().enumerate() {
+                            let v = g.values[k][c];
+                            sum.add(*n, name, v, true);
+                            *count.entry((*n, name.clone())).or_insert(0.0) += 1.0;
+                        }
+                    }
+                    nz.values.push(g.values);
+                }
+                out_m.zones.push(nz);
+            }
+            if k == "NOEUD" {
+                return Ok(vec![Value::Mchaml(Rc::new(out_m))]);
+            }
+            let avg = Chpoint::from_entries(
+                Nature::Diffus,
+                sum.entries().map(|(n, c, v)| (n, c, v / count[&(n, c.to_string())])).collect::<Vec<_>>(),
+            );
+            Ok(vec![Value::Chpo(Rc::new(avg))])
+        }
+    }
+}
+
+fn pres(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    a.req_keyword(&["MASS"])?;
+    let model = a.req::<Rc<Model>>()?;
+    let p = a.req_num()?;
+    let geo = super::mesh::req_geo(a)?;
+    let mode = model.zones.first().map(zone_mode).transpose()?.ok_or_else(|| a.err("empty model"))?;
+    let names = dofs::forces(it);
+    let mut out = Chpoint::new(Nature::Discret);
+    for part in &geo.parts {
+        for face in part.elems() {
+            let inside = inside_point(it, &model, face).ok_or_else(|| {
+                a.err(format!("the face through node {} belongs to no element of the model", face[0] + 1))
+            })?;
+            let x: Vec<[f64; 3]> = face.iter().map(|n| it.nodes.get(*n)).collect();
+            let f = crate::fem::loads::pressure_load(part.ty, mode, &x, p, inside).map_err(fem_err)?;
+            for (n, v) in face.iter().zip(f) {
+                for (k, c) in names.iter().enumerate() {
+                    out.add(*n, c, v[k], true);
+                }
+            }
+        }
+    }
+    Ok(vec![Value::Chpo(Rc::new(out))])
+}
+
+/// The centroid of a model element holding every node of `face`.
+fn inside_point(it: &Interp, model: &Model, face: &[usize]) -> Option<[f64; 3]> {
+    for z in &model.zones {
+        for p in &z.mesh.parts {
+            for e in p.elems() {
+                if face.iter().all(|n| e.contains(n)) && e.len() > face.len() {
+                    let mut c = [0.0; 3];
+                    for n in e {
+                        let x = it.nodes.get(*n);
+                        for k in 0..3 {
+                            c[k] += x[k] / e.len() as f64;
+                        }
+                    }
+                    return Some(c);
+                }
+            }
+        }
+    }
+    None
+}
+
+fn mass(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let (model, fields, _) = model_args(a)?;
+    let lumped = a.keyword(&["LUMP", "DIAG"]).is_some();
+    let mut rig = Rigidite::new(Subtype::Masse);
+    for zone in &model.zones {
+        let (form, mode) = (formulation(zone), zone_mode(zone)?);
+        let mat = material_for(zone, &fields);
+        for part in &zone.mesh.parts {
+            let mut block: Option<Block> = None;
+            for nodes in part.elems() {
+                let x: Vec<[f64; 3]> = nodes.iter().map(|n| it.nodes.get(*n)).collect();
+                let em = element::mass(form, part.ty, mode, &x, &mat, lumped).map_err(fem_err)?;
+                let b = block.get_or_insert_with(|| Block {
+                    nodes_per_elem: part.ty.nodes(),
+                    conn: vec![],
+                    dofs: em.dofs.iter().map(|(l, c)| (*l, c.to_string())).collect(),
+                    duals: em.dofs.iter().map(|(_, c)| dofs::dual_of(c)).collect(),
+                    mats: vec![],
+                    symmetry: Symmetry::Symmetric,
+                });
+                b.conn.extend_from_slice(nodes);
+                b.mats.extend_from_slice(&em.k);
+            }
+            rig.blocks.extend(block);
+        }
+    }
+    Ok(vec![Value::Rigi(Rc::new(rig))])
+}
