@@ -117,6 +117,14 @@ impl Interp {
     /// `[targets =] items ;`
     pub fn exec_instr(&mut self, ins: &Instr) -> Result<()> {
         self.echo(ins);
+        if let [t] = ins.targets.as_slice() {
+            if t.keys.is_empty() && t.typed.is_none() {
+                if let Some(v) = self.fast_value(&ins.items) {
+                    self.store.set(&t.name, v);
+                    return Ok(());
+                }
+            }
+        }
         self.called_proc = false;
         let mut vals = self.eval_items(&ins.items).map_err(|e| e.with_span_if_missing(ins.span, &self.source))?;
         if ins.targets.is_empty() {

@@ -3,9 +3,8 @@
 //! frame (language.md §6.3), so lookups walk down the frames and
 //! assignments stay on top.
 
-use crate::syntax::structure_name as truncate;
 use crate::value::Value;
-use std::collections::HashMap;
+use rustc_hash::FxHashMap as HashMap;
 
 use super::machine::GroupState;
 
@@ -33,24 +32,40 @@ impl Default for Store {
     }
 }
 
+/// Names are significant to 24 characters (LONOM in Cast3M). A slice, so
+/// lookups allocate nothing.
+fn truncate(name: &str) -> &str {
+    match name.char_indices().nth(24) {
+        Some((i, _)) => &name[..i],
+        None => name,
+    }
+}
+
 impl Store {
     pub fn get(&self, name: &str) -> Option<&Value> {
         let name = truncate(name);
         // `!name` is never filled in from the caller (debp.notice).
         if name.starts_with('!') {
-            return self.top().vars.get(&name);
+            return self.top().vars.get(name);
         }
-        self.frames.iter().rev().find_map(|f| f.vars.get(&name))
+        self.frames.iter().rev().find_map(|f| f.vars.get(name))
     }
 
     pub fn set(&mut self, name: &str, v: Value) {
         let name = truncate(name);
-        self.top_mut().vars.insert(name, v);
+        let vars = &mut self.top_mut().vars;
+        // Reassigning an existing name reuses its key (no allocation).
+        match vars.get_mut(name) {
+            Some(slot) => *slot = v,
+            None => {
+                vars.insert(name.to_string(), v);
+            }
+        }
     }
 
     /// Forget a name in the current frame (OUBL).
     pub fn remove(&mut self, name: &str) -> Option<Value> {
-        self.top_mut().vars.remove(&truncate(name))
+        self.top_mut().vars.remove(truncate(name))
     }
 
     pub fn top(&self) -> &Frame {
@@ -63,7 +78,7 @@ impl Store {
 
     pub fn counter(&self, name: &str) -> Option<i64> {
         let name = truncate(name);
-        self.top().loops.iter().rev().find(|(n, _)| *n == name).map(|(_, i)| *i)
+        self.top().loops.iter().rev().find(|(n, _)| n == name).map(|(_, i)| *i)
     }
 
     /// Names visible from the current frame, sorted, with their values.

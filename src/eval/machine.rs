@@ -31,9 +31,9 @@ pub enum TokKind {
 pub struct Tok {
     pub kind: TokKind,
     pub span: Span,
-    /// The name the token was written as, when it named an object
-    /// (OUBL, LIST and error notes need it).
-    pub name: Option<String>,
+    /// Whether the token was written as a name (OUBL and LIST recover the
+    /// name from the source text at `span`; no copy on the hot path).
+    pub named: bool,
 }
 
 /// Operands already pushed (left) and tokens not yet read (right).
@@ -107,22 +107,19 @@ impl Interp {
                     };
                     let key = self.key_value(key_item)?;
                     let v = index(&table.0, &key).map_err(|e| e.at(table.1.join(key_item.span)))?;
-                    out.push(Tok { kind: TokKind::Val(v), span: table.1.join(key_item.span), name: None });
+                    out.push(Tok { kind: TokKind::Val(v), span: table.1.join(key_item.span), named: false });
                     i += 2;
                     continue;
                 }
                 ItemKind::Group(g) => {
                     for v in self.eval_items(g)? {
-                        out.push(Tok { kind: TokKind::Val(v), span, name: None });
+                        out.push(Tok { kind: TokKind::Val(v), span, named: false });
                     }
                 }
                 kind => {
-                    let name = match kind {
-                        ItemKind::Word(w) => Some(w.clone()),
-                        _ => None,
-                    };
+                    let named = matches!(kind, ItemKind::Word(_));
                     let kind = self.resolve(kind, span)?;
-                    out.push(Tok { kind, span, name });
+                    out.push(Tok { kind, span, named });
                 }
             }
             i += 1;
@@ -210,7 +207,7 @@ impl Interp {
             let mut args = Args::new(&op, st, &registry, span);
             op.call(self, &mut args)
         };
-        self.timers.record(op.name, start.elapsed());
+        op.record(start.elapsed());
         let res = res.map_err(|e| e.with_span_if_missing(span, &self.source))?;
         st.left.extend(res);
         Ok(())

@@ -3,6 +3,7 @@
 
 mod control;
 pub mod env;
+mod fast;
 pub mod machine;
 mod options;
 mod proc;

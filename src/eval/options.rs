@@ -76,17 +76,11 @@ impl FilePolicy {
 /// Cumulative time and call count per operator, for TEMP.
 #[derive(Debug, Default, Clone)]
 pub struct Timers {
-    pub by_op: BTreeMap<&'static str, (u64, Duration)>,
     /// Named phases reported by long operators (factorisation, status loop).
     pub phases: BTreeMap<String, (u64, Duration)>,
 }
 
 impl Timers {
-    pub fn record(&mut self, op: &'static str, d: Duration) {
-        let e = self.by_op.entry(op).or_default();
-        e.0 += 1;
-        e.1 += d;
-    }
     pub fn phase(&mut self, name: &str, seconds: f64) {
         let e = self.phases.entry(name.to_string()).or_default();
         e.0 += 1;

@@ -317,9 +317,10 @@ impl Args<'_> {
         }
     }
 
-    /// The source name of the next right token, when it was a name.
-    pub fn next_name(&self) -> Option<String> {
-        self.st.right.front().and_then(|t| t.name.clone())
+    /// Where the next right token was written, when it was a name (the
+    /// caller reads the name back from the source).
+    pub fn next_name_span(&self) -> Option<Span> {
+        self.st.right.front().filter(|t| t.named).map(|t| t.span)
     }
 }
 

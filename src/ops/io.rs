@@ -174,7 +174,7 @@ fn mess(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 fn list(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let name = a.next_name();
+    let name = a.next_name_span().map(|sp| it.source.slice(sp).to_uppercase());
     match a.opt::<Value>() {
         Some(v) => {
             let text = list_value(it, name.as_deref(), &v);
@@ -213,11 +213,14 @@ fn titr(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 fn temp(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     if a.keyword(&["ZERO"]).is_some() {
         it.timers = Default::default();
+        for op in it.registry.all() {
+            op.reset_stats();
+        }
         return Ok(vec![]);
     }
     a.keyword(&["IMPR", "SGAC", "NOEC"]);
     let mut lines = vec![format!("{:<10} {:>8} {:>12}", "operator", "calls", "seconds")];
-    let mut ops: Vec<_> = it.timers.by_op.iter().map(|(k, v)| (*k, *v)).collect();
+    let mut ops: Vec<_> = it.registry.all().iter().map(|o| (o.name, o.stats())).filter(|(_, (n, _))| *n > 0).collect();
     ops.sort_by_key(|x| std::cmp::Reverse(x.1 .1));
     for (k, (n, d)) in ops {
         lines.push(format!("{:<10} {:>8} {:>12.6}", k, n, d.as_secs_f64()));

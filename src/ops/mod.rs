@@ -26,8 +26,10 @@ pub use args::{Args, FromArg, PointId};
 use crate::error::Result;
 use crate::eval::Interp;
 use crate::value::Value;
-use std::collections::HashMap;
+use rustc_hash::FxHashMap as HashMap;
+use std::cell::Cell;
 use std::rc::Rc;
+use std::time::Duration;
 
 /// A built-in operator body.
 pub type OpFn = fn(&mut Interp, &mut Args) -> Result<Vec<Value>>;
@@ -60,6 +62,9 @@ pub struct OpSpec {
     pub doc: &'static str,
     pub example: &'static str,
     imp: OpImpl,
+    /// Calls and cumulative time, for TEMP. Kept here so that timing an
+    /// operator costs no map lookup.
+    stats: Cell<(u64, Duration)>,
 }
 
 impl std::fmt::Debug for OpSpec {
@@ -84,7 +89,24 @@ impl OpSpec {
             doc: Box::leak(doc.to_string().into_boxed_str()),
             example: "",
             imp: OpImpl::Host(Rc::new(f)),
+            stats: Cell::default(),
         }
+    }
+
+    /// Record one call of `d` seconds.
+    pub fn record(&self, d: Duration) {
+        let (n, t) = self.stats.get();
+        self.stats.set((n + 1, t + d));
+    }
+
+    /// Calls and cumulative time so far.
+    pub fn stats(&self) -> (u64, Duration) {
+        self.stats.get()
+    }
+
+    /// Forget the timings (TEMP 'ZERO').
+    pub fn reset_stats(&self) {
+        self.stats.set(Default::default());
     }
 
     pub fn call(&self, it: &mut Interp, args: &mut Args) -> Result<Vec<Value>> {
@@ -97,13 +119,25 @@ impl OpSpec {
 
 impl From<&OpDef> for OpSpec {
     fn from(d: &OpDef) -> Self {
-        OpSpec { name: d.name, signature: d.signature, doc: d.doc, example: d.example, imp: OpImpl::Builtin(d.f) }
+        OpSpec {
+            name: d.name,
+            signature: d.signature,
+            doc: d.doc,
+            example: d.example,
+            imp: OpImpl::Builtin(d.f),
+            stats: Cell::default(),
+        }
     }
 }
 
-/// The 4-letter key Cast3M matches operator names on.
-pub fn op_key(word: &str) -> String {
-    word.chars().take(4).collect::<String>().to_uppercase()
+/// The 4-letter key Cast3M matches operator names on. Words are already
+/// upper-cased by the lexer and quoted text is compared as written
+/// (language.md §1), so this is a plain prefix: no allocation on the hot path.
+pub fn op_key(word: &str) -> &str {
+    match word.char_indices().nth(4) {
+        Some((i, _)) => &word[..i],
+        None => word,
+    }
 }
 
 /// The operator table: built once, then shared by every run.
@@ -139,12 +173,12 @@ impl Registry {
     }
 
     pub fn insert(&mut self, spec: OpSpec) {
-        self.ops.insert(op_key(spec.name), Rc::new(spec));
+        self.ops.insert(op_key(&spec.name.to_uppercase()).to_string(), Rc::new(spec));
     }
 
     /// The operator a word names, by its first 4 letters.
     pub fn find(&self, word: &str) -> Option<Rc<OpSpec>> {
-        self.ops.get(&op_key(word)).cloned()
+        self.ops.get(op_key(word)).cloned()
     }
 
     /// Every operator, sorted by name.

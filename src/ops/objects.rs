@@ -112,7 +112,7 @@ fn exis(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 fn oubl(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    if let Some(name) = a.next_name() {
+    if let Some(name) = a.next_name_span().map(|sp| it.source.slice(sp).to_uppercase()) {
         let v = a.req::<Value>()?;
         if let Value::Table(t) = &v {
             if let Some(k) = a.right_any() {
