@@ -395,6 +395,10 @@ pub(crate) fn extremum(a: &mut Args, max: bool, use_abs: bool) -> Result<Option<
 
 /// EXTR on a field, a rigidity, an element field or a model.
 pub(crate) fn extr(it: &mut Interp, a: &mut Args) -> Result<Option<Vec<Value>>> {
+    if let Some(h) = a.peek_right().filter(|v| matches!(v, Value::Host(_))) {
+        a.right_any();
+        return super::superele::extr(a, &h);
+    }
     if let Some(ch) = a.opt::<Rc<Chpoint>>() {
         return extr_chpo(it, a, &ch).map(Some);
     }

@@ -19,6 +19,7 @@ mod objects;
 mod post;
 mod reso;
 pub mod solver_cache;
+mod superele;
 mod union;
 
 pub use args::{Args, FromArg, PointId};
@@ -164,6 +165,7 @@ impl Registry {
             fields::OPS,
             reso::OPS,
             post::OPS,
+            superele::OPS,
         ] {
             for d in table {
                 r.insert(OpSpec::from(d));
