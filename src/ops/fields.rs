@@ -473,7 +473,10 @@ fn extr_chpo(it: &Interp, a: &mut Args, ch: &Chpoint) -> Result<Vec<Value>> {
             cs[0].clone()
         }
     };
-    if !ch.components().contains(&comp) {
+    // LX is absent when every condition is inactive: it reads as 0 like
+    // any multiplier of an inactive condition. Other missing components
+    // are more likely typing errors.
+    if comp != "LX" && !ch.components().contains(&comp) {
         return Err(a.err(format!("the field has no component {} (it has {})", comp, ch.components().join(" "))));
     }
     // A node field is zero where it is not defined (aaa2.notice): an

@@ -207,7 +207,9 @@ fn reac(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let u = a.req::<Rc<Chpoint>>()?;
     let mut out = Chpoint::new(Nature::Discret);
     for c in &r.conds {
-        let Some(l) = u.get(c.mult_node, "LX") else { continue };
+        // An inactive unilateral condition has no LX: its reaction is 0
+        // (reac.notice), written explicitly so EXTR finds it.
+        let l = u.get(c.mult_node, "LX").unwrap_or(0.0);
         for (n, comp, coef) in &c.terms {
             out.add(*n, &super::dofs::dual_of(comp), -coef * l, true);
         }

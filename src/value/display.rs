@@ -9,6 +9,8 @@ pub fn fmt_float(x: f64) -> String {
     if !x.is_finite() {
         return format!("{}", x);
     }
+    // No "-0.00000E+00": a reaction of an inactive condition is just 0.
+    let x = if x == 0.0 { 0.0 } else { x };
     let s = format!("{:.5E}", x);
     match s.split_once('E') {
         Some((m, e)) => {
