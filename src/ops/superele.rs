@@ -125,7 +125,8 @@ fn build(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 /// EXTR SUP 'RIGI': the condensed stiffness as a RIGIDITE over the masters.
 pub(crate) fn extr(a: &mut Args, v: &Value) -> Result<Option<Vec<Value>>> {
     let Some(s) = as_super(v) else { return Ok(None) };
-    a.req_keyword(&["RIGI", "MAIL"]).and_then(|k| {
+    let k = a.req_keyword(&["RIGI", "MAIL"])?;
+    {
         let mut nodes: Vec<usize> = Vec::new();
         for (n, _) in &s.masters {
             if !nodes.contains(n) {
@@ -153,7 +154,7 @@ pub(crate) fn extr(a: &mut Args, v: &Value) -> Result<Option<Vec<Value>>> {
             symmetry: Symmetry::Symmetric,
         });
         Ok(Some(vec![Value::Rigi(Rc::new(rig))]))
-    })
+    }
 }
 
 #[allow(dead_code)]
