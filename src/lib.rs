@@ -83,6 +83,7 @@ pub struct InterpreterBuilder {
     out: Box<dyn Write>,
     files: FilePolicy,
     registry: Registry,
+    step_limit: Option<u64>,
 }
 
 impl InterpreterBuilder {
@@ -96,6 +97,12 @@ impl InterpreterBuilder {
         self.files = policy;
         self
     }
+    /// Stop any run after this many executed instructions (a sandbox
+    /// against runaway loops). Default: no limit.
+    pub fn step_limit(mut self, n: u64) -> Self {
+        self.step_limit = Some(n);
+        self
+    }
     /// Add an operator before the registry is frozen.
     pub fn operator(mut self, op: OpSpec) -> Self {
         self.registry.insert(op);
@@ -104,6 +111,7 @@ impl InterpreterBuilder {
     pub fn build(self) -> Interpreter {
         let mut interp = Interp::new(Rc::new(self.registry), self.out);
         interp.files = self.files;
+        interp.step_limit = self.step_limit;
         Interpreter { interp }
     }
 }

@@ -109,7 +109,7 @@ fn random_programs_never_panic() {
             src.push_str(rng.pick(PIECES));
             src.push(' ');
         }
-        let mut g = Interpreter::new();
+        let mut g = Interpreter::builder().step_limit(10_000).build();
         let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| g.run_str("fuzz", &src)))
             .unwrap_or_else(|_| panic!("panic on input: {:?}", src));
         let _ = gibi::syntax::check_complete(&src);

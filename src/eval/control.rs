@@ -18,6 +18,12 @@ impl Interp {
     }
 
     fn exec_stmt(&mut self, s: &Stmt) -> Result<Flow> {
+        self.steps += 1;
+        if let Some(limit) = self.step_limit {
+            if self.steps > limit {
+                return Err(Error::runtime(format!("the limit of {} executed instructions is reached", limit)));
+            }
+        }
         match s {
             Stmt::Instr(ins) => {
                 self.exec_instr(ins)?;

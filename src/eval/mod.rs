@@ -38,6 +38,10 @@ pub struct Interp {
     /// may return more results than the caller names, and the extra ones
     /// are dropped (01_language: `z3 = carre 2. 2 ;`).
     pub called_proc: bool,
+    /// Instructions executed so far, and the limit a host may set (a
+    /// sandbox against runaway `REPETER` loops).
+    pub steps: u64,
+    pub step_limit: Option<u64>,
 }
 
 /// How a statement ended.
@@ -63,6 +67,8 @@ impl Interp {
             title: String::new(),
             finished: false,
             called_proc: false,
+            steps: 0,
+            step_limit: None,
         }
     }
 
