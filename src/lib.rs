@@ -138,6 +138,7 @@ impl Interpreter {
             out: Box::new(std::io::sink()),
             files: FilePolicy::Nothing,
             registry: Registry::standard(),
+            step_limit: None,
         }
     }
 
