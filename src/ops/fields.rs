@@ -57,6 +57,20 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef { name: "XTX", signature: "XTX CHPOINT", doc: "Squared norm of a field.", example: "n = xtx r ;", f: xtx },
     OpDef {
+        name: "SOMT",
+        signature: "SOMT CHPOINT|LISTREEL",
+        doc: "Sum of every value of a field or list.",
+        example: "s = somt (exco r 'FY') ;",
+        f: somt,
+    },
+    OpDef {
+        name: "DEFO",
+        signature: "DEFO GEO CHPOINT (SCALE) (COLOUR)",
+        doc: "The deformed mesh: nodes moved by SCALE times the displacement field (for TRAC).",
+        example: "d = defo s u 100. ;",
+        f: defo,
+    },
+    OpDef {
         name: "RESU",
         signature: "RESU CHPOINT",
         doc: "Resultant: the sum of each component, on the first node of the field.",
@@ -170,6 +184,41 @@ fn redu(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 fn xtx(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let ch = a.req::<Rc<Chpoint>>()?;
     Ok(vec![Value::Float(ch.entries().map(|(_, _, v)| v * v).sum())])
+}
+
+fn somt(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    if let Some(l) = a.opt::<Rc<Vec<f64>>>() {
+        return Ok(vec![Value::Float(l.iter().sum())]);
+    }
+    let ch = a.req::<Rc<Chpoint>>()?;
+    Ok(vec![Value::Float(ch.entries().map(|(_, _, v)| v).sum())])
+}
+
+/// Cast3M's DEFORMEE, kept as a MAILLAGE whose nodes are moved copies.
+fn defo(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let geo = req_geo(a)?;
+    let u = a.req::<Rc<Chpoint>>()?;
+    let scale = a.opt_num().unwrap_or(1.0);
+    // Colour words (ROUG, BLEU, …) only matter to plots.
+    a.word_not_operator();
+    let axis = it.opts.mode.starts_with("AXIS");
+    let comps: &[&str] = if axis { &["UR", "UZ"] } else { &["UX", "UY", "UZ"] };
+    let mut map = HashMap::new();
+    for n in geo.node_list() {
+        let mut x = it.nodes.get(n);
+        for (k, c) in comps.iter().enumerate().take(it.opts.dime.max(1)) {
+            x[k] += scale * u.get(n, c).unwrap_or(0.0);
+        }
+        let d = it.nodes.density[n];
+        map.insert(n, it.nodes.push(x, d));
+    }
+    let mut out = geo.clone();
+    for p in out.parts.iter_mut() {
+        for n in p.conn.iter_mut() {
+            *n = map[n];
+        }
+    }
+    Ok(vec![Value::Mesh(Rc::new(out))])
 }
 
 fn resu(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
