@@ -171,8 +171,17 @@ impl Registry {
                 r.insert(OpSpec::from(d));
             }
         }
+        for (alias, target) in Self::ALIASES {
+            if let Some(op) = r.find(target) {
+                r.ops.insert(alias.to_string(), op);
+            }
+        }
         r
     }
+
+    /// Alternative names Cast3M accepts for some operators. A name bound
+    /// to an object still wins (`d = 3 ;` then `d` is 3).
+    const ALIASES: &'static [(&'static str, &'static str)] = &[("D", "DROI"), ("C", "CERC")];
 
     pub fn insert(&mut self, spec: OpSpec) {
         self.ops.insert(op_key(&spec.name.to_uppercase()).to_string(), Rc::new(spec));
