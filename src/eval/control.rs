@@ -3,7 +3,7 @@
 
 use super::{Flow, Interp};
 use crate::error::{Error, Result};
-use crate::syntax::ast::{Instr, Stmt, Target};
+use crate::syntax::ast::{Instr, Item, ItemKind, Stmt, Target};
 use crate::value::{Key, Ty, Value};
 
 impl Interp {
@@ -132,7 +132,10 @@ impl Interp {
             }
         }
         self.called_proc = false;
-        let mut vals = self.eval_items(&ins.items).map_err(|e| e.with_span_if_missing(ins.span, &self.source))?;
+        let mut vals = match self.eval_items(&ins.items) {
+            Ok(v) => v,
+            Err(e) => return Err(self.with_objects(e.with_span_if_missing(ins.span, &self.source), &ins.items)),
+        };
         if ins.targets.is_empty() {
             return Ok(());
         }
@@ -156,6 +159,37 @@ impl Interp {
             self.assign(t, v).map_err(|e| e.with_span_if_missing(t.span, &self.source))?;
         }
         Ok(())
+    }
+
+    /// Add a note listing the named objects of the failing instruction with
+    /// their types (the usual cause of an argument error).
+    fn with_objects(&self, e: Error, items: &[Item]) -> Error {
+        fn walk(it: &Interp, items: &[Item], out: &mut Vec<String>) {
+            for i in items {
+                match &i.kind {
+                    ItemKind::Word(w) => {
+                        if let Some(v) = it.store.get(w) {
+                            let s = format!("{} ({})", w, v.type_name());
+                            if !out.contains(&s) {
+                                out.push(s);
+                            }
+                        }
+                    }
+                    ItemKind::Group(g) => walk(it, g, out),
+                    _ => {}
+                }
+            }
+        }
+        if e.kind != crate::error::ErrorKind::Runtime {
+            return e;
+        }
+        let mut names = Vec::new();
+        walk(self, items, &mut names);
+        if names.is_empty() {
+            e
+        } else {
+            e.note(format!("objects: {}", names.join(", ")))
+        }
     }
 
     fn assign(&mut self, t: &Target, v: Value) -> Result<()> {
