@@ -55,3 +55,21 @@ fn script_decks() {
         settings.bind(|| insta::assert_snapshot!(run_deck(&deck)));
     }
 }
+
+/// Every committed snapshot belongs to a deck that still exists, so a
+/// renamed or deleted deck cannot leave a stale transcript behind.
+#[test]
+fn no_stale_snapshots() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    for f in std::fs::read_dir(root.join("tests/snapshots")).unwrap().flatten() {
+        let name = f.file_name().to_string_lossy().to_string();
+        let deck = if let Some(rest) = name.strip_prefix("decks__decks@") {
+            root.join("tests/decks").join(rest.trim_end_matches(".snap").replace("__", "/"))
+        } else if let Some(rest) = name.strip_prefix("decks__script_decks@") {
+            root.join("scripts").join(format!("{}.dgibi", rest.trim_end_matches(".snap").replacen("__", "/", 1)))
+        } else {
+            continue;
+        };
+        assert!(deck.exists(), "snapshot {} has no deck ({})", name, deck.display());
+    }
+}
