@@ -190,6 +190,13 @@ impl Condenser {
         if uni.is_empty() {
             return Err(SolveError::Other("no unilateral condition".into()));
         }
+        // The interrupted LDLᵀ needs a symmetric operator; Cast3M does not
+        // condense non-symmetric ones either (unilateral.md §3.6).
+        if !p.k.symmetric {
+            return Err(SolveError::Other(
+                "the condensed method needs a symmetric matrix: use the CREUX method for a non-symmetric one".into(),
+            ));
+        }
         super::lagrange::validate(p)?;
         let (n, m) = (p.k.n, p.conditions.len());
         let tail: Vec<usize> = uni.iter().map(|&i| n + m + i).collect();
