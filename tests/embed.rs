@@ -50,3 +50,16 @@ fn file_policy_defaults_to_nothing() {
     assert!(FilePolicy::Under(root.clone()).check("sub/a.txt").is_ok());
     assert!(FilePolicy::Under(root).check("../a.txt").is_err());
 }
+
+#[test]
+fn a_panicking_operator_becomes_an_error_and_objects_survive() {
+    let mut g =
+        Interpreter::builder().operator(OpSpec::host("BOOM", "BOOM", "Always panics.", |_| panic!("kaboom"))).build();
+    let prev = std::panic::take_hook();
+    std::panic::set_hook(Box::new(|_| {}));
+    g.run_str("t", "a = 1 ;").unwrap();
+    let e = g.run_str("t", "b = boom ;").unwrap_err();
+    std::panic::set_hook(prev);
+    assert!(e.message.contains("BOOM: internal error (kaboom)"), "{}", e.message);
+    assert_eq!(g.get_f64("a"), Some(1.0));
+}

@@ -205,7 +205,19 @@ impl Interp {
         let start = std::time::Instant::now();
         let res = {
             let mut args = Args::new(&op, st, &registry, span);
-            op.call(self, &mut args)
+            // A bug in one operator must not take the session down (the REPL
+            // would lose every object): it becomes an error at the call site.
+            std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| op.call(self, &mut args))).unwrap_or_else(|p| {
+                let msg = p
+                    .downcast_ref::<String>()
+                    .map(String::as_str)
+                    .or_else(|| p.downcast_ref::<&str>().copied())
+                    .unwrap_or("unknown cause");
+                Err(crate::error::Error::runtime(format!(
+                    "{}: internal error ({}); please report it with the deck",
+                    op.name, msg
+                )))
+            })
         };
         op.record(start.elapsed());
         let res = res.map_err(|e| e.with_span_if_missing(span, &self.source))?;

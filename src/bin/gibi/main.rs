@@ -34,6 +34,21 @@ fn exit_code(kind: ErrorKind) -> u8 {
 }
 
 fn main() -> ExitCode {
+    // Operator panics are turned into errors by the evaluator and reported
+    // with their location; keep Rust's default panic text out of the way.
+    // Anything else is caught below and reported as an internal error.
+    std::panic::set_hook(Box::new(|_| {}));
+    match std::panic::catch_unwind(run) {
+        Ok(code) => code,
+        Err(p) => {
+            let msg = p.downcast_ref::<String>().map(String::as_str).or_else(|| p.downcast_ref::<&str>().copied());
+            eprintln!("gibi: internal error ({}); please report it with the deck", msg.unwrap_or("unknown cause"));
+            ExitCode::from(70)
+        }
+    }
+}
+
+fn run() -> ExitCode {
     let cli = Cli::parse();
     let cwd = std::env::current_dir().unwrap_or_else(|_| ".".into());
     let mut gibi = Interpreter::builder().output(std::io::stdout()).files(FilePolicy::Under(cwd)).build();
