@@ -8,16 +8,21 @@ use crate::eval::Interp;
 use crate::solve::{Condition, Kind, Load, Matrix, Problem, Solution, SolveError};
 use crate::value::rigidity::Symmetry;
 use crate::value::{fmt_float, Chpoint, Nature, Rigidite};
-use std::collections::HashMap;
+use rustc_hash::FxHashMap as HashMap;
 
 /// Numbering of the primal unknowns of one RIGIDITE.
+///
+/// Component names are interned (a structure has a handful of them), so the
+/// per-unknown map is keyed by (node, component id) and numbering a
+/// million unknowns allocates no strings.
 #[derive(Debug, Clone, Default)]
 pub struct Assembled {
     /// (node, component) of each primal unknown, in numbering order.
     pub dofs: Vec<(usize, String)>,
-    index: HashMap<(usize, String), usize>,
-    /// (node, dual name) -> unknown, from the blocks' dual names.
-    dual_index: HashMap<(usize, String), usize>,
+    /// Interned component names, and the dual name of each.
+    comps: Vec<String>,
+    duals: Vec<String>,
+    index: HashMap<(usize, u16), usize>,
     /// Multiplier node of each condition -> condition number.
     mult: HashMap<usize, usize>,
     pub problem: Problem,
@@ -32,11 +37,12 @@ impl Assembled {
             symmetric &= b.symmetry == Symmetry::Symmetric;
             let nd = b.ndof();
             let mut idx = vec![0usize; nd];
+            let ids: Vec<u16> = b.dofs.iter().zip(&b.duals).map(|((_, c), d)| a.intern(c, d)).collect();
+            entries.reserve(b.n_elem() * nd * nd);
             for e in 0..b.n_elem() {
                 let conn = &b.conn[e * b.nodes_per_elem..(e + 1) * b.nodes_per_elem];
-                for (i, (l, c)) in b.dofs.iter().enumerate() {
-                    idx[i] = a.unknown(conn[*l], c);
-                    a.dual_index.entry((conn[*l], b.duals[i].clone())).or_insert(idx[i]);
+                for (i, (l, _)) in b.dofs.iter().enumerate() {
+                    idx[i] = a.unknown_id(conn[*l], ids[i]);
                 }
                 let m = b.mat(e);
                 for i in 0..nd {
@@ -52,22 +58,41 @@ impl Assembled {
             conditions.push(Condition { terms, kind: c.kind });
             a.mult.insert(c.mult_node, k);
         }
-        for ((n, c), &i) in a.index.clone().iter() {
-            a.dual_index.entry((*n, dofs::dual_of(c))).or_insert(i);
-        }
         a.problem = Problem { k: Matrix { n: a.dofs.len(), entries, symmetric }, conditions };
         a
     }
 
-    fn unknown(&mut self, node: usize, comp: &str) -> usize {
-        let key = (node, comp.to_string());
-        if let Some(&i) = self.index.get(&key) {
-            return i;
+    /// The id of a component name, registering it (with its dual) if new.
+    fn intern(&mut self, comp: &str, dual: &str) -> u16 {
+        match self.comps.iter().position(|c| c == comp) {
+            Some(i) => i as u16,
+            None => {
+                self.comps.push(comp.to_string());
+                self.duals.push(dual.to_string());
+                (self.comps.len() - 1) as u16
+            }
         }
-        let i = self.dofs.len();
-        self.dofs.push(key.clone());
-        self.index.insert(key, i);
+    }
+
+    fn unknown_id(&mut self, node: usize, id: u16) -> usize {
+        let next = self.dofs.len();
+        let i = *self.index.entry((node, id)).or_insert(next);
+        if i == next {
+            self.dofs.push((node, self.comps[id as usize].clone()));
+        }
         i
+    }
+
+    fn unknown(&mut self, node: usize, comp: &str) -> usize {
+        let id = self.intern(comp, &dofs::dual_of(comp));
+        self.unknown_id(node, id)
+    }
+
+    /// The unknown a load component names: a dual name (FX) or the primal
+    /// name itself.
+    fn find(&self, node: usize, comp: &str) -> Option<usize> {
+        let by = |names: &[String]| names.iter().position(|c| c == comp);
+        by(&self.duals).or_else(|| by(&self.comps)).and_then(|id| self.index.get(&(node, id as u16)).copied())
     }
 
     /// The load of one right-hand side field: forces by dual (or primal)
@@ -89,9 +114,8 @@ impl Assembled {
                     }
                     continue;
                 }
-                let key = (n, c.to_string());
-                match self.dual_index.get(&key).or_else(|| self.index.get(&key)) {
-                    Some(&i) => f[i] += v,
+                match self.find(n, c) {
+                    Some(i) => f[i] += v,
                     None => {
                         return Err(Error::runtime(format!(
                             "the right-hand side has {} at {}, which is no unknown of this RIGIDITE",
