@@ -4,6 +4,7 @@
 
 mod args;
 mod arith;
+mod export;
 mod fieldfn;
 mod io;
 mod lists;
@@ -108,7 +109,7 @@ impl Registry {
     /// Every built-in family.
     pub fn standard() -> Self {
         let mut r = Registry::default();
-        for table in [arith::OPS, math::OPS, lists::OPS, objects::OPS, io::OPS, union::OPS, mesh::OPS] {
+        for table in [arith::OPS, math::OPS, lists::OPS, objects::OPS, io::OPS, union::OPS, mesh::OPS, export::OPS] {
             for d in table {
                 r.insert(OpSpec::from(d));
             }
