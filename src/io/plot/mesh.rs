@@ -147,7 +147,12 @@ impl MeshPicture<'_> {
             let (lo, hi) = vrange.unwrap_or((0.0, 1.0));
             let scale = |v: f64| if hi > lo { (v - lo) / (hi - lo) } else { 0.5 };
             let o = outline(&f.mesh);
-            let n_sub = if o.polys.len() > 2000 { 1 } else { 2 };
+            // Finer colour steps on small meshes, bounded file size on big ones.
+            let n_sub = match o.polys.len() {
+                0..300 => 4,
+                300..3000 => 2,
+                _ => 1,
+            };
             let val = |n: usize| f.values.get(&n).copied().unwrap_or(f64::NAN);
             for poly in &o.polys {
                 let depth = poly.iter().map(|&n| at(n).2).sum::<f64>() / poly.len() as f64;
