@@ -139,3 +139,22 @@ fn lire_gmsh_refuses_depth_in_two_dimensions() {
     let e = gibi.run_str("deck", "t = lire 'GMSH' 'nowhere.msh' ;").unwrap_err();
     assert!(e.render().contains("cannot read"), "{}", e.render());
 }
+
+#[test]
+fn truncated_or_garbled_files_never_panic() {
+    for f in ["plate_quad4_v22.msh", "plate_tri6_v41.msh", "block_3d_v41.msh"] {
+        let text = std::fs::read_to_string(data(f)).unwrap();
+        for cut in (0..text.len()).step_by(7) {
+            let _ = gmsh::parse(&text[..cut]);
+        }
+        // Replace one token at a time by something out of place.
+        let words: Vec<&str> = text.split_whitespace().collect();
+        for i in (0..words.len()).step_by(5) {
+            for bad in ["-1", "99999", "$Nodes", "1e400"] {
+                let mut w = words.clone();
+                w[i] = bad;
+                let _ = gmsh::parse(&w.join("\n"));
+            }
+        }
+    }
+}
