@@ -203,3 +203,25 @@ fn sort_errors_are_worded() {
     let e = closed.run_str("e4", "sort 'VTK' s ;").unwrap_err().render();
     assert!(e.contains("not allowed by the host"), "{}", e);
 }
+
+#[test]
+fn gmsh_volumes_and_quadratic_surfaces_export() {
+    let dir = scratch("gmsh");
+    let data = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data");
+    for (f, dime, cells, types) in [
+        ("block_3d_v41.msh", 3, 30, vec![9u8, 5, 12, 13]),
+        ("plate_tri6_v41.msh", 2, 6, vec![21, 22]),
+        ("plate_quad8_v41.msh", 2, 4, vec![21, 23]),
+    ] {
+        std::fs::copy(data.join(f), dir.join(f)).unwrap();
+        let mut gibi = Interpreter::builder().files(FilePolicy::Under(dir.clone())).build();
+        let deck =
+            format!("opti dime {} ; t = lire 'GMSH' '{}' ; opti sort '{}' ; sort 'VTK' (t . 'TOUT') ;", dime, f, f);
+        gibi.run_str("deck", &deck).unwrap_or_else(|e| panic!("{}", e.render()));
+        let els = parse(&dir.join(format!("{}.vtu", f)));
+        assert_eq!(piece(&els).1, cells, "{}", f);
+        let mut t = base64::engine::general_purpose::STANDARD.decode(&array(&els, "types").text).unwrap()[8..].to_vec();
+        t.dedup();
+        assert_eq!(t, types, "{}", f);
+    }
+}

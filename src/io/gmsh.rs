@@ -265,7 +265,7 @@ fn entities(c: &mut Cursor, r: &mut Reader) -> Result<()> {
                 let _: f64 = c.num("a coordinate")?;
             }
             let np = c.count("the number of physical tags")?;
-            let mut phys = Vec::with_capacity(np);
+            let mut phys = Vec::with_capacity(np.min(64));
             for _ in 0..np {
                 phys.push(c.num::<i64>("a physical tag")?.abs());
             }
@@ -304,7 +304,7 @@ fn nodes_v4(c: &mut Cursor, r: &mut Reader) -> Result<()> {
         let _tag: i64 = c.num("an entity tag")?;
         let parametric: i64 = c.num("the parametric flag")?;
         let n = c.count("the number of nodes in the block")?;
-        let mut tags = Vec::with_capacity(n);
+        let mut tags = Vec::with_capacity(n.min(4096));
         for _ in 0..n {
             tags.push(c.num::<u64>("a node tag")?);
         }
@@ -335,7 +335,7 @@ fn elements_v2(c: &mut Cursor, r: &mut Reader) -> Result<()> {
         let _tag: u64 = c.num("an element tag")?;
         let code: i64 = c.num("an element type")?;
         let ntags = c.count("the number of element tags")?;
-        let mut tags = Vec::with_capacity(ntags);
+        let mut tags = Vec::with_capacity(ntags.min(64));
         for _ in 0..ntags {
             tags.push(c.num::<i64>("an element tag")?);
         }
