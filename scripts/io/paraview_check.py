@@ -2,14 +2,17 @@
 
 Run with ParaView's Python (Debian: `apt-get install paraview`):
 
-    gibi scripts/io/export_plate.dgibi          # writes scripts/io/out/
-    pvpython scripts/io/paraview_check.py scripts/io/out/plate.vtu [VECTOR]
-    pvpython scripts/io/paraview_check.py scripts/io/out/plate.pvd
+    cd scripts/io && gibi export_plate.dgibi    # writes out/ here
+    pvpython paraview_check.py out/plate.vtu [VECTOR]
+    pvpython paraview_check.py out/plate.pvd
+
+(add --force-offscreen-rendering to pvpython on a machine with no display).
 
 For a .vtu it prints the point and cell counts and every array with its
 number of components; with VECTOR (a point array name such as DEPL) it
 also applies Warp By Vector, the filter the 3-component displacement
-vectors are written for. For a .pvd it prints the time steps ParaView
+vectors are written for, and prints the warped bounds (give it a vector:
+ParaView 5.11 aborts when asked to warp by a scalar). For a .pvd it prints the time steps ParaView
 sees. Exits 1 if ParaView reads no points. Not part of CI: ParaView is a
 large package; the Rust tests parse the same files themselves.
 """
