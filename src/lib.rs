@@ -25,6 +25,7 @@
 pub mod error;
 pub mod eval;
 pub mod fem;
+pub mod io;
 pub mod ops;
 pub mod solve;
 pub mod source;

@@ -7,6 +7,7 @@ mod arith;
 mod assemble;
 mod bc;
 mod dofs;
+mod export;
 mod fieldfn;
 mod fields;
 mod io;
@@ -166,6 +167,7 @@ impl Registry {
             reso::OPS,
             post::OPS,
             superele::OPS,
+            export::OPS,
         ] {
             for d in table {
                 r.insert(OpSpec::from(d));

@@ -1,0 +1,114 @@
+//! TRAC and DESS draw SVG and PNG files with no display, and decks written
+//! for Cast3M's graphics (device words, options) run unchanged.
+
+use gibi::value::model::{Curve, Evolution};
+use gibi::value::{Chpoint, Nature};
+use gibi::{FilePolicy, Interpreter, Value};
+use std::path::{Path, PathBuf};
+use std::rc::Rc;
+
+fn scratch(test: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("gibi_io_plot_{}_{}", std::process::id(), test));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+const PLATE: &str = "opti dime 2 elem qua4 ; p1 = 0. 0. ; p2 = 2. 0. ; p3 = 2. 1. ; p4 = 0. 1. ; \
+    s = dall (droi 8 p1 p2) (droi 4 p2 p3) (droi 8 p3 p4) (droi 4 p4 p1) ;";
+
+fn session(dir: &Path) -> Interpreter {
+    let mut gibi = Interpreter::builder().files(FilePolicy::Under(dir.to_path_buf())).build();
+    run(&mut gibi, PLATE);
+    // A bending-like displacement u = (-0.05 x y, 0.02 x²).
+    let Some(Value::Mesh(s)) = gibi.get("S") else { panic!() };
+    let entries: Vec<_> = s
+        .node_list()
+        .into_iter()
+        .flat_map(|n| {
+            let x = gibi.point_coords(&Value::Point(n)).unwrap();
+            [(n, "UX", -0.05 * x[0] * x[1]), (n, "UY", 0.02 * x[0] * x[0])]
+        })
+        .collect();
+    gibi.set("U", Value::Chpo(Rc::new(Chpoint::from_entries(Nature::Diffus, entries.iter().map(|e| (e.0, e.1, e.2))))));
+    gibi
+}
+
+fn run(gibi: &mut Interpreter, deck: &str) {
+    if let Err(e) = gibi.run_str("deck", deck) {
+        panic!("{}", e.render());
+    }
+}
+
+fn assert_svg(path: &Path) -> String {
+    let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {}", path.display(), e));
+    assert!(text.starts_with("<svg") || text.starts_with("<?xml"), "{} starts {:?}", path.display(), &text[..20]);
+    assert!(text.trim_end().ends_with("</svg>"));
+    text
+}
+
+fn assert_png(path: &Path) {
+    let bytes = std::fs::read(path).unwrap_or_else(|e| panic!("{}: {}", path.display(), e));
+    assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n", "{}", path.display());
+    assert!(bytes.len() > 5000, "{} is only {} bytes", path.display(), bytes.len());
+}
+
+#[test]
+fn trac_of_meshes_and_fields_in_svg_then_png() {
+    let dir = scratch("trac");
+    let mut gibi = session(&dir);
+    run(&mut gibi, "trac s ; trac 'PSC' (s et (s plus u)) 'TITR' 'deformed' ; trac (coor 1 s) s 'CACH' ;");
+    let plain = assert_svg(&dir.join("gibi_trac_1.svg"));
+    assert!(plain.matches("<polyline").count() + plain.matches("<path").count() >= 32, "one outline per element");
+    assert!(assert_svg(&dir.join("gibi_trac_2.svg")).contains("deformed"));
+    let field = assert_svg(&dir.join("gibi_trac_3.svg"));
+    assert!(field.contains("SCAL") && field.contains("0.000e0") && field.contains("2.000e0"), "colour bar labels");
+    run(&mut gibi, "opti trac 'PNG' ; trac u s ; opti trac X ; trac s ;");
+    assert_png(&dir.join("gibi_trac_4.png"));
+    assert_svg(&dir.join("gibi_trac_5.svg"));
+    run(&mut gibi, "opti sort 'figs/plate' ; opti trac 'PNG' ; trac (s plus u) ;");
+    assert_png(&dir.join("figs/plate.png"));
+}
+
+#[test]
+fn trac_of_a_volume_mesh() {
+    let dir = scratch("trac3d");
+    let data = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/block_3d_v41.msh");
+    std::fs::copy(data, dir.join("block.msh")).unwrap();
+    let mut gibi = Interpreter::builder().files(FilePolicy::Under(dir.clone())).build();
+    run(&mut gibi, "opti dime 3 ; t = lire 'GMSH' 'block.msh' ; opti trac 'PNG' ; trac (t . 'TOUT') ; trac (coor 3 (t . 'TOUT')) (t . 'TOUT') ;");
+    assert_png(&dir.join("gibi_trac_1.png"));
+    assert_png(&dir.join("gibi_trac_2.png"));
+}
+
+#[test]
+fn dess_of_curves() {
+    let dir = scratch("dess");
+    let mut gibi = Interpreter::builder().files(FilePolicy::Under(dir.clone())).build();
+    let x: Vec<f64> = (0..=20).map(|i| i as f64 * 0.05).collect();
+    let curve = |legend: &str, f: fn(f64) -> f64| Curve {
+        legend: legend.into(),
+        x_name: "displacement".into(),
+        y_name: "force".into(),
+        x: x.clone(),
+        y: x.iter().map(|&v| f(v)).collect(),
+    };
+    let ev = Evolution { curves: vec![curve("linear", |v| 3.0 * v), curve("contact", |v| (v - 0.4).max(0.0) * 10.0)] };
+    gibi.set("EV", Value::Evol(Rc::new(ev)));
+    run(&mut gibi, "titr 'load path' ; dess ev 'XBOR' 0. 1. 'LEGE' ; opti trac 'PNG' ; dess ev ;");
+    let svg = assert_svg(&dir.join("gibi_trac_1.svg"));
+    assert!(svg.contains("load path") && svg.contains("contact") && svg.contains("displacement"));
+    assert_png(&dir.join("gibi_trac_2.png"));
+}
+
+#[test]
+fn drawing_without_file_access_is_a_no_op_and_bad_calls_are_errors() {
+    let mut gibi = Interpreter::new();
+    run(&mut gibi, &format!("{} trac s ; trac 'X' s ;", PLATE));
+    let e = gibi.run_str("e", "trac 'PSC' ;").unwrap_err().render();
+    assert!(e.contains("TRAC: expected MAILLAGE or CHPOINT"), "{}", e);
+    let e = gibi.run_str("e", "dess ;").unwrap_err().render();
+    assert!(e.contains("DESS: expected EVOLUTIO"), "{}", e);
+    let e = gibi.run_str("e", "trac (coor 1 s) ;").unwrap_err().render();
+    assert!(e.contains("needs the mesh it lives on"), "{}", e);
+}
