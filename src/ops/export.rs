@@ -125,7 +125,12 @@ fn sort_vtk(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let mut grid = vtk::Grid::new(&mesh, &it.nodes).map_err(io_err)?;
     for (f, name) in &fields {
         match f {
-            Value::Chpo(c) => grid.add_point_field(name, &c.components(), |n, comp| c.get(n, comp)),
+            Value::Chpo(c) => {
+                // Multipliers (LX, FLX) live on multiplier nodes, not on the
+                // mesh: they are not point data.
+                let comps: Vec<String> = c.components().into_iter().filter(|x| x != "LX" && x != "FLX").collect();
+                grid.add_point_field(name, &comps, |n, comp| c.get(n, comp))
+            }
             Value::Mchaml(m) => grid.add_cell_array(cell_field(&grid, m, name)).map_err(io_err)?,
             _ => {}
         }
