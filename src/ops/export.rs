@@ -22,7 +22,7 @@ use std::rc::Rc;
 pub(crate) const OPS: &[OpDef] = &[
     OpDef {
         name: "SORT",
-        signature: "SORT 'VTK' MAILLAGE (CHPOINT|MCHAML ('NAME'))… ('TEMPS' t) | SORT 'MAT' RIGIDITE 'file.mtx'",
+        signature: "SORT 'VTK' MAILLAGE (CHPOINT|MCHAML ('NAME'))… ('CONTACT' RIGIDITE SOLUTION (LIMITS)) ('TEMPS' t) | SORT 'MAT' RIGIDITE 'file.mtx'",
         doc: "Write files for other tools. 'VTK': a ParaView .vtu named by OPTI SORT (default gibi.vtu) with \
               nodal fields (UX UY UZ → one 3-component vector, also in 2D) and element fields (MCHAML, averaged \
               per element); with 'TEMPS' t each call writes name_NNNN.vtu and rewrites name.pvd with every time \
@@ -99,9 +99,19 @@ fn sort_vtk(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let mut fields: Vec<(Value, String)> = Vec::new();
     let mut pending: Option<(Value, String)> = None;
     let mut time = None;
+    let mut contact: Option<(Rc<crate::value::Rigidite>, Rc<Chpoint>, Option<Rc<Chpoint>>)> = None;
     loop {
         if a.keyword(&["TEMPS"]).is_some() {
             time = Some(a.req_num()?);
+            continue;
+        }
+        if a.keyword(&["CONTACT"]).is_some() {
+            // 'CONTACT' RIGIDITE SOLUTION (LIMITS): status, gap and pressure
+            // of the unilateral conditions, as point fields.
+            let r = a.req::<Rc<crate::value::Rigidite>>()?;
+            let u = a.req::<Rc<Chpoint>>()?;
+            let d = a.opt_right::<Rc<Chpoint>>();
+            contact = Some((r, u, d));
             continue;
         }
         let source_name = a.next_name_span().map(|sp| it.source.slice(sp).to_uppercase());
@@ -134,6 +144,22 @@ fn sort_vtk(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             Value::Mchaml(m) => grid.add_cell_array(cell_field(&grid, m, name)).map_err(io_err)?,
             _ => {}
         }
+    }
+    if let Some((r, u, d)) = &contact {
+        let (mut nodes, mut closed, mut gap, mut pressure) = (vec![], vec![], vec![], vec![]);
+        for c in r.conds.iter().filter(|c| c.kind.is_unilateral()) {
+            let Some((node, _, _)) = c.terms.first() else { continue };
+            let cu: f64 = c.terms.iter().map(|(n, comp, k)| k * u.get(*n, comp).unwrap_or(0.0)).sum();
+            let limit = d.as_ref().and_then(|d| d.get(c.mult_node, "FLX")).unwrap_or(0.0);
+            let lx = u.get(c.mult_node, "LX");
+            nodes.push(*node);
+            closed.push(lx.is_some());
+            // Gap measured in the allowed direction: >= 0 when feasible.
+            gap.push(c.kind.sense() * (cu - limit));
+            // Support pressure: the magnitude of the reaction.
+            pressure.push(lx.map_or(0.0, f64::abs));
+        }
+        grid.add_contact(&nodes, &closed, &gap, &pressure).map_err(io_err)?;
     }
     let base = sort_base(it).unwrap_or_else(|| "gibi".into());
     match time {
