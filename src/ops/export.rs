@@ -94,12 +94,15 @@ fn sort(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     }
 }
 
+/// 'CONTACT': the conditions, the RESO solution, and optionally the limits.
+type ContactArgs = (Rc<crate::value::Rigidite>, Rc<Chpoint>, Option<Rc<Chpoint>>);
+
 fn sort_vtk(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let mut mesh: Option<Rc<Mesh>> = None;
     let mut fields: Vec<(Value, String)> = Vec::new();
     let mut pending: Option<(Value, String)> = None;
     let mut time = None;
-    let mut contact: Option<(Rc<crate::value::Rigidite>, Rc<Chpoint>, Option<Rc<Chpoint>>)> = None;
+    let mut contact: Option<ContactArgs> = None;
     loop {
         if a.keyword(&["TEMPS"]).is_some() {
             time = Some(a.req_num()?);
