@@ -111,16 +111,32 @@ fn reso(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         let sols = {
             let mut cache = r.cache.borrow_mut();
             let opts = DirectOptions { check_residual: !o.noid, stab: o.stab };
+            let mut fact_s = None;
             if cache.direct.is_none() || cache.direct_stab != o.stab {
                 cache.direct =
                     Some(Factorization::new(&asm.problem, &opts).map_err(|e| asm.explain(it, &r, e, &loads))?);
                 cache.direct_stab = o.stab;
+                fact_s = Some(t.elapsed().as_secs_f64());
                 it.timers.phase("RESO factorisation", t.elapsed().as_secs_f64());
             }
             let t = std::time::Instant::now();
             let f = cache.direct.as_ref().expect("built above");
             let s = f.solve(&loads).map_err(|e| asm.explain(it, &r, e, &loads));
             it.timers.phase("RESO solve", t.elapsed().as_secs_f64());
+            if it.opts.echo >= 1 {
+                let fact = match fact_s {
+                    Some(x) => format!("factorisation {:.3} s", x),
+                    None => "factorisation reused".into(),
+                };
+                it.println(&format!(
+                    "RESO: {} unknowns, {} conditions, {} right-hand side(s); {}, solve {:.3} s",
+                    asm.problem.k.n,
+                    asm.problem.conditions.len(),
+                    loads.len(),
+                    fact,
+                    t.elapsed().as_secs_f64()
+                ));
+            }
             s
         };
         for s in sols.map_err(|e| soften(it, e, o.soft))? {
