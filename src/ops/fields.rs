@@ -121,7 +121,42 @@ fn comp_list(a: &mut Args) -> Option<Vec<String>> {
     a.word_not_operator().map(|w| vec![w])
 }
 
+/// EXCO on an element field: the listed components (one alone keeps its
+/// name unless a new one is given; Cast3M renames it SCAL only for nodes).
+fn exco_mchaml(a: &mut Args, m: &Mchaml) -> Result<Vec<Value>> {
+    let comps = comp_list(a).ok_or_else(|| a.missing("a component"))?;
+    a.keyword(&["NOID"]);
+    let names = comp_list(a).unwrap_or_else(|| comps.clone());
+    if names.len() != comps.len() {
+        return Err(a.err("as many new names as components are needed"));
+    }
+    let mut out = Mchaml { subtype: m.subtype.clone(), zones: vec![] };
+    for z in &m.zones {
+        let idx: Vec<Option<usize>> = comps.iter().map(|c| z.comps.iter().position(|x| x == c)).collect();
+        if idx.iter().any(Option::is_none) && z.constants.is_empty() {
+            return Err(a.err(format!(
+                "the field has no component {} (it has {})",
+                comps.join(" "),
+                z.comps.join(" ")
+            )));
+        }
+        let mut nz = z.clone();
+        nz.comps = names.clone();
+        nz.values = z
+            .values
+            .iter()
+            .map(|e| e.iter().map(|p| idx.iter().map(|i| i.map_or(0.0, |i| p[i])).collect()).collect())
+            .collect();
+        nz.constants.retain(|k, _| comps.contains(k));
+        out.zones.push(nz);
+    }
+    Ok(vec![Value::Mchaml(Rc::new(out))])
+}
+
 fn exco(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    if let Some(m) = a.opt::<Rc<Mchaml>>() {
+        return exco_mchaml(a, &m);
+    }
     let ch = a.req::<Rc<Chpoint>>()?;
     let comps = comp_list(a).ok_or_else(|| a.missing("a component"))?;
     let noid = a.keyword(&["NOID"]).is_some();

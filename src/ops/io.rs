@@ -8,6 +8,13 @@ use crate::value::{fmt_float, list_value, Value};
 
 pub(crate) const OPS: &[OpDef] = &[
     OpDef {
+        name: "DENS",
+        signature: "DENS x",
+        doc: "Set the density (element size) given to new points, like OPTI DENS.",
+        example: "dens 0.1 ;",
+        f: dens,
+    },
+    OpDef {
         name: "OPTI",
         signature:
             "OPTI (DIME n) (ELEM type) (MODE mode) (ECHO n) (DENS x) (ERRE w) (TRAC w) (NORM w) (IMPI n) (RESO w) …",
@@ -255,4 +262,13 @@ fn erre(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         return Err(a.missing("an error number or a text"));
     }
     Err(Error::runtime(format!("ERRE: {}", parts.join(" "))))
+}
+
+fn dens(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let d = a.req_num()?;
+    if d < 0.0 {
+        return Err(a.err(format!("a density must be positive, found {}", d)));
+    }
+    it.opts.dens = d;
+    Ok(vec![])
 }
