@@ -7,6 +7,7 @@ mod arith;
 mod assemble;
 mod bc;
 mod dofs;
+mod evol;
 mod fieldfn;
 mod fields;
 mod io;
@@ -130,6 +131,7 @@ impl Registry {
             fields::OPS,
             reso::OPS,
             post::OPS,
+            evol::OPS,
         ] {
             for d in table {
                 r.insert(OpSpec::from(d));
