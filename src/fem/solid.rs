@@ -323,7 +323,9 @@ pub fn field(
         return Err(FemError::WrongDofCount { elem: ty.name(), expected: nd, got: u.len() });
     }
     let pts = points(ty, mode, x, &rule(f, ty), 1.0)?;
-    let d = if stress || mode == Mode::PlanCont { Some(elasticity(mode, m, ty.name())?) } else { None };
+    // Strains need no elastic constants, except Poisson's ratio for the
+    // plane-stress EPZZ below: do not ask for YOUN when it is not used.
+    let d = if stress { Some(elasticity(mode, m, ty.name())?) } else { None };
     let mut values = Vec::with_capacity(pts.len());
     for p in &pts {
         let b = bmat(mode, p);

@@ -10,7 +10,7 @@ use crate::eval::Interp;
 use crate::fem::mesh::Mesh;
 use crate::fem::meshing as mg;
 use crate::value::model::Curve;
-use crate::value::{fmt_float, Chpoint, Evolution, Value};
+use crate::value::{Chpoint, Evolution, Value};
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[OpDef {
@@ -117,22 +117,4 @@ pub(crate) fn extr(a: &mut Args) -> Result<Option<Vec<Value>>> {
         "LEGE" => Value::mot(&c.legend),
         _ => Value::Evol(Rc::new(Evolution { curves: vec![c.clone()] })),
     }]))
-}
-
-/// LIST text of an EVOLUTIO: one block per curve, a line per point.
-#[allow(dead_code)] // wired in by value::describe (see the fem-decks report)
-pub(crate) fn describe(e: &Evolution) -> String {
-    let mut s = format!("{} curve(s)", e.curves.len());
-    for (i, c) in e.curves.iter().enumerate() {
-        let name = |n: &str, d: &str| if n.is_empty() { d.to_string() } else { n.to_string() };
-        s.push_str(&format!("\n  curve {}", i + 1));
-        if !c.legend.is_empty() {
-            s.push_str(&format!(" '{}'", c.legend));
-        }
-        s.push_str(&format!(": {} point(s), {} against {}", c.x.len(), name(&c.y_name, "Y"), name(&c.x_name, "X")));
-        for (x, y) in c.x.iter().zip(&c.y) {
-            s.push_str(&format!("\n    {} {}", fmt_float(*x), fmt_float(*y)));
-        }
-    }
-    s
 }
