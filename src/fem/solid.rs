@@ -251,19 +251,45 @@ pub fn stiffness(
     let pts = points(ty, mode, x, &rule(f, ty), t)?;
     let dofs = dof_list(ty, mode);
     let nd = dofs.len();
+    let ns = d.len();
     let mut k = vec![0.0; nd * nd];
+    // Flat, reused buffers: RIGI calls this once per element, so the
+    // per-point allocations of a Vec-of-rows version dominated its time.
+    let mut b = vec![0.0; ns * nd];
+    let mut db = vec![0.0; ns * nd];
     for p in &pts {
-        let b = bmat(mode, p);
-        // DB, then accumulate B'(DB) w.
-        let db: Vec<Vec<f64>> = d
-            .iter()
-            .map(|row| (0..nd).map(|c| row.iter().zip(&b).map(|(dv, br)| dv * br[c]).sum()).collect())
-            .collect();
-        for r in 0..nd {
-            for c in 0..nd {
-                let s: f64 = (0..b.len()).map(|q| b[q][r] * db[q][c]).sum();
-                k[r * nd + c] += s * p.w;
+        for (q, row) in bmat(mode, p).into_iter().enumerate() {
+            b[q * nd..(q + 1) * nd].copy_from_slice(&row);
+        }
+        // (D B) w, then K += Bᵀ (D B w) on the upper triangle.
+        for (q, drow) in d.iter().enumerate() {
+            let out = &mut db[q * nd..(q + 1) * nd];
+            out.fill(0.0);
+            for (s, dv) in drow.iter().enumerate() {
+                if *dv != 0.0 {
+                    let f = dv * p.w;
+                    for (o, bv) in out.iter_mut().zip(&b[s * nd..(s + 1) * nd]) {
+                        *o += f * bv;
+                    }
+                }
             }
+        }
+        for q in 0..ns {
+            let (bq, dbq) = (&b[q * nd..(q + 1) * nd], &db[q * nd..(q + 1) * nd]);
+            for r in 0..nd {
+                let br = bq[r];
+                if br != 0.0 {
+                    for (kv, dv) in k[r * nd + r..(r + 1) * nd].iter_mut().zip(&dbq[r..]) {
+                        *kv += br * dv;
+                    }
+                }
+            }
+        }
+    }
+    // Mirror the upper triangle (K is symmetric).
+    for r in 0..nd {
+        for c in 0..r {
+            k[r * nd + c] = k[c * nd + r];
         }
     }
     Ok(ElemMatrix { dofs, k })
@@ -323,7 +349,9 @@ pub fn field(
         return Err(FemError::WrongDofCount { elem: ty.name(), expected: nd, got: u.len() });
     }
     let pts = points(ty, mode, x, &rule(f, ty), 1.0)?;
-    let d = if stress || mode == Mode::PlanCont { Some(elasticity(mode, m, ty.name())?) } else { None };
+    // Strains need no elastic constants, except Poisson's ratio for the
+    // plane-stress EPZZ below: do not ask for YOUN when it is not used.
+    let d = if stress { Some(elasticity(mode, m, ty.name())?) } else { None };
     let mut values = Vec::with_capacity(pts.len());
     for p in &pts {
         let b = bmat(mode, p);

@@ -20,6 +20,9 @@ pub(crate) fn extremum(_it: &mut Interp, a: &mut Args, max: bool, abs: bool) -> 
 
 /// EXTR on FE objects; None when the arguments are not FE objects.
 pub(crate) fn extr(it: &mut Interp, a: &mut Args) -> Result<Option<Vec<Value>>> {
+    if let Some(v) = super::evol::extr(a)? {
+        return Ok(Some(v));
+    }
     super::fields::extr(it, a)
 }
 

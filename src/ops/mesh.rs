@@ -15,7 +15,10 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "NBEL", signature: "NBEL MAILLAGE", doc: "Number of elements of a mesh.", example: "n = nbel s ;", f: nbel },
     OpDef { name: "POIN", signature: "POIN x (y) (z) | MAILLAGE POIN n | MAILLAGE POIN ('INIT'|'FINAL') | MAILLAGE POIN 'PROC' POINT | MAILLAGE POIN ('DROIT' P1 P2 | 'PLAN' P1 P2 P3) (crit)", doc: "A point, or nodes of a mesh.", example: "p = l poin 'FINAL' ;", f: poin },
     OpDef { name: "DROI", signature: "DROI (n) P1|LINE P2 ('DINI' d1) ('DFIN' d2)", doc: "A straight line of n elements (SEG2 or SEG3 per OPTI ELEM).", example: "l = droi 10 p1 p2 ;", f: droi },
+    // D and C are Cast3M's own abbreviations of DROI and CERC (`p1 d 10 p2`).
+    OpDef { name: "D", signature: "D (n) P1|LINE P2 ('DINI' d1) ('DFIN' d2)", doc: "Abbreviation of DROI.", example: "l = p1 d 10 p2 ;", f: droi },
     OpDef { name: "CERC", signature: "CERC (n) P1 CENTRE P2 ('DINI' d1) ('DFIN' d2)", doc: "An arc of circle from P1 to P2 around CENTRE.", example: "c = cerc 8 p1 o p2 ;", f: cerc },
+    OpDef { name: "C", signature: "C (n) P1 CENTRE P2 ('DINI' d1) ('DFIN' d2)", doc: "Abbreviation of CERC.", example: "c = c 8 p1 o p2 ;", f: cerc },
     OpDef { name: "DALL", signature: "DALL LINE1 LINE2 LINE3 LINE4 ('PLAN')", doc: "A structured surface (OPTI ELEM QUA4, TRI3, QUA8, TRI6) from four sides forming a closed contour.", example: "s = dall bas dro hau gau ;", f: dall },
     OpDef { name: "TRAN", signature: "GEO TRAN (n) ('DINI' d1) ('DFIN' d2) VECTOR", doc: "Sweep a line into a surface or a surface into a volume along a vector.", example: "s = l tran 4 (0. 1.) ;", f: tran },
     OpDef { name: "ROTA", signature: "GEO ROTA (n) ANGLE CENTRE (AXIS_POINT)", doc: "Sweep by rotation (angle in degrees) about a point (2D) or an axis (3D).", example: "s = l rota 8 90. o ;", f: rota },

@@ -7,6 +7,7 @@ mod arith;
 mod assemble;
 mod bc;
 mod dofs;
+mod evol;
 mod export;
 mod fieldfn;
 mod fields;
@@ -168,22 +169,14 @@ impl Registry {
             post::OPS,
             superele::OPS,
             export::OPS,
+            evol::OPS,
         ] {
             for d in table {
                 r.insert(OpSpec::from(d));
             }
         }
-        for (alias, target) in Self::ALIASES {
-            if let Some(op) = r.find(target) {
-                r.ops.insert(alias.to_string(), op);
-            }
-        }
         r
     }
-
-    /// Alternative names Cast3M accepts for some operators. A name bound
-    /// to an object still wins (`d = 3 ;` then `d` is 3).
-    const ALIASES: &'static [(&'static str, &'static str)] = &[("D", "DROI"), ("C", "CERC")];
 
     pub fn insert(&mut self, spec: OpSpec) {
         self.ops.insert(op_key(&spec.name.to_uppercase()).to_string(), Rc::new(spec));

@@ -176,7 +176,20 @@ fn rigi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         let mode = zone_mode(zone)?;
         let mat = material_for(zone, &fields);
         for part in &zone.mesh.parts {
-            rig.blocks.push(stiffness_block(it, form, mode, part, &mat).map_err(|e| a.err(e.message))?);
+            rig.blocks.push(stiffness_block(it, form, mode, part, &mat).map_err(|e| {
+                let hint = if e.message.contains("property VECT missing") {
+                    Some("in 3D a beam needs its local y axis: CARA mo ... 'VECT' (0. 0. 1.) (any vector not along the beam)")
+                } else if e.message.contains("property SECY missing") || e.message.contains("property SECZ missing") {
+                    Some("TIMO needs the shear areas: SECY (shear along local y) and, in 3D, SECZ")
+                } else {
+                    None
+                };
+                let err = a.err(e.message);
+                match hint {
+                    Some(h) => err.note(h),
+                    None => err,
+                }
+            })?);
         }
     }
     Ok(vec![Value::Rigi(Rc::new(rig))])

@@ -53,17 +53,37 @@ fn gauss_field(it: &Interp, a: &mut Args, subtype: &str, f: PointFn) -> Result<V
     let (model, fields, u) = model_args(a)?;
     let u = u.ok_or_else(|| a.missing("CHPOINT (the displacements)"))?;
     let mut out = Mchaml { subtype: subtype.into(), zones: vec![] };
+    let have = u.components();
     for zone in &model.zones {
         let form = formulation(zone);
         let mode = zone_mode(zone)?;
         let mat = material_for(zone, &fields);
         let names = element::node_dofs(form, mode).map_err(fem_err)?;
+        // A force field or a field of another model would otherwise read
+        // as zero displacements and give a silent zero stress.
+        if !names.iter().any(|c| have.iter().any(|h| h == c)) {
+            return Err(a.err(format!(
+                "the CHPOINT has components {} but the model's displacements are {}: give the solution of RESO",
+                have.join(" "),
+                names.join(" ")
+            )));
+        }
         for part in &zone.mesh.parts {
             let mut z =
                 MchamlZone { mesh: Mesh::single(part.clone()), element: zone.element.clone(), ..Default::default() };
             for (e, nodes) in part.elems().enumerate() {
                 let x: Vec<[f64; 3]> = nodes.iter().map(|n| it.nodes.get(*n)).collect();
                 let u = &u;
+                // A missing component reads as 0 (a field given only in UX),
+                // but a node with no displacement at all means the field
+                // belongs to another mesh.
+                if let Some(n) = nodes.iter().find(|n| names.iter().all(|c| u.get(**n, c).is_none())) {
+                    return Err(a.err(format!(
+                        "node {} of element {} has no displacement in the CHPOINT (is it the solution for this model?)",
+                        n + 1,
+                        e + 1
+                    )));
+                }
                 let ue: Vec<f64> =
                     nodes.iter().flat_map(|n| names.iter().map(move |c| u.get(*n, c).unwrap_or(0.0))).collect();
                 let g = f(form, part.ty, mode, &x, &mat, &ue)
@@ -84,7 +104,15 @@ fn sigm(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 fn epsi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    gauss_field(it, a, "DEFORMATIONS", element::strain)
+    gauss_field(it, a, "DEFORMATIONS", element::strain).map_err(|e| {
+        // Strains need no material, except in plane stress where EPZZ comes
+        // from Poisson's ratio: say so rather than just naming NU.
+        if e.message.contains("property NU missing") {
+            e.note("in plane stress (PLAN CONT) EPZZ = -nu/(1-nu) (EPXX + EPYY): give the material, EPSI mo ma u")
+        } else {
+            e
+        }
+    })
 }
 
 /// Component names as the element library wants them (`&'static str`).

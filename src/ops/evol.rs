@@ -1,0 +1,120 @@
+//! EVOLUTIO objects: curves y(x) built by hand (`EVOL 'MANU'`) or read
+//! along an ordered line from a node field (`EVOL 'CHPO'`), and what EXTR
+//! gives back from them (`'ABSC'`, `'ORDO'`, `'LEGE'`, `'COUR'`).
+//! Cast3M mostly draws these; gibi has no graphics, so the colour word is
+//! accepted and dropped.
+
+use super::{Args, OpDef};
+use crate::error::Result;
+use crate::eval::Interp;
+use crate::fem::mesh::Mesh;
+use crate::fem::meshing as mg;
+use crate::value::model::Curve;
+use crate::value::{Chpoint, Evolution, Value};
+use std::rc::Rc;
+
+pub(crate) const OPS: &[OpDef] = &[OpDef {
+    name: "EVOL",
+    signature: "EVOL (colour) 'MANU' ('LEGE' text) (nameX) LISTREEL (nameY) LISTREEL | EVOL (colour) 'CHPO' CHPOINT (comp) LINE",
+    doc: "A curve: given point by point, or a node field along an ordered line against its curvilinear abscissa.",
+    example: "ev = evol 'CHPO' u 'UY' l ;",
+    f: evol,
+}];
+
+/// Cast3M's colour words (only meaningful for drawing).
+const COLOURS: &[&str] = &[
+    "DEFA", "NOIR", "BLEU", "ROUG", "ROSE", "VERT", "TURQ", "JAUN", "BLAN", "AZUR", "ORAN", "VIOL", "OCEA", "CYAN",
+    "OLIV", "GRIS",
+];
+
+fn evol(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    a.keyword(COLOURS);
+    let curve = match a.req_keyword(&["MANU", "CHPO"])? {
+        "MANU" => manu(a)?,
+        _ => along_line(it, a)?,
+    };
+    Ok(vec![Value::Evol(Rc::new(Evolution { curves: vec![curve] }))])
+}
+
+/// `'MANU' ('LEGE' text) (nameX) LX (nameY) LY`.
+fn manu(a: &mut Args) -> Result<Curve> {
+    let mut legend = String::new();
+    if a.keyword(&["LEGE", "TITR"]).is_some() {
+        legend = a.word().ok_or_else(|| a.missing("the legend text"))?;
+    }
+    let x_name = a.word_not_operator().unwrap_or_default();
+    let x = a.req::<Rc<Vec<f64>>>()?;
+    let y_name = a.word_not_operator().unwrap_or_default();
+    let y = a.opt::<Rc<Vec<f64>>>().ok_or_else(|| a.missing("LISTREEL (the ordinates)"))?;
+    if x.len() != y.len() {
+        return Err(a.err(format!("the abscissae have {} values but the ordinates {}", x.len(), y.len())));
+    }
+    if x.is_empty() {
+        return Err(a.err("a curve needs at least one point"));
+    }
+    Ok(Curve { legend, x_name, y_name, x: x.to_vec(), y: y.to_vec() })
+}
+
+/// `'CHPO' CHPO (comp) LINE`: values at the line's nodes in order, against
+/// the distance travelled from its first node.
+fn along_line(it: &Interp, a: &mut Args) -> Result<Curve> {
+    let ch = a.req::<Rc<Chpoint>>()?;
+    let comp = a.word_not_operator();
+    let line = a.req::<Rc<Mesh>>()?;
+    let comp = match comp.or_else(|| a.word_not_operator()) {
+        Some(c) => c,
+        None => {
+            let cs = ch.components();
+            if cs.len() != 1 {
+                return Err(a.err(format!("say which component to follow (the field has {})", cs.join(" "))));
+            }
+            cs[0].clone()
+        }
+    };
+    if !ch.components().contains(&comp) {
+        return Err(a.err(format!("the field has no component {} (it has {})", comp, ch.components().join(" "))));
+    }
+    let nodes = mg::line_chain("EVOL", &line).map_err(|e| a.err(e.message))?;
+    let mut x = Vec::with_capacity(nodes.len());
+    let mut y = Vec::with_capacity(nodes.len());
+    let mut s = 0.0;
+    for (k, n) in nodes.iter().enumerate() {
+        if k > 0 {
+            let (p, q) = (it.nodes.get(nodes[k - 1]), it.nodes.get(*n));
+            s += ((q[0] - p[0]).powi(2) + (q[1] - p[1]).powi(2) + (q[2] - p[2]).powi(2)).sqrt();
+        }
+        let v = ch.get(*n, &comp).ok_or_else(|| {
+            a.err(format!("the field has no {} value at node {} (point {} of the line)", comp, n + 1, k + 1))
+        })?;
+        x.push(s);
+        y.push(v);
+    }
+    Ok(Curve { legend: String::new(), x_name: "ABSC".into(), y_name: comp, x, y })
+}
+
+/// EXTR on an EVOLUTIO: `'ABSC' (n)`, `'ORDO' (n)` (lists of curve n,
+/// 1 by default), `'LEGE' (n)` (its legend), `'COUR' n` (curve n alone).
+/// None when the argument is not an EVOLUTIO.
+pub(crate) fn extr(a: &mut Args) -> Result<Option<Vec<Value>>> {
+    let Some(ev) = a.opt::<Rc<Evolution>>() else {
+        return Ok(None);
+    };
+    let k = a.req_keyword(&["ABSC", "ORDO", "LEGE", "COUR"])?;
+    let n = a.opt::<i64>();
+    if k == "COUR" && n.is_none() {
+        return Err(a.missing("ENTIER (the curve number)"));
+    }
+    let n = n.unwrap_or(1);
+    let count = ev.curves.len();
+    let c = usize::try_from(n)
+        .ok()
+        .and_then(|i| i.checked_sub(1))
+        .and_then(|i| ev.curves.get(i))
+        .ok_or_else(|| a.err(format!("curve {} does not exist (the object has {})", n, count)))?;
+    Ok(Some(vec![match k {
+        "ABSC" => Value::ListReel(Rc::new(c.x.clone())),
+        "ORDO" => Value::ListReel(Rc::new(c.y.clone())),
+        "LEGE" => Value::mot(&c.legend),
+        _ => Value::Evol(Rc::new(Evolution { curves: vec![c.clone()] })),
+    }]))
+}
