@@ -1,19 +1,105 @@
 //! LIST text for the finite-element objects.
 
-use super::Value;
+use super::{fmt_float, Value};
 use crate::eval::Interp;
 
-pub fn describe(_it: &Interp, v: &Value) -> String {
+/// At most this many lines of values per object, so LIST of a big field
+/// stays readable.
+const MAX_LINES: usize = 20;
+
+pub fn describe(it: &Interp, v: &Value) -> String {
     match v {
         Value::Mesh(m) => {
             let parts: Vec<String> = m.parts.iter().map(|p| format!("{} {}", p.len(), p.ty.name())).collect();
             format!("{} element(s) ({}), {} node(s)", m.n_elements(), parts.join(", "), m.node_list().len())
         }
         Value::Chpo(c) => {
-            format!("{} field, components {}, {} value(s)", c.nature.name(), c.components().join(" "), c.len())
+            let comps = c.components();
+            let mut s = format!("{} field, components {}, {} value(s)", c.nature.name(), comps.join(" "), c.len());
+            s.push_str(&format!("\n  node {}", comps.iter().map(|c| format!(" {:>12}", c)).collect::<String>()));
+            for (k, n) in c.nodes.iter().enumerate() {
+                if k == MAX_LINES {
+                    s.push_str(&format!("\n  ... ({} more node(s))", c.nodes.len() - MAX_LINES));
+                    break;
+                }
+                let vals: String = comps
+                    .iter()
+                    .map(|comp| c.get(*n, comp).map_or(format!(" {:>12}", "-"), |x| format!(" {:>12}", fmt_float(x))))
+                    .collect();
+                s.push_str(&format!("\n  {:>4}{}", n + 1, vals));
+            }
+            s
         }
         Value::Rigi(r) => rigidity(r),
-        other => other.type_name(),
+        Value::Model(m) => {
+            let mut s = format!("{} zone(s)", m.zones.len());
+            for (i, z) in m.zones.iter().enumerate() {
+                s.push_str(&format!(
+                    "\n  zone {}: {} {} {}, {} element(s), mode {}",
+                    i + 1,
+                    z.formulation,
+                    z.behaviour.join(" "),
+                    z.element,
+                    z.mesh.n_elements(),
+                    z.mode
+                ));
+            }
+            s
+        }
+        Value::Mchaml(m) => {
+            let mut s = format!("{}, {} zone(s)", m.subtype, m.zones.len());
+            for (i, z) in m.zones.iter().enumerate() {
+                s.push_str(&format!("\n  zone {} ({}, {} element(s))", i + 1, z.element, z.mesh.n_elements()));
+                for (k, v) in &z.constants {
+                    s.push_str(&format!(" {} {}", k, fmt_float(*v)));
+                }
+                for (k, v) in &z.vectors {
+                    s.push_str(&format!(" {} ({} {} {})", k, fmt_float(v[0]), fmt_float(v[1]), fmt_float(v[2])));
+                }
+                let mut lines = 0;
+                if !z.comps.is_empty() {
+                    s.push_str(&format!(
+                        "\n    elem point{}",
+                        z.comps.iter().map(|c| format!(" {:>12}", c)).collect::<String>()
+                    ));
+                }
+                'all: for (e, pts) in z.values.iter().enumerate() {
+                    for (p, vals) in pts.iter().enumerate() {
+                        if lines == MAX_LINES {
+                            s.push_str("\n    ...");
+                            break 'all;
+                        }
+                        lines += 1;
+                        let vals: String = vals.iter().map(|x| format!(" {:>12}", fmt_float(*x))).collect();
+                        s.push_str(&format!("\n    {:>4} {:>5}{}", e + 1, p + 1, vals));
+                    }
+                }
+            }
+            s
+        }
+        Value::Evol(e) => {
+            let mut s = format!("{} curve(s)", e.curves.len());
+            for (i, c) in e.curves.iter().enumerate() {
+                s.push_str(&format!("\n  curve {}", i + 1));
+                if !c.legend.is_empty() {
+                    s.push_str(&format!(" '{}'", c.legend));
+                }
+                let or = |n: &str, d: &'static str| if n.is_empty() { d.to_string() } else { n.to_string() };
+                s.push_str(&format!(": {} point(s), {} against {}", c.x.len(), or(&c.y_name, "Y"), or(&c.x_name, "X")));
+                for (k, (x, y)) in c.x.iter().zip(&c.y).enumerate() {
+                    if k == MAX_LINES {
+                        s.push_str("\n    ...");
+                        break;
+                    }
+                    s.push_str(&format!("\n    {:>12} {:>12}", fmt_float(*x), fmt_float(*y)));
+                }
+            }
+            s
+        }
+        other => {
+            let _ = it;
+            other.type_name()
+        }
     }
 }
 
