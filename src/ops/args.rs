@@ -330,3 +330,31 @@ impl Args<'_> {
         self.st.right.clear();
     }
 }
+
+impl Args<'_> {
+    /// Like [`opt`](Self::opt), but on the right it also looks past words
+    /// (never past an operator or a symbol): `EXCO 'UX' u` reads the field
+    /// after the component, as the notices write it.
+    pub fn find<T: FromArg>(&mut self) -> Option<T> {
+        if let Some(t) = self.opt::<T>() {
+            return Some(t);
+        }
+        for i in 0..self.st.right.len() {
+            let v = match &self.st.right[i].kind {
+                TokKind::Val(v) if !matches!(v, Value::Proc(_)) => v.clone(),
+                TokKind::Quoted(_) => continue,
+                TokKind::Word(w) if self.registry.find(w).is_none() => continue,
+                _ => return None,
+            };
+            let t = T::from_value(&v)?;
+            self.st.right.remove(i);
+            return Some(t);
+        }
+        None
+    }
+
+    /// A required argument found by [`find`](Self::find).
+    pub fn req_find<T: FromArg>(&mut self) -> Result<T> {
+        self.find::<T>().ok_or_else(|| self.missing(T::EXPECT))
+    }
+}

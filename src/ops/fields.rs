@@ -154,10 +154,10 @@ fn exco_mchaml(a: &mut Args, m: &Mchaml) -> Result<Vec<Value>> {
 }
 
 fn exco(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    if let Some(m) = a.opt::<Rc<Mchaml>>() {
+    if let Some(m) = a.find::<Rc<Mchaml>>() {
         return exco_mchaml(a, &m);
     }
-    let ch = a.req::<Rc<Chpoint>>()?;
+    let ch = a.req_find::<Rc<Chpoint>>()?;
     let comps = comp_list(a).ok_or_else(|| a.missing("a component"))?;
     let noid = a.keyword(&["NOID"]).is_some();
     let new = comp_list(a);
@@ -184,7 +184,7 @@ fn exco(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 fn nomc(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let ch = a.req::<Rc<Chpoint>>()?;
+    let ch = a.req_find::<Rc<Chpoint>>()?;
     let first = comp_list(a).ok_or_else(|| a.missing("new component names"))?;
     let (old, new) = match comp_list(a) {
         Some(second) => (first, second),
@@ -202,7 +202,7 @@ fn nomc(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 fn enle(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let ch = a.req::<Rc<Chpoint>>()?;
+    let ch = a.req_find::<Rc<Chpoint>>()?;
     let comps = comp_list(a).ok_or_else(|| a.missing("components to remove"))?;
     let out = Chpoint::from_entries(ch.nature, ch.entries().filter(|(_, c, _)| !comps.iter().any(|x| x == c)));
     Ok(vec![Value::Chpo(Rc::new(out))])
@@ -464,12 +464,23 @@ pub(crate) fn extremum(a: &mut Args, max: bool, use_abs: bool) -> Result<Option<
             .map(|(_, _, v)| if use_abs { v.abs() } else { v })
             .collect()
     } else if let Some(m) = a.opt::<Rc<Mchaml>>() {
+        let filter = match a.keyword(&["AVEC", "SANS"]) {
+            Some(k) => Some((k == "AVEC", comp_list(a).ok_or_else(|| a.missing("components"))?)),
+            None => None,
+        };
         let use_abs = use_abs || a.keyword(&["ABS"]).is_some();
-        m.zones
-            .iter()
-            .flat_map(|z| z.values.iter().flatten().flatten())
-            .map(|v| if use_abs { v.abs() } else { *v })
-            .collect()
+        let mut out = Vec::new();
+        for z in &m.zones {
+            let keep: Vec<bool> = z
+                .comps
+                .iter()
+                .map(|c| filter.as_ref().is_none_or(|(avec, l)| l.iter().any(|x| x == c) == *avec))
+                .collect();
+            for p in z.values.iter().flatten() {
+                out.extend(p.iter().zip(&keep).filter(|(_, k)| **k).map(|(v, _)| if use_abs { v.abs() } else { *v }));
+            }
+        }
+        out
     } else {
         return Ok(None);
     };
@@ -479,6 +490,10 @@ pub(crate) fn extremum(a: &mut Args, max: bool, use_abs: bool) -> Result<Option<
 
 /// EXTR on a field, a rigidity, an element field or a model.
 pub(crate) fn extr(it: &mut Interp, a: &mut Args) -> Result<Option<Vec<Value>>> {
+    // `EXTR 'UX' u p` as well as `EXTR u 'UX' p`.
+    if let Some(ch) = a.find::<Rc<Chpoint>>() {
+        return extr_chpo(it, a, &ch).map(Some);
+    }
     if let Some(h) = a.peek_right().filter(|v| matches!(v, Value::Host(_))) {
         a.right_any();
         return super::superele::extr(a, &h);
