@@ -10,6 +10,7 @@ use crate::value::{Chpoint, Nature, Value};
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
+    OpDef { name: "NOEU", signature: "NOEUD n", doc: "The point (node) number n, as numbered by gibi (LIST shows node numbers).", example: "p = noeud 5 ;", f: noeu },
     OpDef { name: "COOR", signature: "COOR POINT | COOR n POINT | COOR n MAILLAGE", doc: "Coordinates of a point (one result per dimension), one of them, or a coordinate field on a mesh.", example: "x y = coor p ;", f: coor },
     OpDef { name: "NBNO", signature: "NBNO MAILLAGE", doc: "Number of nodes of a mesh.", example: "n = nbno l ;", f: nbno },
     OpDef { name: "NBEL", signature: "NBEL MAILLAGE", doc: "Number of elements of a mesh.", example: "n = nbel s ;", f: nbel },
@@ -349,4 +350,12 @@ fn inve(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 
 fn surf(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     Err(a.err("free meshing (SURF) is out of gibi's scope: mesh with DALL, TRAN or ROTA, or read a Gmsh mesh"))
+}
+
+fn noeu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let n = a.req::<i64>()?;
+    if n < 1 || n as usize > it.nodes.len() {
+        return Err(a.err(format!("there is no node {} (nodes are numbered 1 to {})", n, it.nodes.len())));
+    }
+    Ok(vec![Value::Point(n as usize - 1)])
 }
