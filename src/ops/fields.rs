@@ -236,24 +236,7 @@ fn defo(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let scale = a.opt_num().unwrap_or(1.0);
     // Colour words (ROUG, BLEU, …) only matter to plots.
     a.word_not_operator();
-    let axis = it.opts.mode.starts_with("AXIS");
-    let comps: &[&str] = if axis { &["UR", "UZ"] } else { &["UX", "UY", "UZ"] };
-    let mut map = HashMap::new();
-    for n in geo.node_list() {
-        let mut x = it.nodes.get(n);
-        for (k, c) in comps.iter().enumerate().take(it.opts.dime.max(1)) {
-            x[k] += scale * u.get(n, c).unwrap_or(0.0);
-        }
-        let d = it.nodes.density[n];
-        map.insert(n, it.nodes.push(x, d));
-    }
-    let mut out = geo.clone();
-    for p in out.parts.iter_mut() {
-        for n in p.conn.iter_mut() {
-            *n = map[n];
-        }
-    }
-    Ok(vec![Value::Mesh(Rc::new(out))])
+    Ok(vec![Value::Mesh(Rc::new(super::mesh::moved_by_field(it, &geo, &u, scale)))])
 }
 
 fn resu(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {

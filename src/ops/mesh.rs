@@ -312,16 +312,14 @@ fn translate(it: &mut Interp, a: &mut Args, sign: f64) -> Result<Vec<Value>> {
 }
 
 /// A copy of the mesh with nodes moved by a displacement field (deformed shape).
-fn moved_by_field(it: &mut Interp, m: &Mesh, u: &Chpoint, sign: f64) -> Mesh {
-    let names = [["UX", "UR"], ["UY", "UZ"], ["UZ", "UZ"]];
+pub(crate) fn moved_by_field(it: &mut Interp, m: &Mesh, u: &Chpoint, scale: f64) -> Mesh {
     let axis = it.opts.mode.starts_with("AXIS") || it.opts.mode.starts_with("FOUR");
+    let comps: [&str; 3] = if axis { ["UR", "UZ", "UT"] } else { ["UX", "UY", "UZ"] };
     let mut map = std::collections::HashMap::new();
     for n in m.node_list() {
         let mut x = it.nodes.get(n);
-        for (k, xk) in x.iter_mut().enumerate().take(it.opts.dime.max(1)) {
-            let comp = if axis { names[k][1] } else { names[k][0] };
-            let comp = if axis && k == 0 { "UR" } else { comp };
-            *xk += sign * u.get(n, comp).unwrap_or(0.0);
+        for (xk, c) in x.iter_mut().zip(comps).take(it.opts.dime.max(1)) {
+            *xk += scale * u.get(n, c).unwrap_or(0.0);
         }
         let d = it.nodes.density[n];
         map.insert(n, it.nodes.push(x, d));
