@@ -18,18 +18,23 @@
 pub mod ancien;
 pub mod condense;
 pub mod condensed_op;
+mod creux;
 pub mod dense_ldlt;
 pub mod direct;
 pub mod error;
 pub mod groups;
+mod iter;
 pub mod lagrange;
 pub mod linear;
 pub mod ordering;
 pub mod problem;
 pub mod status;
+mod uni_ancien;
 #[doc(hidden)]
 pub mod unilateral;
 
+#[cfg(test)]
+mod methods_tests;
 #[cfg(test)]
 mod status_loop_tests;
 #[cfg(test)]
