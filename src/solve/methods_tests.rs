@@ -35,7 +35,8 @@ fn run(p: &Problem, l: &Load, method: Method) -> Result<Solution, SolveError> {
 }
 
 /// Same answer (or the same kind of error) as CONDENSE.
-pub(super) fn same_as_condense(name: &str, p: &Problem, l: &Load, method: Method, tol: f64) {
+/// Returns whether the case was solved (not an error).
+pub(super) fn same_as_condense(name: &str, p: &Problem, l: &Load, method: Method, tol: f64) -> bool {
     let want = run(p, l, Method::Condense);
     let got = run(p, l, method);
     match (&want, &got) {
@@ -48,9 +49,11 @@ pub(super) fn same_as_condense(name: &str, p: &Problem, l: &Load, method: Method
                 assert!((x - y).abs() <= tol * scale, "{name} {method:?}: λ[{k}] {y} vs {x}");
             }
             assert_eq!(a.active, b.active, "{name} {method:?}: statuses");
+            true
         }
         (Err(a), Err(b)) => {
             assert_eq!(std::mem::discriminant(a), std::mem::discriminant(b), "{name} {method:?}: {b:?} vs {a:?}");
+            false
         }
         _ => panic!("{name} {method:?}: {got:?} vs CONDENSE {want:?}"),
     }
@@ -129,7 +132,7 @@ pub(super) fn cases() -> Vec<(String, Problem, Load)> {
 #[test]
 fn ancien_matches_condense_on_the_cases() {
     for (name, p, l) in cases() {
-        same_as_condense(&name, &p, &l, Method::Ancien, 1e-9);
+        let _ = same_as_condense(&name, &p, &l, Method::Ancien, 1e-9);
     }
 }
 
@@ -139,4 +142,82 @@ fn ancien_refuses_bilateral_rows_on_contact_unknowns() {
     p.conditions.push(Condition { terms: vec![(1, 1.0), (2, -1.0)], kind: Kind::Equal });
     l.d.push(0.0);
     assert!(matches!(run(&p, &l, Method::Ancien), Err(SolveError::Other(_))));
+}
+
+#[test]
+fn creux_matches_condense_on_the_cases() {
+    for (name, p, l) in cases() {
+        let _ = same_as_condense(&name, &p, &l, Method::Creux, 1e-9);
+    }
+}
+
+/// A random sparse problem: a banded K (sometimes with one rigid mode),
+/// single-unknown and multi-unknown unilateral rows, a few bilateral rows.
+pub(super) fn random_problem(rng: &mut Rng) -> (Problem, Load) {
+    let n = 2 + rng.below(12);
+    let mut entries = Vec::new();
+    let free = rng.below(3) == 0;
+    for i in 0..n {
+        // Springs between neighbours and to the ground (unless free).
+        let k = 1.0 + 2.0 * rng.sym().abs();
+        if i + 1 < n {
+            entries.extend([(i, i, k), (i + 1, i + 1, k), (i, i + 1, -k), (i + 1, i, -k)]);
+        }
+        if i + 2 < n && rng.below(2) == 0 {
+            let k2 = 0.3 * rng.sym().abs();
+            entries.extend([(i, i, k2), (i + 2, i + 2, k2), (i, i + 2, -k2), (i + 2, i, -k2)]);
+        }
+        if !free {
+            entries.push((i, i, 0.2 + rng.sym().abs()));
+        }
+    }
+    let mut conditions = Vec::new();
+    let mut d = Vec::new();
+    let m = 1 + rng.below(n);
+    let mut used = vec![false; n];
+    for _ in 0..m {
+        let j = rng.below(n);
+        let kind = if rng.below(2) == 0 { Kind::Mini } else { Kind::Maxi };
+        let terms = if rng.below(3) == 0 {
+            let l = (j + 1 + rng.below(n - 1)) % n;
+            used[l] = true;
+            vec![(j, 1.0), (l, -0.5 - rng.sym().abs())]
+        } else {
+            vec![(j, if rng.below(2) == 0 { 1.0 } else { -2.0 })]
+        };
+        used[j] = true;
+        conditions.push(Condition { terms, kind });
+        d.push(0.3 * rng.sym());
+    }
+    if rng.below(3) == 0 {
+        if let Some(j) = (0..n).find(|&j| !used[j]) {
+            conditions.push(Condition { terms: vec![(j, 1.0)], kind: Kind::Equal });
+            d.push(0.1 * rng.sym());
+        }
+    }
+    let f = (0..n).map(|_| 2.0 * rng.sym()).collect();
+    (Problem { k: Matrix { n, entries, symmetric: true }, conditions }, Load { f, d })
+}
+
+#[test]
+fn creux_matches_condense_on_random_problems() {
+    let mut rng = Rng(0x5EED_C4E7);
+    let mut solved = 0;
+    for case in 0..400 {
+        let (p, l) = random_problem(&mut rng);
+        solved += usize::from(same_as_condense(&format!("random {case}"), &p, &l, Method::Creux, 1e-8));
+    }
+    // Both outcomes must be exercised.
+    assert!((200..400).contains(&solved), "{solved} of 400 solved");
+}
+
+#[test]
+fn ancien_matches_condense_on_random_problems() {
+    let mut rng = Rng(0xA7C1_E700);
+    let mut solved = 0;
+    for case in 0..400 {
+        let (p, l) = random_problem(&mut rng);
+        solved += usize::from(same_as_condense(&format!("random {case}"), &p, &l, Method::Ancien, 1e-8));
+    }
+    assert!((200..400).contains(&solved), "{solved} of 400 solved");
 }

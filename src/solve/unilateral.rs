@@ -247,7 +247,7 @@ fn to_global(e: SolveError, uni: &[usize]) -> SolveError {
 
 /// Fingerprint of the numbers of `p` (K values and condition coefficients),
 /// to reuse the numeric factor when nothing changed.
-fn values_hash(p: &Problem) -> u64 {
+pub(super) fn values_hash(p: &Problem) -> u64 {
     let mut h: u64 = 0x9e37_79b9_7f4a_7c15;
     let mut mix = |x: f64| {
         h ^= x.to_bits();
