@@ -221,3 +221,29 @@ fn ancien_matches_condense_on_random_problems() {
     }
     assert!((200..400).contains(&solved), "{solved} of 400 solved");
 }
+
+#[test]
+fn iter_matches_condense_on_the_cases() {
+    for (name, p, l) in cases() {
+        let _ = same_as_condense(&name, &p, &l, Method::Iter, 1e-8);
+    }
+}
+
+#[test]
+fn iter_matches_condense_on_random_problems() {
+    let mut rng = Rng(0x17E2_0001);
+    let mut solved = 0;
+    for case in 0..300 {
+        let (p, l) = random_problem(&mut rng);
+        solved += usize::from(same_as_condense(&format!("random {case}"), &p, &l, Method::Iter, 1e-8));
+    }
+    assert!((150..300).contains(&solved), "{solved} of 300 solved");
+}
+
+#[test]
+fn iter_refuses_bilateral_relations() {
+    let (mut p, mut l) = sparse(&chain(1.0));
+    p.conditions.push(Condition { terms: vec![(1, 1.0), (2, -1.0)], kind: Kind::Equal });
+    l.d.push(0.0);
+    assert!(matches!(run(&p, &l, Method::Iter), Err(SolveError::Other(_))));
+}
