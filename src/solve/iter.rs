@@ -174,10 +174,8 @@ pub(super) fn solve(
         }
     }
     let k_full = Csr::from_triplets(n, &kt);
-    let mut row_max = vec![0.0_f64; n];
-    for r in 0..n {
-        row_max[r] = (k_full.ptr[r]..k_full.ptr[r + 1]).fold(0.0, |a, k| a.max(k_full.val[k].abs()));
-    }
+    let row_max: Vec<f64> =
+        (0..n).map(|r| (k_full.ptr[r]..k_full.ptr[r + 1]).fold(0.0, |a, k| a.max(k_full.val[k].abs()))).collect();
     let uni_p = Problem { k: Default::default(), conditions: uni.iter().map(|&i| p.conditions[i].clone()).collect() };
     let sc = lagrange::scaling(&uni_p, &row_max);
     // Unilateral rows on the free unknowns; imposed unknowns shift d.
@@ -262,7 +260,6 @@ pub(super) fn solve(
 
     // §3.3: u = H⁻¹(F + CᵀWd − 2CᵀΣx).
     let t2 = std::time::Instant::now();
-    let mut rhs = rhs;
     for (q, r) in rows.iter().enumerate() {
         for &(j, v) in r {
             rhs[local[j]] -= 2.0 * v * sc.sigma[q] * res.x[q];
