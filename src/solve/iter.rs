@@ -175,7 +175,7 @@ pub(super) fn solve(
     }
     let k_full = Csr::from_triplets(n, &kt);
     let row_max: Vec<f64> =
-        (0..n).map(|r| (k_full.ptr[r]..k_full.ptr[r + 1]).fold(0.0, |a, k| a.max(k_full.val[k].abs()))).collect();
+        (0..n).map(|r| (k_full.ptr[r]..k_full.ptr[r + 1]).fold(0.0_f64, |a, k| a.max(k_full.val[k].abs()))).collect();
     let uni_p = Problem { k: Default::default(), conditions: uni.iter().map(|&i| p.conditions[i].clone()).collect() };
     let sc = lagrange::scaling(&uni_p, &row_max);
     // Unilateral rows on the free unknowns; imposed unknowns shift d.
