@@ -22,7 +22,7 @@
 //! substitutions through that block only.
 
 use faer::linalg::matmul::triangular::{matmul as tri_matmul, BlockStructure};
-use faer::{Accum, Mat, Par};
+use faer::{Accum, Mat};
 
 use super::direct::{check_structure, diagnose};
 use super::error::SolveError;
@@ -47,6 +47,14 @@ struct Interrupted {
 impl Interrupted {
     /// `sys`, if given, must have been built with the tail `fwd[cut..]`.
     fn new(p: &Problem, fwd: Vec<usize>, cut: usize, sys: Option<Doubled>) -> Result<Self, SolveError> {
+        Self::try_new(p, fwd, cut, sys)?
+            .ok_or_else(|| SolveError::Other("the condensed block does not form one trailing supernode".into()))
+    }
+
+    /// [`Interrupted::new`], or `None` when the tail is not one trailing
+    /// supernode (a pattern without the explicit tail pairs whose tail the
+    /// elimination does not connect).
+    fn try_new(p: &Problem, fwd: Vec<usize>, cut: usize, sys: Option<Doubled>) -> Result<Option<Self>, SolveError> {
         check_structure(p)?;
         if !p.k.symmetric {
             return Err(SolveError::Other("condensation needs a symmetric stiffness".into()));
@@ -60,11 +68,12 @@ impl Interrupted {
         let sup = factor.supernodal();
         let n_sup = sup.n_supernodes();
         if tail.is_empty() || n_sup == 0 || sup.supernode_begin()[n_sup - 1] > cut {
-            return Err(SolveError::Other("the condensed block does not form one trailing supernode".into()));
+            return Ok(None);
         }
         let mut it = Interrupted { sys, factor, cut, tail, schur: Mat::zeros(0, 0) };
-        it.numeric(p)?;
-        Ok(it)
+        // The system was just built: it already holds the values of `p`.
+        it.numeric(p, false)?;
+        Ok(Some(it))
     }
 
     /// Shift of each tail unknown: −4α on a λ2 of a condensed condition,
@@ -87,8 +96,10 @@ impl Interrupted {
     }
 
     /// Numeric factorisation of the values of `p` and extraction of S.
-    fn numeric(&mut self, p: &Problem) -> Result<(), SolveError> {
-        self.sys.fill(p, 0.0)?;
+    fn numeric(&mut self, p: &Problem, refill: bool) -> Result<(), SolveError> {
+        if refill {
+            self.sys.fill(p, 0.0)?;
+        }
         let shift = self.shifts();
         for (&t, &s) in self.tail.iter().zip(&shift) {
             self.sys.add_diag(t, s);
@@ -123,7 +134,8 @@ impl Interrupted {
             l.transpose(),
             BlockStructure::UnitTriangularUpper,
             1.0,
-            Par::Seq,
+            // m³/3 flops at m ~ 10³: worth the threads.
+            faer::get_global_parallelism(),
         );
         for j in 0..mt {
             s[(j, j)] -= shift[j];
@@ -193,11 +205,16 @@ impl Condenser {
         super::lagrange::validate(p)?;
         let (n, m) = (p.k.n, p.conditions.len());
         let tail: Vec<usize> = uni.iter().map(|&i| n + m + i).collect();
-        let sys = Doubled::new(p, &tail)?;
+        // Without the m² explicit tail pairs first: one mesh connects the
+        // tail anyway; disconnected contact zones need them.
+        let sys = Doubled::with_tail(p, &tail, false)?;
         let primal = ordering::primal_amd(p, &[], Some((&sys.col_ptr, &sys.row_idx)))?;
         let fwd = ordering::doubled_order(p, &primal, &uni);
         let cut = fwd.len() - uni.len();
-        let core = Interrupted::new(p, fwd, cut, Some(sys))?;
+        let core = match Interrupted::try_new(p, fwd.clone(), cut, Some(sys))? {
+            Some(core) => core,
+            None => Interrupted::new(p, fwd, cut, Some(Doubled::new(p, &tail)?))?,
+        };
         Ok(Condenser {
             core,
             sense: uni.iter().map(|&i| p.conditions[i].kind.sense()).collect(),
@@ -217,7 +234,7 @@ impl Condenser {
 
     /// New values on the same structure: numeric factorisation only.
     pub fn refactor(&mut self, p: &Problem) -> Result<(), SolveError> {
-        self.core.numeric(p)?;
+        self.core.numeric(p, true)?;
         self.rows = self.uni.iter().map(|&i| p.conditions[i].terms.clone()).collect();
         Ok(())
     }

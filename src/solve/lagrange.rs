@@ -26,7 +26,7 @@ use super::problem::Problem;
 
 /// Marker for a source term that is not stored (lower-triangle K entry of
 /// a symmetric matrix).
-const NONE: usize = usize::MAX;
+const NONE: u32 = u32::MAX;
 
 /// Per-condition scaling of §2.2 (Cast3M's `assem2`): σ_i on the coupling
 /// terms, α_i on the multiplier block.
@@ -107,8 +107,9 @@ pub struct Doubled {
     /// Largest |entry| of each row of the whole doubled matrix (both
     /// triangles), the reference for the tiny-pivot test.
     pub row_scale: Vec<f64>,
-    /// Slot of every source term, in the order of [`Doubled::fill`].
-    pos: Vec<usize>,
+    /// Slot of every source term, in the order of [`Doubled::fill`]
+    /// (32-bit: the pattern build is memory-bound).
+    pos: Vec<u32>,
     upper: bool,
     n_terms: usize,
     structure: u64,
@@ -123,6 +124,14 @@ impl Doubled {
     /// (natural numbering) that get explicit (zero) couplings with each
     /// other, so that they form one dense trailing supernode (condensation).
     pub fn new(p: &Problem, dense_tail: &[usize]) -> Result<Self, SolveError> {
+        Self::with_tail(p, dense_tail, true)
+    }
+
+    /// [`Doubled::new`]; with `pairs == false` the tail gets only the
+    /// couplings to its first unknown, not the m² explicit pairs: enough
+    /// for one trailing supernode whenever the eliminated part connects the
+    /// tail (one mesh), and much cheaper to build and analyse at m ~ 10³.
+    pub fn with_tail(p: &Problem, dense_tail: &[usize], pairs: bool) -> Result<Self, SolveError> {
         validate(p)?;
         let n = p.k.n;
         let m = p.conditions.len();
@@ -131,15 +140,20 @@ impl Doubled {
         let upper = upper_mode(p);
         let n_terms: usize = p.conditions.iter().map(|c| c.terms.len()).sum();
 
+        let n_src = p.k.entries.len() + 4 * n_terms + 4 * m + 2 * dense_tail.len();
+        if dim >= NONE as usize || n_src + dense_tail.len().pow(2) >= NONE as usize {
+            return Err(SolveError::Other("system too large for 32-bit pattern indices".into()));
+        }
         // Source terms as (row, col), in the fixed order fill() follows.
-        let mut src: Vec<(usize, usize)> = Vec::new();
-        let push = |r: usize, c: usize, src: &mut Vec<(usize, usize)>| {
+        let mut src: Vec<(u32, u32)> = Vec::with_capacity(n_src);
+        let push = |r: usize, c: usize, src: &mut Vec<(u32, u32)>| {
             if symmetric && r > c {
-                src.push((c, r));
+                src.push((c as u32, r as u32));
             } else {
-                src.push((r, c));
+                src.push((r as u32, c as u32));
             }
         };
+        let push2 = |r: usize, c: usize, src: &mut Vec<(u32, u32)>| src.push((r as u32, c as u32));
         for &(i, j, _) in &p.k.entries {
             let keep = !symmetric || if upper { i <= j } else { i >= j };
             if keep {
@@ -153,8 +167,8 @@ impl Doubled {
                 push(n + ci, j, &mut src);
                 push(n + m + ci, j, &mut src);
                 if !symmetric {
-                    src.push((j, n + ci));
-                    src.push((j, n + m + ci));
+                    push2(j, n + ci, &mut src);
+                    push2(j, n + m + ci, &mut src);
                 }
             }
         }
@@ -163,7 +177,7 @@ impl Doubled {
             push(n + m + ci, n + m + ci, &mut src);
             push(n + ci, n + m + ci, &mut src);
             if !symmetric {
-                src.push((n + m + ci, n + ci));
+                push2(n + m + ci, n + ci, &mut src);
             }
         }
         let n_fill = src.len();
@@ -180,22 +194,32 @@ impl Doubled {
             }
             let mut extra = vec![false; dim];
             for &(r, c) in &src[..n_fill] {
-                if r != NONE && in_tail[r] != in_tail[c] {
+                let (r, c) = (r as usize, c as usize);
+                if r != NONE as usize && in_tail[r] != in_tail[c] {
                     extra[if in_tail[r] { c } else { r }] = true;
                 }
             }
             for (k, _) in extra.iter().enumerate().filter(|e| *e.1) {
                 push(k, head, &mut src);
                 if !symmetric {
-                    src.push((head, k));
+                    push2(head, k, &mut src);
+                }
+            }
+            // The tail itself as a chain, so that it stays connected.
+            for w in dense_tail.windows(2) {
+                push(w[1], w[0], &mut src);
+                if !symmetric {
+                    push2(w[0], w[1], &mut src);
                 }
             }
         }
-        for (a, &ca) in dense_tail.iter().enumerate() {
-            for &cb in &dense_tail[..a] {
-                push(ca, cb, &mut src);
-                if !symmetric {
-                    src.push((cb, ca));
+        if pairs {
+            for (a, &ca) in dense_tail.iter().enumerate() {
+                for &cb in &dense_tail[..a] {
+                    push(ca, cb, &mut src);
+                    if !symmetric {
+                        push2(cb, ca, &mut src);
+                    }
                 }
             }
         }
@@ -252,7 +276,7 @@ impl Doubled {
         for &(_, _, v) in &p.k.entries {
             let slot = self.pos[s];
             if slot != NONE {
-                self.values[slot] += v;
+                self.values[slot as usize] += v;
             }
             s += 1;
         }
@@ -281,19 +305,19 @@ impl Doubled {
             let sg = self.scaling.sigma[ci];
             for &(_, v) in &c.terms {
                 for _ in 0..per_term {
-                    self.values[self.pos[s]] += sg * v;
+                    self.values[self.pos[s] as usize] += sg * v;
                     s += 1;
                 }
             }
         }
         for ci in 0..m {
             let a = self.scaling.alpha[ci];
-            self.values[self.pos[s]] += -a;
-            self.values[self.pos[s + 1]] += -a;
-            self.values[self.pos[s + 2]] += a;
+            self.values[self.pos[s] as usize] += -a;
+            self.values[self.pos[s + 1] as usize] += -a;
+            self.values[self.pos[s + 2] as usize] += a;
             s += 3;
             if !self.symmetric {
-                self.values[self.pos[s]] += a;
+                self.values[self.pos[s] as usize] += a;
                 s += 1;
             }
         }
@@ -358,39 +382,42 @@ impl Doubled {
 /// O(nnz) plus tiny per-column sorts: a global sort would cost a sizeable
 /// fraction of the factorisation at 10⁶ entries.
 /// CSC `(col_ptr, row_idx)` plus the slot of each source pair.
-type Compressed = (Vec<usize>, Vec<usize>, Vec<usize>);
+type Compressed = (Vec<usize>, Vec<usize>, Vec<u32>);
 
-fn compress(dim: usize, src: &[(usize, usize)]) -> Result<Compressed, SolveError> {
+fn compress(dim: usize, src: &[(u32, u32)]) -> Result<Compressed, SolveError> {
     let mut count = vec![0usize; dim + 1];
     for &(r, c) in src {
         if r != NONE {
-            count[c + 1] += 1;
+            count[c as usize + 1] += 1;
         }
     }
     for c in 0..dim {
         count[c + 1] += count[c];
     }
     let mut next = count.clone();
-    let mut bucket = vec![(0usize, 0usize); count[dim]];
+    // (row << 32 | source index): one integer sort key per column.
+    let mut bucket = vec![0u64; count[dim]];
     for (s, &(r, c)) in src.iter().enumerate() {
         if r != NONE {
-            bucket[next[c]] = (r, s);
-            next[c] += 1;
+            bucket[next[c as usize]] = (u64::from(r) << 32) | s as u64;
+            next[c as usize] += 1;
         }
     }
+    drop(next);
     let mut pos = vec![NONE; src.len()];
     let mut col_ptr = vec![0usize; dim + 1];
     let mut row_idx = Vec::with_capacity(bucket.len());
     for c in 0..dim {
         let b = &mut bucket[count[c]..count[c + 1]];
         b.sort_unstable();
-        let mut last = NONE;
-        for &(r, s) in b.iter() {
+        let mut last = u64::MAX;
+        for &key in b.iter() {
+            let r = key >> 32;
             if r != last {
-                row_idx.push(r);
+                row_idx.push(r as usize);
                 last = r;
             }
-            pos[s] = row_idx.len() - 1;
+            pos[(key & 0xffff_ffff) as usize] = (row_idx.len() - 1) as u32;
         }
         col_ptr[c + 1] = row_idx.len();
     }

@@ -247,3 +247,39 @@ fn iter_refuses_bilateral_relations() {
     l.d.push(0.0);
     assert!(matches!(run(&p, &l, Method::Iter), Err(SolveError::Other(_))));
 }
+
+/// Two bodies that share nothing: the tail of the interrupted
+/// factorisation is not connected by the elimination, so CONDENSE needs
+/// the explicit tail pairs (its fallback). Checked against the dense
+/// reference, and every method against CONDENSE.
+#[test]
+fn disconnected_contact_zones() {
+    let k = Mat::<f64>::from_fn(6, 6, |i, j| {
+        let (bi, bj) = (i / 3, j / 3);
+        if bi != bj {
+            0.0
+        } else if i == j {
+            2.5
+        } else if i.abs_diff(j) == 1 {
+            -1.0
+        } else {
+            0.0
+        }
+    });
+    let d = Dense::new(k, vec![1.0, -0.5, 2.0, 1.0, 0.3, -2.0])
+        .cond(&[(2, 1.0)], MAXI, 0.05)
+        .cond(&[(0, 1.0), (1, -1.0)], MAXI, 0.1)
+        .cond(&[(3, 1.0)], MINI, -0.2)
+        .cond(&[(5, 1.0)], MINI, -0.1);
+    let want = solve(&d, &Default::default()).unwrap();
+    let (p, l) = sparse(&d);
+    let got = run(&p, &l, Method::Condense).unwrap();
+    for (a, b) in got.u.iter().zip(&want.u) {
+        assert!((a - b).abs() < 1e-10, "{:?} vs {:?}", got.u, want.u);
+    }
+    assert_eq!(got.active, want.active);
+    assert!(want.active.iter().any(|a| *a) && want.active.iter().any(|a| !*a), "{want:?}");
+    for m in [Method::Ancien, Method::Creux, Method::Iter] {
+        let _ = same_as_condense("disconnected", &p, &l, m, 1e-9);
+    }
+}

@@ -1,0 +1,64 @@
+//! Phase timings of the condensation (development aid):
+//! `cargo bench --bench profile`.
+
+mod common;
+
+use std::time::Instant;
+
+use gibi::solve::lagrange::Doubled;
+use gibi::solve::linear::SymFactor;
+use gibi::solve::{ordering, Condition, Kind, Problem};
+
+fn main() {
+    let nx = common::grid();
+    let k = common::laplacian(nx);
+    let n = k.n;
+    let m_want: usize = std::env::var("GIBI_BENCH_M").ok().and_then(|s| s.parse().ok()).unwrap_or(50);
+    let nodes: Vec<usize> =
+        if m_want <= nx { (0..m_want).map(|q| q * nx / m_want).collect() } else { common::perimeter(nx) };
+    let conditions: Vec<Condition> =
+        nodes.iter().map(|&j| Condition { terms: vec![(j, 1.0)], kind: Kind::Mini }).collect();
+    let m = conditions.len();
+    let p = Problem { k, conditions };
+    let f = common::reference_f(&p.k, &nodes);
+    println!("F {f:.3}");
+    let uni: Vec<usize> = (0..m).collect();
+    let t = Instant::now();
+    let tail: Vec<usize> = uni.iter().map(|&i| n + m + i).collect();
+    let mut sys = Doubled::new(&p, &tail).unwrap();
+    println!("doubled {:.3}", t.elapsed().as_secs_f64());
+    let t = Instant::now();
+    let primal = ordering::primal_amd(&p, &[], Some((&sys.col_ptr, &sys.row_idx))).unwrap();
+    println!("amd {:.3}", t.elapsed().as_secs_f64());
+    let t = Instant::now();
+    let fwd = ordering::doubled_order(&p, &primal, &uni);
+    println!("order {:.3}", t.elapsed().as_secs_f64());
+    let t = Instant::now();
+    let mut fac = SymFactor::analyse(&sys.col_ptr, &sys.row_idx, fwd).unwrap();
+    println!("symbolic {:.3}", t.elapsed().as_secs_f64());
+    let t = Instant::now();
+    sys.fill(&p, 0.0).unwrap();
+    println!("fill {:.3}", t.elapsed().as_secs_f64());
+    let t = Instant::now();
+    let _ = fac.factor(&sys.col_ptr, &sys.row_idx, &sys.values, &sys.row_scale, n, None);
+    println!("numeric {:.3}", t.elapsed().as_secs_f64());
+    let t = Instant::now();
+    let c = gibi::solve::condense::Condenser::new(&p).unwrap();
+    println!("Condenser::new {:.3}", t.elapsed().as_secs_f64());
+    let load = gibi::solve::Load { f: vec![-1.0 / nx as f64; n], d: vec![0.0; m] };
+    let t = Instant::now();
+    let cd = c.condensed(&load).unwrap();
+    println!("condensed {:.3}", t.elapsed().as_secs_f64());
+    let t = Instant::now();
+    let _ = gibi::solve::dense_ldlt::DenseLdlt::factor(cd.g.as_ref());
+    println!("dense ldlt {:.3}", t.elapsed().as_secs_f64());
+    for par in [faer::Par::Seq, faer::Par::rayon(2)] {
+        faer::set_global_parallelism(par);
+        let mut fac2 = SymFactor::analyse(&sys.col_ptr, &sys.row_idx, fac.fwd().to_vec()).unwrap();
+        let t = Instant::now();
+        let _ = fac2.factor(&sys.col_ptr, &sys.row_idx, &sys.values, &sys.row_scale, n, None);
+        println!("numeric {par:?} {:.3}", t.elapsed().as_secs_f64());
+        let f = common::reference_f(&p.k, &nodes);
+        println!("F {par:?} {f:.3}");
+    }
+}
