@@ -25,7 +25,7 @@ fn main() {
     let uni: Vec<usize> = (0..m).collect();
     let t = Instant::now();
     let tail: Vec<usize> = uni.iter().map(|&i| n + m + i).collect();
-    let mut sys = Doubled::new(&p, &tail).unwrap();
+    let mut sys = Doubled::with_tail(&p, &tail, false).unwrap();
     println!("doubled {:.3}", t.elapsed().as_secs_f64());
     let t = Instant::now();
     let primal = ordering::primal_amd(&p, &[], Some((&sys.col_ptr, &sys.row_idx))).unwrap();
@@ -42,6 +42,12 @@ fn main() {
     let t = Instant::now();
     let _ = fac.factor(&sys.col_ptr, &sys.row_idx, &sys.values, &sys.row_scale, n, None);
     println!("numeric {:.3}", t.elapsed().as_secs_f64());
+    let t = Instant::now();
+    gibi::solve::direct::check_structure(&p).unwrap();
+    println!("check_structure {:.3}", t.elapsed().as_secs_f64());
+    let t = Instant::now();
+    gibi::solve::lagrange::validate(&p).unwrap();
+    println!("validate {:.3}", t.elapsed().as_secs_f64());
     let t = Instant::now();
     let c = gibi::solve::condense::Condenser::new(&p).unwrap();
     println!("Condenser::new {:.3}", t.elapsed().as_secs_f64());
