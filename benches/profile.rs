@@ -11,11 +11,17 @@ use gibi::solve::{ordering, Condition, Kind, Problem};
 
 fn main() {
     let nx = common::grid();
-    let k = common::laplacian(nx);
+    let three = std::env::var("GIBI_BENCH_3D").is_ok();
+    let k = if three { common::laplacian3d(nx) } else { common::laplacian(nx) };
     let n = k.n;
     let m_want: usize = std::env::var("GIBI_BENCH_M").ok().and_then(|s| s.parse().ok()).unwrap_or(50);
-    let nodes: Vec<usize> =
-        if m_want <= nx { (0..m_want).map(|q| q * nx / m_want).collect() } else { common::perimeter(nx) };
+    let nodes: Vec<usize> = if three {
+        (0..m_want).map(|q| q * nx * nx / m_want).collect()
+    } else if m_want <= nx {
+        (0..m_want).map(|q| q * nx / m_want).collect()
+    } else {
+        common::perimeter(nx)
+    };
     let conditions: Vec<Condition> =
         nodes.iter().map(|&j| Condition { terms: vec![(j, 1.0)], kind: Kind::Mini }).collect();
     let m = conditions.len();
@@ -42,6 +48,10 @@ fn main() {
     let t = Instant::now();
     let _ = fac.factor(&sys.col_ptr, &sys.row_idx, &sys.values, &sys.row_scale, n, None);
     println!("numeric {:.3}", t.elapsed().as_secs_f64());
+    let sup = fac.supernodal();
+    let ns = sup.n_supernodes();
+    let last = sup.supernode_end()[ns - 1] - sup.supernode_begin()[ns - 1];
+    println!("nnz(L) {} supernodes {ns} last {last}", sup.len_val());
     let t = Instant::now();
     gibi::solve::direct::check_structure(&p).unwrap();
     println!("check_structure {:.3}", t.elapsed().as_secs_f64());

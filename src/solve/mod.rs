@@ -34,6 +34,8 @@ mod uni_ancien;
 pub mod unilateral;
 
 #[cfg(test)]
+mod methods_props;
+#[cfg(test)]
 mod methods_tests;
 #[cfg(test)]
 mod status_loop_tests;
