@@ -61,13 +61,23 @@ fn main() {
     let t = Instant::now();
     let c = gibi::solve::condense::Condenser::new(&p).unwrap();
     println!("Condenser::new {:.3}", t.elapsed().as_secs_f64());
-    let load = gibi::solve::Load { f: vec![-1.0 / nx as f64; n], d: vec![0.0; m] };
+    let d: Vec<f64> = (0..m).map(|q| -200.0 * (1.0 - (std::f64::consts::TAU * q as f64 / m as f64).cos())).collect();
+    let load = gibi::solve::Load { f: vec![-1.0 / nx as f64; n], d };
     let t = Instant::now();
     let cd = c.condensed(&load).unwrap();
     println!("condensed {:.3}", t.elapsed().as_secs_f64());
     let t = Instant::now();
     let _ = gibi::solve::dense_ldlt::DenseLdlt::factor(cd.g.as_ref());
     println!("dense ldlt {:.3}", t.elapsed().as_secs_f64());
+    let t = Instant::now();
+    let _ = gibi::solve::dense_ldlt::DenseLdlt::factor(cd.g.as_ref());
+    println!("dense ldlt again {:.3}", t.elapsed().as_secs_f64());
+    let t = Instant::now();
+    let r = gibi::solve::status::run(&cd, &Default::default(), &mut |_| {});
+    println!("status run {:.3} {:?}", t.elapsed().as_secs_f64(), r.map(|r| r.records.len()));
+    if std::env::var("GIBI_BENCH_SHORT").is_ok() {
+        return;
+    }
     for par in [faer::Par::Seq, faer::Par::rayon(2)] {
         faer::set_global_parallelism(par);
         let mut fac2 = SymFactor::analyse(&sys.col_ptr, &sys.row_idx, fac.fwd().to_vec()).unwrap();

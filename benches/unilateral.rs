@@ -59,7 +59,22 @@ fn run(name: &str, k: &Matrix, nodes: &[usize], gap: f64, load: f64, method: Met
         UnilOptions { method, ..Default::default() }
     };
     let t = Instant::now();
-    let (_, rep) = solve_unilateral(&p, &l, &opts, &mut UnilCache::default(), &mut |_| {}).expect("solves");
+    let verbose = std::env::var("GIBI_BENCH_VERBOSE").is_ok();
+    let t0 = Instant::now();
+    let mut on_iter = |r: &gibi::solve::unilateral::IterRecord| {
+        if verbose {
+            println!(
+                "#     it {} at {:.3}s: active {} +{} -{} {}",
+                r.iteration,
+                t0.elapsed().as_secs_f64(),
+                r.active_count,
+                r.activated.len(),
+                r.released.len(),
+                r.mode
+            );
+        }
+    };
+    let (_, rep) = solve_unilateral(&p, &l, &opts, &mut UnilCache::default(), &mut on_iter).expect("solves");
     let s = t.elapsed().as_secs_f64();
     println!(
         "case={name} n={n} m={m} method={} F_s={f:.3} reso_s={s:.3} ratio={:.3} iterations={}",

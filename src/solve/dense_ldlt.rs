@@ -109,28 +109,22 @@ impl DenseLdlt {
         self.updates += 1;
     }
 
-    /// Solves A y = rhs in place.
+    /// Solves A y = rhs in place (faer's blocked triangular solves).
     pub fn solve_in_place(&self, rhs: &mut [f64]) {
         let n = self.dim();
-        // Forward substitution with the unit lower factor, column by column
-        // (contiguous in faer's column-major storage).
-        for j in 0..n {
-            let yj = rhs[j];
-            if yj != 0.0 {
-                let col = self.ld.col_as_slice(j);
-                for i in j + 1..n {
-                    rhs[i] -= col[i] * yj;
-                }
-            }
+        if rhs.len() != n || n == 0 {
+            return;
         }
-        for (k, y) in rhs.iter_mut().enumerate().take(n) {
-            *y /= self.ld[(k, k)];
-        }
-        for j in (0..n).rev() {
-            let col = self.ld.col_as_slice(j);
-            let s: f64 = (j + 1..n).map(|i| col[i] * rhs[i]).sum();
-            rhs[j] -= s;
-        }
+        let y = faer::MatMut::from_column_major_slice_mut(rhs, n, 1);
+        let mut stack = MemBuffer::new(ldlt::solve::solve_in_place_scratch::<f64>(n, 1, Par::Seq));
+        ldlt::solve::solve_in_place_with_conj(
+            self.ld.as_ref(),
+            self.ld.diagonal(),
+            faer::Conj::No,
+            y,
+            Par::Seq,
+            MemStack::new(&mut stack),
+        );
     }
 }
 
