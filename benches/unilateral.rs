@@ -112,7 +112,7 @@ fn main() {
     let n3 = std::env::var("GIBI_BENCH_N3").ok().and_then(|s| s.parse().ok()).unwrap_or(47);
     let k3 = common::laplacian3d(n3);
     let face: Vec<usize> = (0..n3 * n3).collect();
-    for (m, gap) in [(50, 10.0), (500, 3.0), (2000, 1.5)] {
+    for (m, gap) in [(50, 4.0), (500, 1.0), (2000, 0.5)] {
         run(&format!("mini{m}_3d"), &k3, &spread(&face, m), gap, -1.0 / (n3 * n3) as f64, Method::Condense, &[]);
     }
 

@@ -19,6 +19,8 @@
 //!   j on the fixed pattern. This keeps the factor the size of K's instead
 //!   of three times larger.
 //!
+//! Bilateral rows on one unknown (BLOQ) are imposed the same way, always.
+//!
 //! x_i (the λ2 of §3, the quantity the sign test reads) is recovered from
 //! the solution: the λ2 itself for doubled rows; λ_i/(2σ_i) from the
 //! reaction at j for an active single-unknown row; σ_i(d_i − c_i u)/(2α_i)
@@ -53,6 +55,9 @@ pub(super) struct Creux {
     sys: Doubled,
     factor: SymFactor,
     rows: Vec<Row>,
+    /// Single-unknown bilateral rows (condition, unknown, coefficient),
+    /// always imposed.
+    imposed: Vec<(usize, usize, f64)>,
     /// Per single-row unknown: (slot, other index) of every stored entry
     /// of its row and column (the diagonal has other == dof).
     slots: Vec<Vec<(usize, usize)>>,
@@ -87,6 +92,18 @@ impl Creux {
                 rows.push(Row::Multi { s: usize::MAX });
             }
         }
+        // Bilateral rows on one unknown (BLOQ) are imposed the same way, for
+        // good: the factor keeps K's size.
+        let mut imposed = Vec::new();
+        for (i, cnd) in p.conditions.iter().enumerate() {
+            let t = &cnd.terms;
+            let dof = t[0].0;
+            let c: f64 = t.iter().map(|e| e.1).sum();
+            if !cnd.kind.is_unilateral() && t.iter().all(|e| e.0 == dof) && c != 0.0 {
+                is_single[i] = true;
+                imposed.push((i, dof, c));
+            }
+        }
         let sub: Vec<usize> = (0..p.conditions.len()).filter(|&i| !is_single[i]).collect();
         let mut at = vec![usize::MAX; p.conditions.len()];
         for (s, &i) in sub.iter().enumerate() {
@@ -104,12 +121,14 @@ impl Creux {
         let factor = SymFactor::analyse(&sys.col_ptr, &sys.row_idx, fwd)?;
         let mut slot_of = vec![usize::MAX; n];
         let mut slots: Vec<Vec<(usize, usize)>> = Vec::new();
-        for r in &rows {
-            if let Row::Single { dof, .. } = *r {
-                if slot_of[dof] == usize::MAX {
-                    slot_of[dof] = slots.len();
-                    slots.push(Vec::new());
-                }
+        let single_dofs = rows
+            .iter()
+            .filter_map(|r| if let Row::Single { dof, .. } = *r { Some(dof) } else { None })
+            .chain(imposed.iter().map(|e| e.1));
+        for dof in single_dofs {
+            if slot_of[dof] == usize::MAX {
+                slot_of[dof] = slots.len();
+                slots.push(Vec::new());
             }
         }
         for col in 0..sys.dim() {
@@ -130,6 +149,7 @@ impl Creux {
             sys,
             factor,
             rows,
+            imposed,
             slots,
             slot_of,
             base: Vec::new(),
@@ -202,16 +222,18 @@ impl Creux {
             rhs[(n + ms + s, 0)] = v;
         }
         let mut fixed = Vec::new();
-        for (q, r) in self.rows.iter().enumerate() {
-            if let (Row::Single { dof, c }, true) = (*r, active[q]) {
-                let g = d[uni[q]] / c;
-                for &(k, o) in &self.slots[self.slot_of[dof]] {
-                    if o != dof {
-                        rhs[(o, 0)] -= self.base[k] * g;
-                    }
+        let singles = self.rows.iter().enumerate().filter_map(|(q, r)| match (*r, active[q]) {
+            (Row::Single { dof, c }, true) => Some((uni[q], dof, c)),
+            _ => None,
+        });
+        for (i, dof, c) in singles.chain(self.imposed.iter().copied()) {
+            let g = d[i] / c;
+            for &(k, o) in &self.slots[self.slot_of[dof]] {
+                if o != dof {
+                    rhs[(o, 0)] -= self.base[k] * g;
                 }
-                fixed.push((dof, g));
             }
+            fixed.push((dof, g));
         }
         for (dof, g) in fixed {
             rhs[(dof, 0)] = self.scale[dof] * g;
@@ -308,6 +330,16 @@ impl Op<'_> {
         let (n, ms) = (c.sys.n, c.sys.m);
         let mut vals = c.base.clone();
         let mut fixed = vec![false; c.slots.len()];
+        for &(_, dof, _) in &c.imposed {
+            let l = c.slot_of[dof];
+            fixed[l] = true;
+            for &(k, _) in &c.slots[l] {
+                vals[k] = 0.0;
+            }
+            if let Some(k) = c.sys.find(dof, dof) {
+                vals[k] = c.scale[dof];
+            }
+        }
         for (q, r) in c.rows.iter().enumerate() {
             match (*r, active[q]) {
                 (Row::Single { dof, .. }, true) => {
@@ -463,6 +495,9 @@ pub(super) fn solve(
     let z = &op.z;
     let mut lambda = vec![0.0; p.conditions.len()];
     let mut act = vec![true; p.conditions.len()];
+    for &(i, dof, c) in &op.c.imposed {
+        lambda[i] = (load.f[dof] - op.c.row_product(dof, z)) / c;
+    }
     for (s, &i) in op.c.sub.iter().enumerate() {
         lambda[i] = op.c.sys.scaling.sigma[s] * (z[n + s] + z[n + ms + s]);
     }

@@ -33,9 +33,9 @@ impl DenseLdlt {
     pub fn factor(a: MatRef<'_, f64>) -> Self {
         let n = a.nrows();
         let mut ld = a.to_owned();
-        // Threads only where they pay (m³/3 flops at m ≳ 300). faer's
-        // blocked factorisation is deterministic for a given thread count;
-        // the embedder may switch the global parallelism off.
+        // Threads only where they pay (m³/3 flops at m ≳ 300), as the
+        // embedder set faer's global parallelism (Seq for none). The blocked
+        // factorisation is deterministic for a given thread count.
         let par = if n >= PAR_MIN { faer::get_global_parallelism() } else { Par::Seq };
         let mut mem = MemBuffer::new(ldlt::factor::cholesky_in_place_scratch::<f64>(n, par, Default::default()));
         let stack = MemStack::new(&mut mem);
