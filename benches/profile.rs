@@ -1,5 +1,8 @@
 //! Phase timings of the condensation (development aid):
-//! `cargo bench --bench profile`.
+//! `cargo bench --bench profile`. `GIBI_BENCH_N` grid size, `GIBI_BENCH_M`
+//! conditions, `GIBI_BENCH_3D` for the 3D grid, `GIBI_BENCH_FLOPS` to count
+//! the factor's flops against K's alone, `GIBI_BENCH_SHORT` to skip the
+//! Seq/Rayon comparison.
 
 mod common;
 
@@ -52,6 +55,52 @@ fn main() {
     let ns = sup.n_supernodes();
     let last = sup.supernode_end()[ns - 1] - sup.supernode_begin()[ns - 1];
     println!("nnz(L) {} supernodes {ns} last {last}", sup.len_val());
+    let mut flops = 0.0f64;
+    for q in 0..ns {
+        let w = sup.supernode_end()[q] - sup.supernode_begin()[q];
+        let r = w + sup.supernode(q).pattern().len();
+        for k in 0..w {
+            flops += ((r - k) as f64).powi(2);
+        }
+    }
+    println!("flops {:.1} G", flops / 1e9);
+    if std::env::var("GIBI_BENCH_FLOPS").is_ok() {
+        // The same count for K alone with the supported unknowns eliminated.
+        let keep: Vec<bool> = (0..n).map(|j| !nodes.contains(&j)).collect();
+        let mut new = vec![usize::MAX; n];
+        let mut nn = 0;
+        for j in 0..n {
+            if keep[j] {
+                new[j] = nn;
+                nn += 1;
+            }
+        }
+        let trip: Vec<faer::sparse::Triplet<usize, usize, f64>> =
+            p.k.entries
+                .iter()
+                .filter(|&&(i, j, _)| keep[i] && keep[j] && i <= j)
+                .map(|&(i, j, v)| faer::sparse::Triplet::new(new[i], new[j], v))
+                .collect();
+        let a = faer::sparse::SparseColMat::<usize, f64>::try_new_from_triplets(nn, nn, &trip).unwrap();
+        let sym = faer::sparse::linalg::cholesky::factorize_symbolic_cholesky(
+            a.symbolic(),
+            faer::Side::Upper,
+            Default::default(),
+            Default::default(),
+        )
+        .unwrap();
+        if let faer::sparse::linalg::cholesky::SymbolicCholeskyRaw::Supernodal(s) = sym.raw() {
+            let mut fl = 0.0f64;
+            for q in 0..s.n_supernodes() {
+                let w = s.supernode_end()[q] - s.supernode_begin()[q];
+                let r = w + s.supernode(q).pattern().len();
+                for k in 0..w {
+                    fl += ((r - k) as f64).powi(2);
+                }
+            }
+            println!("F flops {:.1} G nnz {}", fl / 1e9, s.len_val());
+        }
+    }
     let t = Instant::now();
     gibi::solve::direct::check_structure(&p).unwrap();
     println!("check_structure {:.3}", t.elapsed().as_secs_f64());
