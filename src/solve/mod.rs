@@ -13,7 +13,11 @@
 //! * [`condense`]: the interrupted factorisation onto the second multipliers
 //!   of the unilateral conditions (and onto chosen unknowns, for SUPER).
 //! * [`status`]: the status (active-set) iteration on the condensed operator.
-//! * [`unilateral`]: the UNIL driver choosing among the methods.
+//! * [`unilateral`]: the UNIL driver choosing among the methods: CONDENSE
+//!   (above), ANCIEN (`uni_ancien`: Guyan condensation onto the contact
+//!   unknowns and [`ancien`]), CREUX (`creux`: the status iteration on the
+//!   sparse system, for conditions on most unknowns) and ITER (`iter`: G by
+//!   preconditioned CG, no factorisation).
 
 pub mod ancien;
 pub mod condense;

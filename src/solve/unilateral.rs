@@ -3,12 +3,16 @@
 //! Default method (CONDENSE, unilateral.md §3): one interrupted LDLᵀ gives
 //! the condensed operator on the second multipliers of the unilateral
 //! conditions; the status iteration runs on that dense m×m problem; one
-//! partial substitution recovers u and the multipliers.
+//! partial substitution recovers u and the multipliers. The other methods
+//! ([`Method`]) return the same [`Solution`] and make the same status
+//! decisions (the loop of [`status`] over their own linear algebra); the
+//! automatic choice is documented on [`Method::Auto`].
 //!
 //! The [`UnilCache`] lives with the RIGIDITE object on the language side:
-//! it keeps the condenser (symbolic analysis always reusable for the same
-//! structure, numeric factor reused when the values are identical too) and
-//! the last converged statuses, the warm start of the next RESO.
+//! it keeps the condenser or CREUX's sparse operator (symbolic analysis
+//! always reusable for the same structure, numeric factor reused when the
+//! values are identical too) and the last converged statuses, the warm
+//! start of the next RESO (reset when the structure changes).
 
 use std::time::Instant;
 
