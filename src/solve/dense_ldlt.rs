@@ -63,7 +63,7 @@ impl DenseLdlt {
 
     /// The first pivot that is not finite, has the wrong sign
     /// (`positive[k]` says which sign pivot k must have) or is negligible:
-    /// |d_k| ≤ eps·scale[k].
+    /// `|d_k| ≤ eps·scale[k]`.
     pub fn first_bad_pivot(&self, positive: &[bool], scale: &[f64], eps: f64) -> Option<usize> {
         (0..self.dim()).find(|&k| {
             let d = self.pivot(k);
@@ -89,8 +89,8 @@ impl DenseLdlt {
         self.updates += 1;
     }
 
-    /// Turns the factor of A into the factor of A + Σ_k deltas[k]·e_i e_iᵀ
-    /// (i = idx[k], distinct) in one rank-r update of the trailing block
+    /// Turns the factor of A into the factor of `A + Σ_k deltas[k]·e_i e_iᵀ`
+    /// (`i = idx[k]`, distinct) in one rank-r update of the trailing block
     /// from the smallest index: ≈ 2(m − i₀)²·r flops. Counts as one update.
     pub fn update_diags(&mut self, idx: &[usize], deltas: &[f64]) {
         let n = self.dim();
