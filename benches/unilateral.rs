@@ -12,7 +12,9 @@
 //!   CREUX with the PDAS rule from all conditions inactive.
 //!
 //! F is measured in the same run, on K with the supported (or fixed)
-//! unknowns eliminated. `GIBI_BENCH_ONLY=name,name` runs a subset.
+//! unknowns eliminated; both are medians of `GIBI_BENCH_REPEAT` (default 3)
+//! interleaved runs (F of 3 runs and one solve for the obstacle; its line
+//! adds the time per iteration). `GIBI_BENCH_ONLY=name,name` runs a subset.
 
 mod common;
 
@@ -52,36 +54,53 @@ fn run(name: &str, k: &Matrix, nodes: &[usize], gap: f64, load: f64, method: Met
     d.extend(fixed.iter().map(|_| 0.0));
     let l = Load { f: vec![load; n], d };
     let eliminated: Vec<usize> = if fixed.is_empty() { nodes.to_vec() } else { fixed.to_vec() };
-    let f = common::reference_f(&p.k, &eliminated);
     let opts = if method == Method::Creux {
         UnilOptions { method, rule: Rule::Pdas, initial: Some(vec![false; m]), ..Default::default() }
     } else {
         UnilOptions { method, ..Default::default() }
     };
-    let t = Instant::now();
     let verbose = std::env::var("GIBI_BENCH_VERBOSE").is_ok();
-    let t0 = Instant::now();
-    let mut on_iter = |r: &gibi::solve::unilateral::IterRecord| {
-        if verbose {
-            println!(
-                "#     it {} at {:.3}s: active {} +{} -{} {}",
-                r.iteration,
-                t0.elapsed().as_secs_f64(),
-                r.active_count,
-                r.activated.len(),
-                r.released.len(),
-                r.mode
-            );
-        }
-    };
-    let (_, rep) = solve_unilateral(&p, &l, &opts, &mut UnilCache::default(), &mut on_iter).expect("solves");
-    let s = t.elapsed().as_secs_f64();
+    // Medians of interleaved repeats: single timings vary by ±30 % on the
+    // shared 2-core machines. The long obstacle run is timed once.
+    let repeats = if method == Method::Creux { 1 } else { common::repeats() };
+    let (mut fs, mut ts) = (Vec::new(), Vec::new());
+    let mut rep = None;
+    for _ in 0..repeats {
+        fs.push(common::reference_f(&p.k, &eliminated));
+        let t0 = Instant::now();
+        let mut on_iter = |r: &gibi::solve::unilateral::IterRecord| {
+            if verbose {
+                println!(
+                    "#     it {} at {:.3}s: active {} +{} -{} {}",
+                    r.iteration,
+                    t0.elapsed().as_secs_f64(),
+                    r.active_count,
+                    r.activated.len(),
+                    r.released.len(),
+                    r.mode
+                );
+            }
+        };
+        let t = Instant::now();
+        let (_, r) = solve_unilateral(&p, &l, &opts, &mut UnilCache::default(), &mut on_iter).expect("solves");
+        ts.push(t.elapsed().as_secs_f64());
+        rep = Some(r);
+    }
+    if method == Method::Creux {
+        fs.push(common::reference_f(&p.k, &eliminated));
+        fs.push(common::reference_f(&p.k, &eliminated));
+    }
+    let rep = rep.expect("at least one run");
+    let (f, s) = (common::median(&mut fs), common::median(&mut ts));
     println!(
         "case={name} n={n} m={m} method={} F_s={f:.3} reso_s={s:.3} ratio={:.3} iterations={}",
         rep.method,
         s / f,
         rep.iterations
     );
+    if method == Method::Creux {
+        println!("#   per iteration: {:.3} s = {:.3} F", s / rep.iterations as f64, s / rep.iterations as f64 / f);
+    }
     let phases: Vec<String> = rep.phase_seconds.iter().map(|(k, v)| format!("{k}:{v:.3}")).collect();
     println!("#   active={} phases={}", rep.active_count, phases.join(","));
 }

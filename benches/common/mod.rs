@@ -92,3 +92,16 @@ pub fn reference_f(k: &Matrix, fixed: &[usize]) -> f64 {
 pub fn grid() -> usize {
     std::env::var("GIBI_BENCH_N").ok().and_then(|s| s.parse().ok()).unwrap_or(500)
 }
+
+/// Repeats per timing, from `GIBI_BENCH_REPEAT` (default 3).
+#[allow(dead_code)]
+pub fn repeats() -> usize {
+    std::env::var("GIBI_BENCH_REPEAT").ok().and_then(|s| s.parse().ok()).unwrap_or(3).max(1)
+}
+
+/// Median of a non-empty sample.
+#[allow(dead_code)]
+pub fn median(v: &mut [f64]) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
