@@ -28,8 +28,10 @@ fn main() {
     // Medians of interleaved repeats (timings vary by ±30 % on the shared
     // machines); each repeat factorises afresh.
     let (mut fs, mut tb, mut tr, mut tf) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    let mut fq = Vec::new();
     for _ in 0..common::repeats() {
         fs.push(common::reference_f(&p.k, &fixed));
+        fq.push(common::reference_f_seq(&p.k, &fixed));
         let t = Instant::now();
         let mut fac = Factorization::new(&p, &DirectOptions::default()).expect("factorises");
         let s = fac.solve(&[load(1.0)]).expect("solves");
@@ -53,4 +55,13 @@ fn main() {
     line("bilateral", n, m, f, common::median(&mut tb));
     line("rhs", n, m, f, common::median(&mut tr));
     line("refactor", n, m, f, common::median(&mut tf));
+    // F with faer's parallelism off: faster in 2D on 2 cores, the stricter
+    // reference there.
+    let fseq = common::median(&mut fq);
+    println!(
+        "#   F_seq_s={fseq:.3} ratios_seq: bilateral={:.3} rhs={:.3} refactor={:.3}",
+        common::median(&mut tb) / fseq,
+        common::median(&mut tr) / fseq,
+        common::median(&mut tf) / fseq
+    );
 }

@@ -14,7 +14,8 @@
 //! F is measured in the same run, on K with the supported (or fixed)
 //! unknowns eliminated; both are medians of `GIBI_BENCH_REPEAT` (default 3)
 //! interleaved runs (F of 3 runs and one solve for the obstacle; its line
-//! adds the time per iteration). `GIBI_BENCH_ONLY=name,name` runs a subset.
+//! adds the time per iteration). The detail line `F_seq` is F with faer's
+//! parallelism off, faster in 2D on 2 cores: the stricter reference there. `GIBI_BENCH_ONLY=name,name` runs a subset.
 
 mod common;
 
@@ -63,10 +64,11 @@ fn run(name: &str, k: &Matrix, nodes: &[usize], gap: f64, load: f64, method: Met
     // Medians of interleaved repeats: single timings vary by ±30 % on the
     // shared 2-core machines. The long obstacle run is timed once.
     let repeats = if method == Method::Creux { 1 } else { common::repeats() };
-    let (mut fs, mut ts) = (Vec::new(), Vec::new());
+    let (mut fs, mut ts, mut fq) = (Vec::new(), Vec::new(), Vec::new());
     let mut rep = None;
     for _ in 0..repeats {
         fs.push(common::reference_f(&p.k, &eliminated));
+        fq.push(common::reference_f_seq(&p.k, &eliminated));
         let t0 = Instant::now();
         let mut on_iter = |r: &gibi::solve::unilateral::IterRecord| {
             if verbose {
@@ -91,13 +93,14 @@ fn run(name: &str, k: &Matrix, nodes: &[usize], gap: f64, load: f64, method: Met
         fs.push(common::reference_f(&p.k, &eliminated));
     }
     let rep = rep.expect("at least one run");
-    let (f, s) = (common::median(&mut fs), common::median(&mut ts));
+    let (f, s, fseq) = (common::median(&mut fs), common::median(&mut ts), common::median(&mut fq));
     println!(
         "case={name} n={n} m={m} method={} F_s={f:.3} reso_s={s:.3} ratio={:.3} iterations={}",
         rep.method,
         s / f,
         rep.iterations
     );
+    println!("#   F_seq_s={fseq:.3} ratio_seq={:.3}", s / fseq);
     if method == Method::Creux {
         println!("#   per iteration: {:.3} s = {:.3} F", s / rep.iterations as f64, s / rep.iterations as f64 / f);
     }

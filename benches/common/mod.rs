@@ -87,6 +87,18 @@ pub fn reference_f(k: &Matrix, fixed: &[usize]) -> f64 {
     s
 }
 
+/// [`reference_f`] with faer's global parallelism set to `Seq` (restored
+/// after): on 2 cores a 2D factorisation is faster without threads, so this
+/// is the stricter reference there.
+#[allow(dead_code)]
+pub fn reference_f_seq(k: &Matrix, fixed: &[usize]) -> f64 {
+    let before = faer::get_global_parallelism();
+    faer::set_global_parallelism(faer::Par::Seq);
+    let f = reference_f(k, fixed);
+    faer::set_global_parallelism(before);
+    f
+}
+
 #[allow(dead_code)]
 /// Grid size, from `GIBI_BENCH_N` (default 500, n = 250,000).
 pub fn grid() -> usize {
