@@ -25,7 +25,29 @@ pub fn laplacian(nx: usize) -> Matrix {
     Matrix { n: nx * nx, entries, symmetric: true }
 }
 
+/// Graph Laplacian of the N×N×N grid (7-point, pure Neumann), both
+/// triangles: the 3D stand-in of solver-notes §3.3.
+#[allow(dead_code)]
+pub fn laplacian3d(nx: usize) -> Matrix {
+    let id = |i: usize, j: usize, k: usize| (k * nx + j) * nx + i;
+    let mut entries = Vec::with_capacity(12 * nx * nx * nx);
+    for k in 0..nx {
+        for j in 0..nx {
+            for i in 0..nx {
+                for (a, b, c) in [(i + 1, j, k), (i, j + 1, k), (i, j, k + 1)] {
+                    if a < nx && b < nx && c < nx {
+                        let (p, q) = (id(i, j, k), id(a, b, c));
+                        entries.extend([(p, p, 1.0), (q, q, 1.0), (p, q, -1.0), (q, p, -1.0)]);
+                    }
+                }
+            }
+        }
+    }
+    Matrix { n: nx * nx * nx, entries, symmetric: true }
+}
+
 /// Boundary nodes of the grid, counter-clockwise from the origin.
+#[allow(dead_code)]
 pub fn perimeter(nx: usize) -> Vec<usize> {
     let mut v: Vec<usize> = (0..nx).collect();
     v.extend((1..nx).map(|i| i * nx + nx - 1));
@@ -65,7 +87,33 @@ pub fn reference_f(k: &Matrix, fixed: &[usize]) -> f64 {
     s
 }
 
+/// [`reference_f`] with faer's global parallelism set to `Seq` (restored
+/// after): on 2 cores a 2D factorisation is faster without threads, so this
+/// is the stricter reference there.
+#[allow(dead_code)]
+pub fn reference_f_seq(k: &Matrix, fixed: &[usize]) -> f64 {
+    let before = faer::get_global_parallelism();
+    faer::set_global_parallelism(faer::Par::Seq);
+    let f = reference_f(k, fixed);
+    faer::set_global_parallelism(before);
+    f
+}
+
+#[allow(dead_code)]
 /// Grid size, from `GIBI_BENCH_N` (default 500, n = 250,000).
 pub fn grid() -> usize {
     std::env::var("GIBI_BENCH_N").ok().and_then(|s| s.parse().ok()).unwrap_or(500)
+}
+
+/// Repeats per timing, from `GIBI_BENCH_REPEAT` (default 3).
+#[allow(dead_code)]
+pub fn repeats() -> usize {
+    std::env::var("GIBI_BENCH_REPEAT").ok().and_then(|s| s.parse().ok()).unwrap_or(3).max(1)
+}
+
+/// Median of a non-empty sample.
+#[allow(dead_code)]
+pub fn median(v: &mut [f64]) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
 }

@@ -22,7 +22,7 @@
 //! substitutions through that block only.
 
 use faer::linalg::matmul::triangular::{matmul as tri_matmul, BlockStructure};
-use faer::{Accum, Mat, Par};
+use faer::{Accum, Mat};
 
 use super::direct::{check_structure, diagnose};
 use super::error::SolveError;
@@ -47,6 +47,14 @@ struct Interrupted {
 impl Interrupted {
     /// `sys`, if given, must have been built with the tail `fwd[cut..]`.
     fn new(p: &Problem, fwd: Vec<usize>, cut: usize, sys: Option<Doubled>) -> Result<Self, SolveError> {
+        Self::try_new(p, fwd, cut, sys)?
+            .ok_or_else(|| SolveError::Other("the condensed block does not form one trailing supernode".into()))
+    }
+
+    /// [`Interrupted::new`], or `None` when the tail is not one trailing
+    /// supernode (a pattern without the explicit tail pairs whose tail the
+    /// elimination does not connect).
+    fn try_new(p: &Problem, fwd: Vec<usize>, cut: usize, sys: Option<Doubled>) -> Result<Option<Self>, SolveError> {
         check_structure(p)?;
         if !p.k.symmetric {
             return Err(SolveError::Other("condensation needs a symmetric stiffness".into()));
@@ -60,11 +68,12 @@ impl Interrupted {
         let sup = factor.supernodal();
         let n_sup = sup.n_supernodes();
         if tail.is_empty() || n_sup == 0 || sup.supernode_begin()[n_sup - 1] > cut {
-            return Err(SolveError::Other("the condensed block does not form one trailing supernode".into()));
+            return Ok(None);
         }
         let mut it = Interrupted { sys, factor, cut, tail, schur: Mat::zeros(0, 0) };
-        it.numeric(p)?;
-        Ok(it)
+        // The system was just built: it already holds the values of `p`.
+        it.numeric(p, false)?;
+        Ok(Some(it))
     }
 
     /// Shift of each tail unknown: −4α on a λ2 of a condensed condition,
@@ -87,8 +96,10 @@ impl Interrupted {
     }
 
     /// Numeric factorisation of the values of `p` and extraction of S.
-    fn numeric(&mut self, p: &Problem) -> Result<(), SolveError> {
-        self.sys.fill(p, 0.0)?;
+    fn numeric(&mut self, p: &Problem, refill: bool) -> Result<(), SolveError> {
+        if refill {
+            self.sys.fill(p, 0.0)?;
+        }
         let shift = self.shifts();
         for (&t, &s) in self.tail.iter().zip(&shift) {
             self.sys.add_diag(t, s);
@@ -123,7 +134,8 @@ impl Interrupted {
             l.transpose(),
             BlockStructure::UnitTriangularUpper,
             1.0,
-            Par::Seq,
+            // m³/3 flops at m ~ 10³: worth the threads.
+            faer::get_global_parallelism(),
         );
         for j in 0..mt {
             s[(j, j)] -= shift[j];
@@ -155,16 +167,30 @@ impl Interrupted {
         x.subrows(self.cut, dim - self.cut).to_owned()
     }
 
+    /// The partial forward substitution of a natural rhs (elimination
+    /// order, every row), as [`Interrupted::reduced_rhs`] computes it.
+    fn forward(&self, nat_cols: &[Vec<f64>]) -> Mat<f64> {
+        let fwd = self.factor.fwd();
+        let mut x = Mat::from_fn(fwd.len(), nat_cols.len(), |k, j| nat_cols[j][fwd[k]]);
+        self.factor.forward_partial(x.as_mut(), self.cut);
+        x
+    }
+
     /// Natural-numbering solution of the first block with the tail fixed.
     fn solve_with_tail(&self, nat: &[f64], tail_values: &[f64]) -> Vec<f64> {
         let mut x = self.permuted(nat);
         self.factor.forward_partial(x.as_mut(), self.cut);
+        self.finish_with_tail(x, tail_values)
+    }
+
+    /// [`Interrupted::solve_with_tail`] from the forwarded rhs `x` (one column).
+    fn finish_with_tail(&self, mut x: Mat<f64>, tail_values: &[f64]) -> Vec<f64> {
         self.factor.diagonal_partial(x.as_mut(), self.cut);
         for (q, &v) in tail_values.iter().enumerate() {
             x[(self.cut + q, 0)] = v;
         }
         self.factor.backward_partial(x.as_mut(), self.cut);
-        let mut out = vec![0.0; nat.len()];
+        let mut out = vec![0.0; x.nrows()];
         for (k, &o) in self.factor.fwd().iter().enumerate() {
             out[o] = x[(k, 0)];
         }
@@ -178,6 +204,9 @@ impl Interrupted {
 #[derive(Debug)]
 pub struct Condenser {
     core: Interrupted,
+    /// The forward substitution of the last load's rhs, keyed by the load:
+    /// the recovery of that load then skips its forward half.
+    forwarded: std::sync::Mutex<Option<(u64, Mat<f64>)>>,
     /// Global numbers of the unilateral conditions, in condensed order.
     uni: Vec<usize>,
     sense: Vec<f64>,
@@ -197,16 +226,22 @@ impl Condenser {
                 "the condensed method needs a symmetric matrix: use the CREUX method for a non-symmetric one".into(),
             ));
         }
-        super::lagrange::validate(p)?;
+        // Doubled::with_tail validates the data.
         let (n, m) = (p.k.n, p.conditions.len());
         let tail: Vec<usize> = uni.iter().map(|&i| n + m + i).collect();
-        let sys = Doubled::new(p, &tail)?;
+        // Without the m² explicit tail pairs first: one mesh connects the
+        // tail anyway; disconnected contact zones need them.
+        let sys = Doubled::with_tail(p, &tail, false)?;
         let primal = ordering::primal_amd(p, &[], Some((&sys.col_ptr, &sys.row_idx)))?;
         let fwd = ordering::doubled_order(p, &primal, &uni);
         let cut = fwd.len() - uni.len();
-        let core = Interrupted::new(p, fwd, cut, Some(sys))?;
+        let core = match Interrupted::try_new(p, fwd.clone(), cut, Some(sys))? {
+            Some(core) => core,
+            None => Interrupted::new(p, fwd, cut, Some(Doubled::new(p, &tail)?))?,
+        };
         Ok(Condenser {
             core,
+            forwarded: std::sync::Mutex::new(None),
             sense: uni.iter().map(|&i| p.conditions[i].kind.sense()).collect(),
             rows: uni.iter().map(|&i| p.conditions[i].terms.clone()).collect(),
             uni,
@@ -224,7 +259,10 @@ impl Condenser {
 
     /// New values on the same structure: numeric factorisation only.
     pub fn refactor(&mut self, p: &Problem) -> Result<(), SolveError> {
-        self.core.numeric(p)?;
+        if let Ok(mut slot) = self.forwarded.lock() {
+            *slot = None;
+        }
+        self.core.numeric(p, true)?;
         self.rows = self.uni.iter().map(|&i| p.conditions[i].terms.clone()).collect();
         Ok(())
     }
@@ -252,7 +290,11 @@ impl Condenser {
         f_only[..n].copy_from_slice(&load.f);
         // With the λ2 shifted to −α−4α the Schur system reads −4T x = r,
         // so h = −r/4; with d = 0 (F only), r = −2ΣCH⁻¹F.
-        let r = self.core.reduced_rhs(&[full, f_only]);
+        let x = self.core.forward(&[full, f_only]);
+        let r = x.subrows(self.core.cut, dim - self.core.cut).to_owned();
+        if let Ok(mut slot) = self.forwarded.lock() {
+            *slot = Some((load_key(load), x.subcols(0, 1).to_owned()));
+        }
         let mu = self.uni.len();
         let alpha: Vec<f64> = self.uni.iter().map(|&i| sys.scaling.alpha[i]).collect();
         let mut g = Mat::<f64>::zeros(mu, mu);
@@ -284,9 +326,15 @@ impl Condenser {
         }
         let sys = &self.core.sys;
         let (n, m, dim) = (sys.n, sys.m, sys.dim());
-        let mut rhs = vec![0.0; dim];
-        sys.rhs(&load.f, &load.d, &mut rhs);
-        let z = self.core.solve_with_tail(&rhs, x);
+        let saved = self.forwarded.lock().ok().and_then(|mut s| s.take());
+        let z = match saved {
+            Some((key, fx)) if key == load_key(load) => self.core.finish_with_tail(fx, x),
+            _ => {
+                let mut rhs = vec![0.0; dim];
+                sys.rhs(&load.f, &load.d, &mut rhs);
+                self.core.solve_with_tail(&rhs, x)
+            }
+        };
         let sg = &sys.scaling.sigma;
         let mut lambda: Vec<f64> = (0..m).map(|i| sg[i] * (z[n + i] + z[n + m + i])).collect();
         let mut act = vec![true; m];
@@ -296,6 +344,16 @@ impl Condenser {
         }
         Ok(Solution { u: z[..n].to_vec(), lambda, active: act })
     }
+}
+
+/// Fingerprint of a load's numbers.
+fn load_key(load: &Load) -> u64 {
+    let mut h: u64 = 0x2545_f491_4f6c_dd1d;
+    for &v in load.f.iter().chain(&load.d) {
+        h ^= v.to_bits();
+        h = h.wrapping_mul(0x0000_0100_0000_01b3).rotate_left(29);
+    }
+    h
 }
 
 /// Static condensation of a bilateral problem onto chosen primal unknowns

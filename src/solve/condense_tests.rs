@@ -77,6 +77,7 @@ fn trailing_supernode_gives_g_h_and_xtf() {
             assert_close(cd.g[(i, j)], g[(i, j)], gmax);
         }
     }
+    // Column 0 gets the limits added below; column 1 stays F alone.
     let mut rhs = Mat::from_fn(n, 2, |j, _| load.f[j]);
     for i in 0..m {
         for j in 0..n {

@@ -26,7 +26,7 @@ use super::problem::Problem;
 
 /// Marker for a source term that is not stored (lower-triangle K entry of
 /// a symmetric matrix).
-const NONE: usize = usize::MAX;
+const NONE: u32 = u32::MAX;
 
 /// Per-condition scaling of §2.2 (Cast3M's `assem2`): σ_i on the coupling
 /// terms, α_i on the multiplier block.
@@ -107,8 +107,9 @@ pub struct Doubled {
     /// Largest |entry| of each row of the whole doubled matrix (both
     /// triangles), the reference for the tiny-pivot test.
     pub row_scale: Vec<f64>,
-    /// Slot of every source term, in the order of [`Doubled::fill`].
-    pos: Vec<usize>,
+    /// Slot of every source term, in the order of [`Doubled::fill`]
+    /// (32-bit: the pattern build is memory-bound).
+    pos: Vec<u32>,
     upper: bool,
     n_terms: usize,
     structure: u64,
@@ -123,6 +124,16 @@ impl Doubled {
     /// (natural numbering) that get explicit (zero) couplings with each
     /// other, so that they form one dense trailing supernode (condensation).
     pub fn new(p: &Problem, dense_tail: &[usize]) -> Result<Self, SolveError> {
+        Self::with_tail(p, dense_tail, true)
+    }
+
+    /// [`Doubled::new`]; with `pairs == false` the tail gets only the
+    /// couplings to its first unknown (and a chain), not the m² explicit
+    /// pairs. That is already one trailing supernode: every tail unknown
+    /// fills into the head's column, and eliminating the head makes the
+    /// rest dense. It is much cheaper to build and analyse at m ~ 10³; the
+    /// pairs stay as the caller's fallback.
+    pub fn with_tail(p: &Problem, dense_tail: &[usize], pairs: bool) -> Result<Self, SolveError> {
         validate(p)?;
         let n = p.k.n;
         let m = p.conditions.len();
@@ -130,77 +141,119 @@ impl Doubled {
         let symmetric = p.k.symmetric;
         let upper = upper_mode(p);
         let n_terms: usize = p.conditions.iter().map(|c| c.terms.len()).sum();
-
-        // Source terms as (row, col), in the fixed order fill() follows.
-        let mut src: Vec<(usize, usize)> = Vec::new();
-        let push = |r: usize, c: usize, src: &mut Vec<(usize, usize)>| {
+        let n_src = p.k.entries.len() + 4 * n_terms + 4 * m;
+        if dim >= NONE as usize || n_src + 2 * dim + dense_tail.len().pow(2) >= NONE as usize {
+            return Err(SolveError::Other("system too large for 32-bit pattern indices".into()));
+        }
+        // The source terms as (row, col), in the fixed order fill() follows,
+        // generated twice (count, then place) instead of stored: the build
+        // is memory-bound.
+        let key = |r: usize, c: usize| -> (u32, u32) {
             if symmetric && r > c {
-                src.push((c, r));
+                (c as u32, r as u32)
             } else {
-                src.push((r, c));
+                (r as u32, c as u32)
             }
         };
-        for &(i, j, _) in &p.k.entries {
-            let keep = !symmetric || if upper { i <= j } else { i >= j };
-            if keep {
-                push(i, j, &mut src);
-            } else {
-                src.push((NONE, NONE));
-            }
-        }
-        for (ci, c) in p.conditions.iter().enumerate() {
-            for &(j, _) in &c.terms {
-                push(n + ci, j, &mut src);
-                push(n + m + ci, j, &mut src);
-                if !symmetric {
-                    src.push((j, n + ci));
-                    src.push((j, n + m + ci));
+        let sources = |emit: &mut dyn FnMut(u32, u32)| {
+            for &(i, j, _) in &p.k.entries {
+                if !symmetric || if upper { i <= j } else { i >= j } {
+                    let (r, c) = key(i, j);
+                    emit(r, c);
+                } else {
+                    emit(NONE, NONE);
                 }
             }
-        }
-        for ci in 0..m {
-            push(n + ci, n + ci, &mut src);
-            push(n + m + ci, n + m + ci, &mut src);
-            push(n + ci, n + m + ci, &mut src);
-            if !symmetric {
-                src.push((n + m + ci, n + ci));
+            for (ci, c) in p.conditions.iter().enumerate() {
+                for &(j, _) in &c.terms {
+                    let (r, c) = key(n + ci, j);
+                    emit(r, c);
+                    let (r, c) = key(n + m + ci, j);
+                    emit(r, c);
+                    if !symmetric {
+                        emit(j as u32, (n + ci) as u32);
+                        emit(j as u32, (n + m + ci) as u32);
+                    }
+                }
             }
+            for ci in 0..m {
+                let (a, b) = ((n + ci) as u32, (n + m + ci) as u32);
+                emit(a, a);
+                emit(b, b);
+                emit(a, b);
+                if !symmetric {
+                    emit(b, a);
+                }
+            }
+        };
+        let mut count = vec![0usize; dim + 1];
+        let mut n_fill = 0usize;
+        let mut in_tail = vec![false; if dense_tail.is_empty() { 0 } else { dim }];
+        for &t in dense_tail {
+            in_tail[t] = true;
         }
-        let n_fill = src.len();
+        let mut extra = vec![false; in_tail.len()];
+        sources(&mut |r, c| {
+            n_fill += 1;
+            if r != NONE {
+                count[c as usize + 1] += 1;
+                let (r, c) = (r as usize, c as usize);
+                if !in_tail.is_empty() && in_tail[r] != in_tail[c] {
+                    extra[if in_tail[r] { c } else { r }] = true;
+                }
+            }
+        });
         // Every unknown coupled to the tail also gets an explicit entry in
         // the row of the tail's first unknown. Fill then carries that row up
         // the elimination tree, so no column outside the tail has a parent
         // inside it other than the first one: the tail stays one chain, hence
         // one supernode, whatever the couplings (e.g. independent contact
         // zones).
+        let mut more: Vec<(u32, u32)> = Vec::new();
+        let both = |r: usize, c: usize, more: &mut Vec<(u32, u32)>| {
+            more.push(key(r, c));
+            if !symmetric {
+                more.push((c as u32, r as u32));
+            }
+        };
         if let Some(&head) = dense_tail.first() {
-            let mut in_tail = vec![false; dim];
-            for &t in dense_tail {
-                in_tail[t] = true;
-            }
-            let mut extra = vec![false; dim];
-            for &(r, c) in &src[..n_fill] {
-                if r != NONE && in_tail[r] != in_tail[c] {
-                    extra[if in_tail[r] { c } else { r }] = true;
-                }
-            }
             for (k, _) in extra.iter().enumerate().filter(|e| *e.1) {
-                push(k, head, &mut src);
-                if !symmetric {
-                    src.push((head, k));
+                both(k, head, &mut more);
+            }
+            for w in dense_tail.windows(2) {
+                both(w[1], w[0], &mut more);
+            }
+        }
+        if pairs {
+            for (a, &ca) in dense_tail.iter().enumerate() {
+                for &cb in &dense_tail[..a] {
+                    both(ca, cb, &mut more);
                 }
             }
         }
-        for (a, &ca) in dense_tail.iter().enumerate() {
-            for &cb in &dense_tail[..a] {
-                push(ca, cb, &mut src);
-                if !symmetric {
-                    src.push((cb, ca));
-                }
-            }
+        for &(_, c) in &more {
+            count[c as usize + 1] += 1;
         }
-
-        let (col_ptr, row_idx, pos) = compress(dim, &src)?;
+        for c in 0..dim {
+            count[c + 1] += count[c];
+        }
+        // (row << 32 | source index): one integer sort key per column.
+        let mut next = count.clone();
+        let mut bucket = vec![0u64; count[dim]];
+        let mut s = 0u64;
+        let mut place = |r: u32, c: u32| {
+            if r != NONE {
+                bucket[next[c as usize]] = (u64::from(r) << 32) | s;
+                next[c as usize] += 1;
+            }
+            s += 1;
+        };
+        sources(&mut place);
+        for &(r, c) in &more {
+            place(r, c);
+        }
+        drop(next);
+        let (col_ptr, row_idx, pos) = compress(dim, &count, &mut bucket, n_fill + more.len());
         let mut pos = pos;
         pos.truncate(n_fill);
         let structure = structure_hash(p);
@@ -252,7 +305,7 @@ impl Doubled {
         for &(_, _, v) in &p.k.entries {
             let slot = self.pos[s];
             if slot != NONE {
-                self.values[slot] += v;
+                self.values[slot as usize] += v;
             }
             s += 1;
         }
@@ -281,19 +334,19 @@ impl Doubled {
             let sg = self.scaling.sigma[ci];
             for &(_, v) in &c.terms {
                 for _ in 0..per_term {
-                    self.values[self.pos[s]] += sg * v;
+                    self.values[self.pos[s] as usize] += sg * v;
                     s += 1;
                 }
             }
         }
         for ci in 0..m {
             let a = self.scaling.alpha[ci];
-            self.values[self.pos[s]] += -a;
-            self.values[self.pos[s + 1]] += -a;
-            self.values[self.pos[s + 2]] += a;
+            self.values[self.pos[s] as usize] += -a;
+            self.values[self.pos[s + 1] as usize] += -a;
+            self.values[self.pos[s + 2] as usize] += a;
             s += 3;
             if !self.symmetric {
-                self.values[self.pos[s]] += a;
+                self.values[self.pos[s] as usize] += a;
                 s += 1;
             }
         }
@@ -353,54 +406,39 @@ impl Doubled {
     }
 }
 
-/// Builds a CSC pattern (sorted rows, duplicates merged) from (row, col)
-/// pairs by a counting sort on columns, and returns the slot of each pair.
-/// O(nnz) plus tiny per-column sorts: a global sort would cost a sizeable
-/// fraction of the factorisation at 10⁶ entries.
 /// CSC `(col_ptr, row_idx)` plus the slot of each source pair.
-type Compressed = (Vec<usize>, Vec<usize>, Vec<usize>);
+type Compressed = (Vec<usize>, Vec<usize>, Vec<u32>);
 
-fn compress(dim: usize, src: &[(usize, usize)]) -> Result<Compressed, SolveError> {
-    let mut count = vec![0usize; dim + 1];
-    for &(r, c) in src {
-        if r != NONE {
-            count[c + 1] += 1;
-        }
-    }
-    for c in 0..dim {
-        count[c + 1] += count[c];
-    }
-    let mut next = count.clone();
-    let mut bucket = vec![(0usize, 0usize); count[dim]];
-    for (s, &(r, c)) in src.iter().enumerate() {
-        if r != NONE {
-            bucket[next[c]] = (r, s);
-            next[c] += 1;
-        }
-    }
-    let mut pos = vec![NONE; src.len()];
+/// Builds a CSC pattern (sorted rows, duplicates merged) from the
+/// column-bucketed keys `row << 32 | source` of a counting sort on columns
+/// (`count` = column starts), and returns the slot of each source. O(nnz)
+/// plus tiny per-column sorts: a global sort would cost a sizeable
+/// fraction of the factorisation at 10⁶ entries.
+fn compress(dim: usize, count: &[usize], bucket: &mut [u64], n_src: usize) -> Compressed {
+    let mut pos = vec![NONE; n_src];
     let mut col_ptr = vec![0usize; dim + 1];
     let mut row_idx = Vec::with_capacity(bucket.len());
     for c in 0..dim {
         let b = &mut bucket[count[c]..count[c + 1]];
         b.sort_unstable();
-        let mut last = NONE;
-        for &(r, s) in b.iter() {
+        let mut last = u64::MAX;
+        for &key in b.iter() {
+            let r = key >> 32;
             if r != last {
-                row_idx.push(r);
+                row_idx.push(r as usize);
                 last = r;
             }
-            pos[s] = row_idx.len() - 1;
+            pos[(key & 0xffff_ffff) as usize] = (row_idx.len() - 1) as u32;
         }
         col_ptr[c + 1] = row_idx.len();
     }
-    Ok((col_ptr, row_idx, pos))
+    (col_ptr, row_idx, pos)
 }
 
 /// A fast structural fingerprint (indices and kinds, not values) for the
 /// "same pattern" test: reading it costs one pass over the entries, far
 /// less than a factorisation.
-fn structure_hash(p: &Problem) -> u64 {
+pub(crate) fn structure_hash(p: &Problem) -> u64 {
     let mut h: u64 = 0xcbf2_9ce4_8422_2325;
     let mut mix = |x: u64| {
         h ^= x;

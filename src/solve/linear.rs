@@ -48,6 +48,35 @@ fn oom() -> SolveError {
     SolveError::Other("out of memory in the sparse factorisation".into())
 }
 
+/// Flops per factor entry above which threads pay for the numeric
+/// factorisation. Measured on 2 cores: 2D meshes (≈ 200–700 flops per
+/// entry, many small supernodes) run faster sequentially (0.27–0.47 s
+/// against 0.32–0.61 s at n = 262k), 3D ones (≈ 2,500) 1.4–1.6× faster with
+/// threads (solver-notes §1.1 saw the same).
+const PAR_FLOPS_PER_ENTRY: f64 = 1000.0;
+
+/// faer's global parallelism for factors dense enough to use it, else
+/// sequential.
+fn choose_par(symbolic: &SymbolicCholesky<usize>) -> Par {
+    let SymbolicCholeskyRaw::Supernodal(sup) = symbolic.raw() else {
+        return Par::Seq;
+    };
+    let mut flops = 0.0_f64;
+    for s in 0..sup.n_supernodes() {
+        let w = sup.supernode_end()[s] - sup.supernode_begin()[s];
+        let r = (w + sup.supernode(s).pattern().len()) as f64;
+        // Σ_k (r − k)² over the w columns, in closed form.
+        let w = w as f64;
+        flops += w * r * r - r * w * (w - 1.0) + (w - 1.0) * w * (2.0 * w - 1.0) / 6.0;
+    }
+    let nnz = symbolic.len_val().max(1) as f64;
+    if flops / nnz >= PAR_FLOPS_PER_ENTRY {
+        faer::get_global_parallelism()
+    } else {
+        Par::Seq
+    }
+}
+
 /// Supernodal LDLᵀ in a fixed elimination order.
 #[derive(Debug)]
 pub struct SymFactor {
@@ -75,7 +104,8 @@ impl SymFactor {
         let symbolic = factorize_symbolic_cholesky(a, faer::Side::Upper, SymmetricOrdering::Custom(perm), params)
             .map_err(|e| SolveError::Other(format!("symbolic analysis failed: {e:?}")))?;
         let l = vec![0.0; symbolic.len_val()];
-        Ok(SymFactor { symbolic, l, fwd, inv, n, par: faer::get_global_parallelism(), factored: false })
+        let par = choose_par(&symbolic);
+        Ok(SymFactor { symbolic, l, fwd, inv, n, par, factored: false })
     }
 
     pub fn dim(&self) -> usize {

@@ -13,23 +13,34 @@
 //! * [`condense`]: the interrupted factorisation onto the second multipliers
 //!   of the unilateral conditions (and onto chosen unknowns, for SUPER).
 //! * [`status`]: the status (active-set) iteration on the condensed operator.
-//! * [`unilateral`]: the UNIL driver choosing among the methods.
+//! * [`unilateral`]: the UNIL driver choosing among the methods: CONDENSE
+//!   (above), ANCIEN (`uni_ancien`: Guyan condensation onto the contact
+//!   unknowns and [`ancien`]), CREUX (`creux`: the status iteration on the
+//!   sparse system, for conditions on most unknowns) and ITER (`iter`: G by
+//!   preconditioned CG, no factorisation).
 
 pub mod ancien;
 pub mod condense;
 pub mod condensed_op;
+mod creux;
 pub mod dense_ldlt;
 pub mod direct;
 pub mod error;
 pub mod groups;
+mod iter;
 pub mod lagrange;
 pub mod linear;
 pub mod ordering;
 pub mod problem;
 pub mod status;
+mod uni_ancien;
 #[doc(hidden)]
 pub mod unilateral;
 
+#[cfg(test)]
+mod methods_props;
+#[cfg(test)]
+mod methods_tests;
 #[cfg(test)]
 mod status_loop_tests;
 #[cfg(test)]

@@ -20,7 +20,7 @@ fn min_ratio(a: &Mat<f64>) -> f64 {
 }
 
 /// K = BBᵀ of rank n − r; C sparse, full row rank, ker K ∩ ker C = {0}.
-fn random_problem(rng: &mut Rng) -> Dense {
+pub(super) fn random_problem(rng: &mut Rng) -> Dense {
     loop {
         let n = 1 + rng.below(8);
         // Half the cases with m = n: the most statuses to choose from.

@@ -3,12 +3,16 @@
 //! Default method (CONDENSE, unilateral.md §3): one interrupted LDLᵀ gives
 //! the condensed operator on the second multipliers of the unilateral
 //! conditions; the status iteration runs on that dense m×m problem; one
-//! partial substitution recovers u and the multipliers.
+//! partial substitution recovers u and the multipliers. The other methods
+//! ([`Method`]) return the same [`Solution`] and make the same status
+//! decisions (the loop of [`status`] over their own linear algebra); the
+//! automatic choice is documented on [`Method::Auto`].
 //!
 //! The [`UnilCache`] lives with the RIGIDITE object on the language side:
-//! it keeps the condenser (symbolic analysis always reusable for the same
-//! structure, numeric factor reused when the values are identical too) and
-//! the last converged statuses, the warm start of the next RESO.
+//! it keeps the condenser or CREUX's sparse operator (symbolic analysis
+//! always reusable for the same structure, numeric factor reused when the
+//! values are identical too) and the last converged statuses, the warm
+//! start of the next RESO (reset when the structure changes).
 
 use std::time::Instant;
 
@@ -21,16 +25,21 @@ pub use status::{IterRecord, Rule};
 /// How the unilateral problem is solved.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Method {
-    /// Currently CONDENSE.
+    /// CONDENSE, except CREUX when the conditions touch more than a
+    /// quarter of the unknowns (m > n/4, with m > 2000) or when the dense m×m operator
+    /// would exceed about 1 GB (8m² bytes, m ≳ 11,000). ITER is never
+    /// chosen automatically: the language asks for it ('OPTI RESO ITER').
     #[default]
     Auto,
     /// Interrupted factorisation onto the unilateral λ2 (§3).
     Condense,
-    /// Cast3M's old method (SUPER onto the primal unknowns): not wired yet.
+    /// Cast3M's old method: Guyan condensation onto the primal unknowns of
+    /// the unilateral rows, small doubled system refactored per status (§5).
     Ancien,
-    /// G formed by one iterative solve per condition: not implemented.
+    /// G formed by one preconditioned-CG solve per condition (§6).
     Iter,
-    /// Status iteration on the full sparse doubled system: not implemented.
+    /// Status iteration on the full sparse system, symbolic analysis
+    /// reused, one numeric factorisation per status (obstacle problems).
     Creux,
 }
 
@@ -55,6 +64,10 @@ impl Default for UnilOptions {
 pub struct UnilCache {
     condenser: Option<Condenser>,
     values: u64,
+    /// Structure the warm start belongs to.
+    structure: Option<u64>,
+    /// CREUX: the sparse operator with its symbolic analysis.
+    pub(super) creux: Option<super::creux::Creux>,
     /// Final statuses of the last converged solve (unilateral order).
     pub status: Option<Vec<bool>>,
 }
@@ -79,34 +92,25 @@ pub fn solve_unilateral(
     cache: &mut UnilCache,
     on_iter: &mut dyn FnMut(&IterRecord),
 ) -> Result<(Solution, UnilReport), SolveError> {
-    match opts.method {
-        Method::Auto | Method::Condense => {}
-        Method::Ancien | Method::Iter | Method::Creux => {
-            return Err(SolveError::Other(format!("unilateral method {:?} is not available yet", opts.method)))
-        }
+    let (n, m) = (p.k.n, p.conditions.len());
+    if load.f.len() != n || load.d.len() != m {
+        return Err(SolveError::Other(format!(
+            "load sizes ({}, {}) do not match ({n}, {m})",
+            load.f.len(),
+            load.d.len()
+        )));
     }
-    let mut phases = Vec::new();
-    let t0 = Instant::now();
-    let values = values_hash(p);
-    let reuse = cache.condenser.as_ref().is_some_and(|c| c.same_pattern(p));
-    if !reuse {
-        cache.condenser = None;
+    let uni: Vec<usize> = (0..m).filter(|&i| p.conditions[i].kind.is_unilateral()).collect();
+    if uni.is_empty() {
+        return Err(SolveError::Other("no unilateral condition".into()));
+    }
+    let method = choose(opts.method, n, uni.len());
+    // The warm start belongs to one structure and one condition set.
+    let structure = super::lagrange::structure_hash(p);
+    if cache.structure != Some(structure) {
         cache.status = None;
-        cache.condenser = Some(Condenser::new(p)?);
-    } else if cache.values != values {
-        let c = cache.condenser.as_mut().expect("checked above");
-        if let Err(e) = c.refactor(p) {
-            cache.condenser = None;
-            return Err(e);
-        }
+        cache.structure = Some(structure);
     }
-    cache.values = values;
-    let cond = cache.condenser.as_ref().expect("built above");
-    let uni = cond.unilateral().to_vec();
-    let condensed = cond.condensed(load)?;
-    phases.push(("condense", t0.elapsed().as_secs_f64()));
-
-    let t1 = Instant::now();
     let start = match &opts.initial {
         Some(s) if s.len() != uni.len() => {
             return Err(SolveError::Other(format!(
@@ -134,22 +138,101 @@ pub fn solve_unilateral(
         on_iter(&g);
         records.push(g);
     };
-    let res = status::run(&condensed, &sopts, &mut forward).map_err(|e| to_global(e, &uni))?;
-    phases.push(("status", t1.elapsed().as_secs_f64()));
-
-    let t2 = Instant::now();
-    let sol = cond.recover(load, &res.x, &res.active)?;
-    phases.push(("recover", t2.elapsed().as_secs_f64()));
-    cache.status = Some(res.active.clone());
+    let mut phases = Vec::new();
+    let res = match method {
+        Method::Auto | Method::Condense => condense(p, load, &sopts, cache, &mut forward, &mut phases),
+        Method::Ancien => super::uni_ancien::solve(p, load, &uni, &sopts, &mut forward, &mut phases),
+        Method::Creux => super::creux::solve(p, load, &uni, &sopts, cache, &mut forward, &mut phases),
+        Method::Iter => super::iter::solve(p, load, &uni, &sopts, &mut forward, &mut phases),
+    };
+    let (sol, active) = match res {
+        Ok(r) => r,
+        Err(StatusError::Global(e)) => return Err(e),
+        Err(StatusError::Local(e)) => return Err(to_global(e, &uni)),
+    };
     let report = UnilReport {
-        method: "condense",
+        method: match method {
+            Method::Auto | Method::Condense => "condense",
+            Method::Ancien => "ancien",
+            Method::Creux => "creux",
+            Method::Iter => "iter",
+        },
         m: uni.len(),
         iterations: records.len(),
-        active_count: res.active.iter().filter(|a| **a).count(),
+        active_count: active.iter().filter(|a| **a).count(),
         records,
         phase_seconds: phases,
     };
+    cache.status = Some(active);
     Ok((sol, report))
+}
+
+/// Below this many conditions the dense operator costs little (≤ 40 ms per
+/// factorisation at m = 2000, solver-notes §3.4) whatever n.
+const MIN_CREUX: usize = 2000;
+
+/// The automatic choice (see [`Method::Auto`]).
+fn choose(asked: Method, n: usize, m: usize) -> Method {
+    match asked {
+        Method::Auto => {
+            // 8m² bytes of dense G above ~1 GB, or conditions on a large
+            // fraction of the unknowns (obstacle problems): the dense
+            // condensed operator would dominate, the sparse iteration not.
+            let dense_bytes = 8.0 * (m as f64) * (m as f64);
+            if (4 * m > n && m > MIN_CREUX) || dense_bytes > 1.0e9 {
+                Method::Creux
+            } else {
+                Method::Condense
+            }
+        }
+        other => other,
+    }
+}
+
+/// An error in global condition numbers, or one from the status loop in
+/// positions among the unilateral conditions.
+#[derive(Debug)]
+pub(super) enum StatusError {
+    Global(SolveError),
+    Local(SolveError),
+}
+
+/// CONDENSE: interrupted factorisation, dense status loop, recovery.
+fn condense(
+    p: &Problem,
+    load: &Load,
+    sopts: &status::StatusOptions,
+    cache: &mut UnilCache,
+    on_iter: &mut dyn FnMut(&IterRecord),
+    phases: &mut Vec<(&'static str, f64)>,
+) -> Result<(Solution, Vec<bool>), StatusError> {
+    let g = StatusError::Global;
+    let t0 = Instant::now();
+    let values = values_hash(p);
+    let reuse = cache.condenser.as_ref().is_some_and(|c| c.same_pattern(p));
+    if !reuse {
+        cache.condenser = None;
+        cache.condenser = Some(Condenser::new(p).map_err(g)?);
+    } else if cache.values != values {
+        let c = cache.condenser.as_mut().expect("checked above");
+        if let Err(e) = c.refactor(p) {
+            cache.condenser = None;
+            return Err(g(e));
+        }
+    }
+    cache.values = values;
+    let cond = cache.condenser.as_ref().expect("built above");
+    let condensed = cond.condensed(load).map_err(g)?;
+    phases.push(("condense", t0.elapsed().as_secs_f64()));
+
+    let t1 = Instant::now();
+    let res = status::run(&condensed, sopts, on_iter).map_err(StatusError::Local)?;
+    phases.push(("status", t1.elapsed().as_secs_f64()));
+
+    let t2 = Instant::now();
+    let sol = cond.recover(load, &res.x, &res.active).map_err(g)?;
+    phases.push(("recover", t2.elapsed().as_secs_f64()));
+    Ok((sol, res.active))
 }
 
 /// Condition positions among the unilateral ones → global numbers.
@@ -168,7 +251,7 @@ fn to_global(e: SolveError, uni: &[usize]) -> SolveError {
 
 /// Fingerprint of the numbers of `p` (K values and condition coefficients),
 /// to reuse the numeric factor when nothing changed.
-fn values_hash(p: &Problem) -> u64 {
+pub(super) fn values_hash(p: &Problem) -> u64 {
     let mut h: u64 = 0x9e37_79b9_7f4a_7c15;
     let mut mix = |x: f64| {
         h ^= x.to_bits();

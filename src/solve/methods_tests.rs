@@ -1,0 +1,285 @@
+//! Every UNIL method through `solve_unilateral` (the sparse path) against
+//! CONDENSE on the cases of unilateral-cases.md and on random problems.
+
+use super::problem::{Condition, Kind, Load, Matrix, Problem, Solution};
+use super::status_testkit::*;
+use super::status_tests::{chain, cycling, two_spans};
+use super::unilateral::{solve_unilateral, Method, UnilCache, UnilOptions};
+use super::SolveError;
+use faer::Mat;
+
+/// The sparse problem of a dense test case (diagonal always stored, so that
+/// a zero stiffness still touches its unknown).
+pub(super) fn sparse(d: &Dense) -> (Problem, Load) {
+    let n = d.n();
+    let mut entries = Vec::new();
+    for j in 0..n {
+        for i in 0..n {
+            if i == j || d.k[(i, j)] != 0.0 {
+                entries.push((i, j, d.k[(i, j)]));
+            }
+        }
+    }
+    let conditions = d
+        .rows
+        .iter()
+        .zip(&d.sense)
+        .map(|(r, &s)| Condition { terms: r.clone(), kind: if s > 0.0 { Kind::Mini } else { Kind::Maxi } })
+        .collect();
+    (Problem { k: Matrix { n, entries, symmetric: true }, conditions }, Load { f: d.f.clone(), d: d.d.clone() })
+}
+
+fn run(p: &Problem, l: &Load, method: Method) -> Result<Solution, SolveError> {
+    let o = UnilOptions { method, ..Default::default() };
+    solve_unilateral(p, l, &o, &mut UnilCache::default(), &mut |_| {}).map(|r| r.0)
+}
+
+/// Same answer (or the same kind of error) as CONDENSE.
+/// Returns whether the case was solved (not an error).
+pub(super) fn same_as_condense(name: &str, p: &Problem, l: &Load, method: Method, tol: f64) -> bool {
+    let want = run(p, l, Method::Condense);
+    let got = run(p, l, method);
+    match (&want, &got) {
+        (Ok(a), Ok(b)) => {
+            let scale = a.u.iter().chain(&a.lambda).fold(1.0_f64, |s, v| s.max(v.abs()));
+            for (k, (x, y)) in a.u.iter().zip(&b.u).enumerate() {
+                assert!((x - y).abs() <= tol * scale, "{name} {method:?}: u[{k}] {y} vs {x}");
+            }
+            for (k, (x, y)) in a.lambda.iter().zip(&b.lambda).enumerate() {
+                assert!((x - y).abs() <= tol * scale, "{name} {method:?}: λ[{k}] {y} vs {x}");
+            }
+            assert_eq!(a.active, b.active, "{name} {method:?}: statuses");
+            true
+        }
+        (Err(a), Err(b)) => {
+            assert_eq!(std::mem::discriminant(a), std::mem::discriminant(b), "{name} {method:?}: {b:?} vs {a:?}");
+            false
+        }
+        _ => panic!("{name} {method:?}: {got:?} vs CONDENSE {want:?}"),
+    }
+}
+
+/// The cases of unilateral-cases.md as sparse problems.
+pub(super) fn cases() -> Vec<(String, Problem, Load)> {
+    let mut out: Vec<(String, Dense)> = Vec::new();
+    for g in [1.0, 0.2, 0.5] {
+        out.push((format!("a g={g}"), spring(10.0, 5.0).cond(&[(0, 1.0)], MAXI, g)));
+    }
+    out.push(("a4".into(), spring(10.0, -5.0).cond(&[(0, 1.0)], MINI, -0.2)));
+    for load in [0.4, 1.0, 3.0] {
+        out.push((format!("b P={load}"), chain(load)));
+    }
+    out.push(("c".into(), two_spans(1.0)));
+    out.push(("c2".into(), two_spans(-1.0)));
+    for p in [1.0, -1.0] {
+        let mut f = vec![0.0; 6];
+        f[2] = -p;
+        let d = Dense::new(beam(&[0.0, 1.0, 4.0], 1.0), f).cond(&[(0, 1.0)], MINI, 0.0).cond(&[(4, 1.0)], MINI, 0.0);
+        out.push((format!("d/e2 P={p}"), d));
+    }
+    out.push(("e1".into(), spring(0.0, 1.0).cond(&[(0, 1.0)], MINI, 0.0)));
+    out.push(("e1'".into(), spring(0.0, -1.0).cond(&[(0, 1.0)], MINI, 0.0)));
+    let mut f = vec![0.0; 6];
+    f[4] = -1.0;
+    let e3 = Dense::new(beam(&[0.0, 3.0, 4.0], 1.0), f).cond(&[(0, 1.0)], MINI, 0.0).cond(&[(2, 1.0)], MINI, 0.0);
+    out.push(("e3".into(), e3));
+    out.push(("e4".into(), spring(10.0, 0.0).cond(&[(0, 1.0)], MINI, 1.0).cond(&[(0, 1.0)], MAXI, 0.0)));
+    out.push(("f".into(), cycling()));
+    let k2 = Mat::from_fn(2, 2, |i, j| if i == j { [2.0, 3.0][i] } else { 0.0 });
+    for load in [5.0, 1.5] {
+        out.push((
+            format!("g {load}"),
+            Dense::new(k2.clone(), vec![load, 0.0]).cond(&[(1, 1.0), (0, -1.0)], MINI, -1.0),
+        ));
+    }
+    out.push(("h".into(), spring(10.0, -5.0).cond(&[(0, 1.0)], MINI, -0.2).cond(&[(0, 1.0)], MINI, -0.2)));
+    out.push(("i".into(), spring(10.0, 5.0).cond(&[(0, 1.0)], MAXI, 0.5)));
+    for scale in [1.0, 7.0, 0.01] {
+        let row = [(0, 2.5 * scale), (1, -scale), (2, 3.0 * scale)];
+        out.push((format!("k {scale}"), Dense::new(Mat::identity(3, 3), vec![0.0; 3]).cond(&row, MINI, 0.3 * scale)));
+    }
+    for (f, dmin, dmax) in [(5.0, -0.1, 0.2), (-5.0, -0.1, 0.2), (1.0, -0.1, 0.2), (1.0, 0.3, 0.2)] {
+        let d = spring(10.0, f).cond(&[(0, 1.0)], MINI, dmin).cond(&[(0, 1.0)], MAXI, dmax);
+        out.push((format!("l F={f} [{dmin}, {dmax}]"), d));
+    }
+    let mut all: Vec<(String, Problem, Load)> = out
+        .into_iter()
+        .map(|(name, d)| {
+            let (p, l) = sparse(&d);
+            (name, p, l)
+        })
+        .collect();
+    // Mixed: a spring chain with UX blocked at 0 (bilateral) and a MAXI
+    // stop at the free end, for several loads.
+    for load in [1.0, 3.0, -1.0] {
+        let mut entries = vec![];
+        for i in 0..3 {
+            entries.extend([(i, i, 1.0), (i + 1, i + 1, 1.0), (i, i + 1, -1.0), (i + 1, i, -1.0)]);
+        }
+        let p = Problem {
+            k: Matrix { n: 4, entries, symmetric: true },
+            conditions: vec![
+                Condition { terms: vec![(0, 1.0)], kind: Kind::Equal },
+                Condition { terms: vec![(3, 1.0)], kind: Kind::Maxi },
+                Condition { terms: vec![(2, 1.0), (1, -0.5)], kind: Kind::Mini },
+            ],
+        };
+        all.push((format!("mixed {load}"), p, Load { f: vec![0.0, 0.0, 0.3, load], d: vec![0.1, 1.0, -0.2] }));
+    }
+    all
+}
+
+#[test]
+fn ancien_matches_condense_on_the_cases() {
+    for (name, p, l) in cases() {
+        let _ = same_as_condense(&name, &p, &l, Method::Ancien, 1e-9);
+    }
+}
+
+#[test]
+fn ancien_refuses_bilateral_rows_on_contact_unknowns() {
+    let (mut p, mut l) = sparse(&chain(1.0));
+    p.conditions.push(Condition { terms: vec![(1, 1.0), (2, -1.0)], kind: Kind::Equal });
+    l.d.push(0.0);
+    assert!(matches!(run(&p, &l, Method::Ancien), Err(SolveError::Other(_))));
+}
+
+#[test]
+fn creux_matches_condense_on_the_cases() {
+    for (name, p, l) in cases() {
+        let _ = same_as_condense(&name, &p, &l, Method::Creux, 1e-9);
+    }
+}
+
+/// A random sparse problem: a banded K (sometimes with one rigid mode),
+/// single-unknown and multi-unknown unilateral rows, a few bilateral rows.
+pub(super) fn random_problem(rng: &mut Rng) -> (Problem, Load) {
+    let n = 2 + rng.below(12);
+    let mut entries = Vec::new();
+    let free = rng.below(3) == 0;
+    for i in 0..n {
+        // Springs between neighbours and to the ground (unless free).
+        let k = 1.0 + 2.0 * rng.sym().abs();
+        if i + 1 < n {
+            entries.extend([(i, i, k), (i + 1, i + 1, k), (i, i + 1, -k), (i + 1, i, -k)]);
+        }
+        if i + 2 < n && rng.below(2) == 0 {
+            let k2 = 0.3 * rng.sym().abs();
+            entries.extend([(i, i, k2), (i + 2, i + 2, k2), (i, i + 2, -k2), (i + 2, i, -k2)]);
+        }
+        if !free {
+            entries.push((i, i, 0.2 + rng.sym().abs()));
+        }
+    }
+    let mut conditions = Vec::new();
+    let mut d = Vec::new();
+    let m = 1 + rng.below(n);
+    let mut used = vec![false; n];
+    for _ in 0..m {
+        let j = rng.below(n);
+        let kind = if rng.below(2) == 0 { Kind::Mini } else { Kind::Maxi };
+        let terms = if rng.below(3) == 0 {
+            let l = (j + 1 + rng.below(n - 1)) % n;
+            used[l] = true;
+            vec![(j, 1.0), (l, -0.5 - rng.sym().abs())]
+        } else {
+            vec![(j, if rng.below(2) == 0 { 1.0 } else { -2.0 })]
+        };
+        used[j] = true;
+        conditions.push(Condition { terms, kind });
+        d.push(0.3 * rng.sym());
+    }
+    if rng.below(3) == 0 {
+        if let Some(j) = (0..n).find(|&j| !used[j]) {
+            conditions.push(Condition { terms: vec![(j, 1.0)], kind: Kind::Equal });
+            d.push(0.1 * rng.sym());
+        }
+    }
+    let f = (0..n).map(|_| 2.0 * rng.sym()).collect();
+    (Problem { k: Matrix { n, entries, symmetric: true }, conditions }, Load { f, d })
+}
+
+#[test]
+fn creux_matches_condense_on_random_problems() {
+    let mut rng = Rng(0x5EED_C4E7);
+    let mut solved = 0;
+    for case in 0..400 {
+        let (p, l) = random_problem(&mut rng);
+        solved += usize::from(same_as_condense(&format!("random {case}"), &p, &l, Method::Creux, 1e-8));
+    }
+    // Both outcomes must be exercised.
+    assert!((200..400).contains(&solved), "{solved} of 400 solved");
+}
+
+#[test]
+fn ancien_matches_condense_on_random_problems() {
+    let mut rng = Rng(0xA7C1_E700);
+    let mut solved = 0;
+    for case in 0..400 {
+        let (p, l) = random_problem(&mut rng);
+        solved += usize::from(same_as_condense(&format!("random {case}"), &p, &l, Method::Ancien, 1e-8));
+    }
+    assert!((200..400).contains(&solved), "{solved} of 400 solved");
+}
+
+#[test]
+fn iter_matches_condense_on_the_cases() {
+    for (name, p, l) in cases() {
+        let _ = same_as_condense(&name, &p, &l, Method::Iter, 1e-8);
+    }
+}
+
+#[test]
+fn iter_matches_condense_on_random_problems() {
+    let mut rng = Rng(0x17E2_0001);
+    let mut solved = 0;
+    for case in 0..300 {
+        let (p, l) = random_problem(&mut rng);
+        solved += usize::from(same_as_condense(&format!("random {case}"), &p, &l, Method::Iter, 1e-8));
+    }
+    assert!((150..300).contains(&solved), "{solved} of 300 solved");
+}
+
+#[test]
+fn iter_refuses_bilateral_relations() {
+    let (mut p, mut l) = sparse(&chain(1.0));
+    p.conditions.push(Condition { terms: vec![(1, 1.0), (2, -1.0)], kind: Kind::Equal });
+    l.d.push(0.0);
+    assert!(matches!(run(&p, &l, Method::Iter), Err(SolveError::Other(_))));
+}
+
+/// Two bodies that share nothing: the tail of the interrupted
+/// factorisation is not connected by the elimination, so CONDENSE needs
+/// the explicit tail pairs (its fallback). Checked against the dense
+/// reference, and every method against CONDENSE.
+#[test]
+fn disconnected_contact_zones() {
+    let k = Mat::<f64>::from_fn(6, 6, |i, j| {
+        let (bi, bj) = (i / 3, j / 3);
+        if bi != bj {
+            0.0
+        } else if i == j {
+            2.5
+        } else if i.abs_diff(j) == 1 {
+            -1.0
+        } else {
+            0.0
+        }
+    });
+    let d = Dense::new(k, vec![1.0, -0.5, 2.0, 1.0, 0.3, -2.0])
+        .cond(&[(2, 1.0)], MAXI, 0.05)
+        .cond(&[(0, 1.0), (1, -1.0)], MAXI, 0.1)
+        .cond(&[(3, 1.0)], MINI, -0.2)
+        .cond(&[(5, 1.0)], MINI, -0.1);
+    let want = solve(&d, &Default::default()).unwrap();
+    let (p, l) = sparse(&d);
+    let got = run(&p, &l, Method::Condense).unwrap();
+    for (a, b) in got.u.iter().zip(&want.u) {
+        assert!((a - b).abs() < 1e-10, "{:?} vs {:?}", got.u, want.u);
+    }
+    assert_eq!(got.active, want.active);
+    assert!(want.active.iter().any(|a| *a) && want.active.iter().any(|a| !*a), "{want:?}");
+    for m in [Method::Ancien, Method::Creux, Method::Iter] {
+        let _ = same_as_condense("disconnected", &p, &l, m, 1e-9);
+    }
+}
