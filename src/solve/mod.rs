@@ -30,6 +30,7 @@ pub mod groups;
 mod iter;
 pub mod lagrange;
 pub mod linear;
+pub mod nonsym;
 pub mod ordering;
 pub mod problem;
 pub mod status;

@@ -139,7 +139,11 @@ pub fn solve_unilateral(
         records.push(g);
     };
     let mut phases = Vec::new();
+    // A non-symmetric operator has no LDLᵀ to condense or to update: every
+    // method falls back to full LU solves per status (nonsym.rs).
+    let nonsym = !p.k.symmetric;
     let res = match method {
+        _ if nonsym => super::nonsym::solve(p, load, &uni, &sopts, &mut forward, &mut phases),
         Method::Auto | Method::Condense => condense(p, load, &sopts, cache, &mut forward, &mut phases),
         Method::Ancien => super::uni_ancien::solve(p, load, &uni, &sopts, &mut forward, &mut phases),
         Method::Creux => super::creux::solve(p, load, &uni, &sopts, cache, &mut forward, &mut phases),
@@ -152,6 +156,7 @@ pub fn solve_unilateral(
     };
     let report = UnilReport {
         method: match method {
+            _ if nonsym => "lu",
             Method::Auto | Method::Condense => "condense",
             Method::Ancien => "ancien",
             Method::Creux => "creux",
