@@ -26,6 +26,8 @@ pub(super) fn solve(
     phases: &mut Vec<(&'static str, f64)>,
 ) -> Result<(Solution, Vec<bool>), StatusError> {
     let t0 = std::time::Instant::now();
+    // Indices are used below before any factorisation checks them.
+    super::lagrange::validate(p).map_err(StatusError::Global)?;
     let n = p.k.n;
     let mut in_p = vec![false; n];
     for &i in uni {
