@@ -24,6 +24,8 @@ pub struct AncienResult {
     pub lambda: Vec<f64>,
     pub active: Vec<bool>,
     pub records: Vec<IterRecord>,
+    /// Physical multipliers of the `eq_rows`.
+    pub eq_lambda: Vec<f64>,
 }
 
 /// The data of the old method, condensed onto the unknowns P.
@@ -40,10 +42,16 @@ pub struct AncienProblem<'a> {
     /// The limits d_i.
     pub d: &'a [f64],
     /// k_i of the §2.2 scaling, taken from the stiffness before
-    /// condensation, as Cast3M does. `None` takes it from K_c, which is
-    /// wrong when K_c is (nearly) zero, e.g. a body held only by its
-    /// unilateral supports condensed onto the supported dofs.
+    /// condensation, as Cast3M does: one per unilateral row, then one per
+    /// `eq_rows` row. `None` takes it from K_c, which is wrong when K_c is
+    /// (nearly) zero, e.g. a body held only by its unilateral supports
+    /// condensed onto the supported dofs.
     pub k_ref: Option<&'a [f64]>,
+    /// Bilateral rows over `0..n_P` (`c·u = d`), always assembled: those
+    /// that share unknowns with the unilateral rows cannot stay inside K_c.
+    pub eq_rows: &'a [Vec<(usize, f64)>],
+    /// Their limits.
+    pub eq_d: &'a [f64],
 }
 
 /// Runs the old method.
@@ -54,25 +62,28 @@ pub fn run(
 ) -> Result<AncienResult, SolveError> {
     let mut old = Old::new(p)?;
     let (_, active, records) = iterate(&mut old, p.sense, p.rows, p.d, opts, on_iter)?;
-    let (n, rows) = (p.fc.len(), p.rows);
-    let (u, lambda) = if rows.is_empty() {
+    let (n, rows, mu) = (p.fc.len(), p.rows, p.rows.len());
+    let (u, mut lambda) = if rows.is_empty() {
         // No condition: plain solve (K_c must then be regular).
         old.active = Vec::new();
         old.set_status(&[]).map_err(|_| SolveError::Singular { dofs: (0..n).collect() })?;
         old.solve()?;
-        (old.u.clone(), Vec::new())
+        (old.u.clone(), old.lambda.clone())
     } else {
         (old.u.clone(), old.lambda.clone())
     };
-    Ok(AncienResult { u, lambda, active, records })
+    let eq_lambda = lambda.split_off(mu.min(lambda.len()));
+    Ok(AncienResult { u, lambda, active, records, eq_lambda })
 }
 
 struct Old<'a> {
     kc: Mat<f64>,
     fc: &'a [f64],
+    /// The unilateral rows (`0..mu`), then the bilateral ones.
     rows: Vec<Vec<(usize, f64)>>,
+    mu: usize,
     sense: &'a [f64],
-    d: &'a [f64],
+    d: Vec<f64>,
     sigma: Vec<f64>,
     alpha: Vec<f64>,
     chat: Vec<f64>,
@@ -89,18 +100,22 @@ struct Old<'a> {
 
 impl<'a> Old<'a> {
     fn new(p: &AncienProblem<'a>) -> Result<Self, SolveError> {
-        let (kc, fc, rows, sense, d) = (p.kc, p.fc, p.rows, p.sense, p.d);
-        let (n, m) = (fc.len(), rows.len());
+        let (kc, fc, sense) = (p.kc, p.fc, p.sense);
+        let (n, mu) = (fc.len(), p.rows.len());
         let bad = |what: &str| Err(SolveError::Other(format!("old method data: {what}")));
-        if kc.nrows() != n || kc.ncols() != n || sense.len() != m || d.len() != m {
+        if kc.nrows() != n || kc.ncols() != n || sense.len() != mu || p.d.len() != mu || p.eq_d.len() != p.eq_rows.len()
+        {
             return bad("dimensions differ");
         }
+        let rows: Vec<Vec<(usize, f64)>> = p.rows.iter().chain(p.eq_rows).cloned().collect();
+        let d: Vec<f64> = p.d.iter().chain(p.eq_d).copied().collect();
+        let m = rows.len();
         if rows.iter().flatten().any(|&(j, v)| j >= n || !v.is_finite()) {
             return bad("row entry out of range or not finite");
         }
         let kc = Mat::<f64>::from_fn(n, n, |i, j| 0.5 * (kc[(i, j)] + kc[(j, i)]));
         if (0..n).any(|j| kc.col_as_slice(j).iter().any(|v| !v.is_finite()))
-            || fc.iter().chain(d).any(|v| !v.is_finite())
+            || fc.iter().chain(&d).any(|v| !v.is_finite())
         {
             return bad("non-finite stiffness, load or limit");
         }
@@ -146,6 +161,7 @@ impl<'a> Old<'a> {
             kc,
             fc,
             rows,
+            mu,
             sense,
             d,
             sigma,
@@ -243,7 +259,8 @@ impl Backend for Old<'_> {
         if self.factor.is_some() && active == self.active.as_slice() {
             return Ok(());
         }
-        let list: Vec<usize> = (0..active.len()).filter(|&i| active[i]).collect();
+        // The bilateral rows are always there.
+        let list: Vec<usize> = (0..active.len()).filter(|&i| active[i]).chain(self.mu..self.rows.len()).collect();
         let (mat, positive, scale) = self.assemble(&list);
         // The old method refactors the whole small system at every status.
         let f = DenseLdlt::factor(mat.as_ref());
@@ -267,17 +284,20 @@ impl Backend for Old<'_> {
         self.lambda = vec![0.0; m];
         // x in the units of the condensed method: λ/(2σ) when active,
         // σ(d − c·u)/(2α) (the scaled gap of §2.4) when inactive.
-        let mut x: Vec<f64> =
-            (0..m).map(|i| self.sigma[i] * (self.d[i] - self.row_dot(i, &self.u)) / (2.0 * self.alpha[i])).collect();
+        let mut x: Vec<f64> = (0..self.mu)
+            .map(|i| self.sigma[i] * (self.d[i] - self.row_dot(i, &self.u)) / (2.0 * self.alpha[i]))
+            .collect();
         for (p, &i) in self.list.iter().enumerate() {
-            x[i] = 0.5 * (y[p] + y[n + a + p]);
+            if i < self.mu {
+                x[i] = 0.5 * (y[p] + y[n + a + p]);
+            }
             self.lambda[i] = self.sigma[i] * (y[p] + y[n + a + p]);
         }
         Ok(x)
     }
 
     fn release(&mut self, i: usize) -> Result<(bool, RigidMode), SolveError> {
-        let (n, a, m) = (self.n(), self.list.len(), self.rows.len());
+        let (n, a, m) = (self.n(), self.list.len(), self.mu);
         let Some(p) = self.list.iter().position(|&k| k == i) else {
             return Err(SolveError::Other("old method: release of an inactive condition".into()));
         };
@@ -373,7 +393,16 @@ mod tests {
             // k_i from the full stiffness (§2.2), as the caller would.
             let k_ref: Vec<f64> =
                 supports.iter().map(|&s| (0..n).fold(0.0_f64, |a, l| a.max(p.k[(s, l)].abs()))).collect();
-            let pb = AncienProblem { kc: &kc, fc: &fc, rows: &rows, sense: &sense, d: &d, k_ref: Some(&k_ref) };
+            let pb = AncienProblem {
+                kc: &kc,
+                fc: &fc,
+                rows: &rows,
+                sense: &sense,
+                d: &d,
+                k_ref: Some(&k_ref),
+                eq_rows: &[],
+                eq_d: &[],
+            };
             let old = run(&pb, &StatusOptions::default(), &mut |_| {}).unwrap();
             for (q, &s) in supports.iter().enumerate() {
                 assert!(
@@ -399,7 +428,16 @@ mod tests {
         let a = solve(&p, &o).unwrap();
         assert!((a.lambda[0] + 0.75).abs() < 1e-10 && (a.lambda[1] + 0.25).abs() < 1e-10);
         assert_eq!(a.iterations, 1);
-        let pb = AncienProblem { kc: &p.k, fc: &p.f, rows: &p.rows, sense: &p.sense, d: &p.d, k_ref: None };
+        let pb = AncienProblem {
+            kc: &p.k,
+            fc: &p.f,
+            rows: &p.rows,
+            sense: &p.sense,
+            d: &p.d,
+            k_ref: None,
+            eq_rows: &[],
+            eq_d: &[],
+        };
         let b = run(&pb, &o, &mut |_| {}).unwrap();
         assert!((b.lambda[0] + 0.75).abs() < 1e-10);
     }
@@ -407,7 +445,8 @@ mod tests {
     #[test]
     fn no_condition_is_a_plain_solve() {
         let k = Mat::<f64>::from_fn(1, 1, |_, _| 4.0);
-        let pb = AncienProblem { kc: &k, fc: &[2.0], rows: &[], sense: &[], d: &[], k_ref: None };
+        let pb =
+            AncienProblem { kc: &k, fc: &[2.0], rows: &[], sense: &[], d: &[], k_ref: None, eq_rows: &[], eq_d: &[] };
         let r = run(&pb, &StatusOptions::default(), &mut |_| {}).unwrap();
         assert_eq!(r.u, vec![0.5]);
         let pb = AncienProblem { fc: &[2.0, 1.0], ..pb };

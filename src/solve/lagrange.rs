@@ -142,7 +142,10 @@ impl Doubled {
         let upper = upper_mode(p);
         let n_terms: usize = p.conditions.iter().map(|c| c.terms.len()).sum();
         let n_src = p.k.entries.len() + 4 * n_terms + 4 * m;
-        if dim >= NONE as usize || n_src + 2 * dim + dense_tail.len().pow(2) >= NONE as usize {
+        if dim >= NONE as usize
+            || n_src.saturating_add(2 * dim).saturating_add(dense_tail.len().saturating_mul(dense_tail.len()))
+                >= NONE as usize
+        {
             return Err(SolveError::Other("system too large for 32-bit pattern indices".into()));
         }
         // The source terms as (row, col), in the fixed order fill() follows,

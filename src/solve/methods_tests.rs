@@ -137,11 +137,46 @@ fn ancien_matches_condense_on_the_cases() {
 }
 
 #[test]
-fn ancien_refuses_bilateral_rows_on_contact_unknowns() {
-    let (mut p, mut l) = sparse(&chain(1.0));
-    p.conditions.push(Condition { terms: vec![(1, 1.0), (2, -1.0)], kind: Kind::Equal });
-    l.d.push(0.0);
-    assert!(matches!(run(&p, &l, Method::Ancien), Err(SolveError::Other(_))));
+fn bilateral_rows_on_contact_unknowns() {
+    // A relation between two supported unknowns, and a BLOQ on a third
+    // one tied to them by another relation: every method agrees.
+    let mut entries = vec![(0, 0, 1.0)];
+    for i in 0..3 {
+        entries.extend([(i, i, 1.0), (i + 1, i + 1, 1.0), (i, i + 1, -1.0), (i + 1, i, -1.0)]);
+    }
+    let p = Problem {
+        k: Matrix { n: 4, entries, symmetric: true },
+        conditions: vec![
+            Condition { terms: vec![(1, 1.0)], kind: Kind::Maxi },
+            Condition { terms: vec![(2, 1.0)], kind: Kind::Mini },
+            Condition { terms: vec![(2, 1.0), (3, -0.5)], kind: Kind::Equal },
+        ],
+    };
+    for f in [0.4, 1.0, -3.0] {
+        let l = Load { f: vec![0.0, f, 0.2, -f], d: vec![0.3, -0.2, 0.1] };
+        assert!(same_as_condense("relation", &p, &l, Method::Ancien, 1e-9));
+        assert!(same_as_condense("relation", &p, &l, Method::Creux, 1e-9));
+    }
+    let mut entries = vec![];
+    for i in 0..4 {
+        entries.extend([(i, i, 2.0), (i + 1, i + 1, 1.0), (i, i + 1, -1.0), (i + 1, i, -1.0)]);
+    }
+    let p = Problem {
+        k: Matrix { n: 5, entries, symmetric: true },
+        conditions: vec![
+            Condition { terms: vec![(1, 1.0)], kind: Kind::Maxi },
+            Condition { terms: vec![(1, 1.0), (3, -1.0)], kind: Kind::Equal },
+            // Touches P only once the previous relation has moved.
+            Condition { terms: vec![(3, 1.0), (4, 1.0)], kind: Kind::Equal },
+            Condition { terms: vec![(0, 1.0)], kind: Kind::Mini },
+        ],
+    };
+    for f in [1.0, -2.0] {
+        let l = Load { f: vec![-0.5, f, 0.0, 0.3, -f], d: vec![0.1, 0.02, 0.05, -0.2] };
+        for m in [Method::Ancien, Method::Creux] {
+            assert!(same_as_condense("chained", &p, &l, m, 1e-9));
+        }
+    }
 }
 
 #[test]

@@ -161,7 +161,16 @@ pub fn solve_counting(p: &Dense, opts: &StatusOptions) -> (Result<Answer, SolveE
 
 /// The old method with K_c = K (every dof in P).
 pub fn solve_ancien(p: &Dense, opts: &StatusOptions) -> Result<AncienResult, SolveError> {
-    let pb = ancien::AncienProblem { kc: &p.k, fc: &p.f, rows: &p.rows, sense: &p.sense, d: &p.d, k_ref: None };
+    let pb = ancien::AncienProblem {
+        kc: &p.k,
+        fc: &p.f,
+        rows: &p.rows,
+        sense: &p.sense,
+        d: &p.d,
+        k_ref: None,
+        eq_rows: &[],
+        eq_d: &[],
+    };
     ancien::run(&pb, opts, &mut |_| {})
 }
 

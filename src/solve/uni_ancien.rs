@@ -3,10 +3,10 @@
 //! status iteration of the old method on the dense K_c, and one expansion.
 //!
 //! Bilateral conditions stay inside the condensed part (Cast3M's
-//! `SUPER … 'NOMU'`). A bilateral row that shares an unknown with a
-//! unilateral row would put its multipliers among the masters, which the
-//! old method's small system does not model: that case is refused with a
-//! clear error (CONDENSE handles it).
+//! `SUPER … 'NOMU'`), except those that share an unknown with the masters:
+//! their multipliers would land among the masters, so they move to the
+//! small system instead (always assembled), and their unknowns join P
+//! (repeatedly, until no remaining bilateral row touches P).
 
 use super::ancien::{self, AncienProblem};
 use super::condense::schur_onto;
@@ -26,6 +26,8 @@ pub(super) fn solve(
     phases: &mut Vec<(&'static str, f64)>,
 ) -> Result<(Solution, Vec<bool>), StatusError> {
     let t0 = std::time::Instant::now();
+    // Indices are used below before any factorisation checks them.
+    super::lagrange::validate(p).map_err(StatusError::Global)?;
     let n = p.k.n;
     let mut in_p = vec![false; n];
     for &i in uni {
@@ -35,13 +37,26 @@ pub(super) fn solve(
             }
         }
     }
-    let keep: Vec<usize> = (0..n).filter(|&j| in_p[j]).collect();
-    let bil: Vec<usize> = (0..p.conditions.len()).filter(|&i| !p.conditions[i].kind.is_unilateral()).collect();
-    if let Some(&b) = bil.iter().find(|&&b| p.conditions[b].terms.iter().any(|&(j, _)| j < n && in_p[j])) {
-        return Err(StatusError::Global(SolveError::Other(format!(
-            "method ANCIEN: bilateral condition {b} shares an unknown with a unilateral condition"
-        ))));
+    let mut bil: Vec<usize> = (0..p.conditions.len()).filter(|&i| !p.conditions[i].kind.is_unilateral()).collect();
+    let mut moved: Vec<usize> = Vec::new();
+    loop {
+        let touches = |b: &usize| p.conditions[*b].terms.iter().any(|&(j, _)| j < n && in_p[j]);
+        let (now, rest): (Vec<usize>, Vec<usize>) = bil.iter().partition(|b| touches(b));
+        if now.is_empty() {
+            break;
+        }
+        for &b in &now {
+            for &(j, _) in &p.conditions[b].terms {
+                if j < n {
+                    in_p[j] = true;
+                }
+            }
+        }
+        moved.extend(now);
+        bil = rest;
     }
+    moved.sort_unstable();
+    let keep: Vec<usize> = (0..n).filter(|&j| in_p[j]).collect();
     let rest = Problem { k: p.k.clone(), conditions: bil.iter().map(|&b| p.conditions[b].clone()).collect() };
     let rest_load = Load { f: load.f.clone(), d: bil.iter().map(|&b| load.d[b]).collect() };
     let back = |e: SolveError| StatusError::Global(rest_to_global(e, &bil));
@@ -55,15 +70,27 @@ pub(super) fn solve(
         local[t] = q;
     }
     let fc = so.load(&rest_load);
-    let rows: Vec<Vec<(usize, f64)>> =
-        uni.iter().map(|&i| p.conditions[i].terms.iter().map(|&(j, v)| (local[j], v)).collect()).collect();
+    let local_row = |i: usize| p.conditions[i].terms.iter().map(|&(j, v)| (local[j], v)).collect::<Vec<_>>();
+    let rows: Vec<Vec<(usize, f64)>> = uni.iter().map(|&i| local_row(i)).collect();
+    let eq_rows: Vec<Vec<(usize, f64)>> = moved.iter().map(|&i| local_row(i)).collect();
+    let eq_d: Vec<f64> = moved.iter().map(|&i| load.d[i]).collect();
     let sense: Vec<f64> = uni.iter().map(|&i| p.conditions[i].kind.sense()).collect();
     let d: Vec<f64> = uni.iter().map(|&i| load.d[i]).collect();
-    let k_ref = stiffness_ref(p, uni, &in_p);
+    let all: Vec<usize> = uni.iter().chain(&moved).copied().collect();
+    let k_ref = stiffness_ref(p, &all, &in_p);
     phases.push(("condense", t0.elapsed().as_secs_f64()));
 
     let t1 = std::time::Instant::now();
-    let pb = AncienProblem { kc: so.matrix(), fc: &fc, rows: &rows, sense: &sense, d: &d, k_ref: Some(&k_ref) };
+    let pb = AncienProblem {
+        kc: so.matrix(),
+        fc: &fc,
+        rows: &rows,
+        sense: &sense,
+        d: &d,
+        k_ref: Some(&k_ref),
+        eq_rows: &eq_rows,
+        eq_d: &eq_d,
+    };
     let res = ancien::run(&pb, sopts, on_iter).map_err(StatusError::Local)?;
     phases.push(("status", t1.elapsed().as_secs_f64()));
 
@@ -74,6 +101,9 @@ pub(super) fn solve(
     let mut active = vec![true; m];
     for (r, &b) in bil.iter().enumerate() {
         lambda[b] = expanded.lambda[r];
+    }
+    for (q, &b) in moved.iter().enumerate() {
+        lambda[b] = res.eq_lambda[q];
     }
     for (q, &i) in uni.iter().enumerate() {
         lambda[i] = if res.active[q] { res.lambda[q] } else { 0.0 };

@@ -99,3 +99,24 @@ fn bilateral_and_unilateral_together() {
     assert_eq!(r.m, 1);
     assert_eq!(seen, r.iterations);
 }
+
+#[test]
+fn automatic_choice() {
+    assert_eq!(choose(Method::Auto, 1000, 300), Method::Condense);
+    assert_eq!(choose(Method::Auto, 100_000, 3_000), Method::Condense);
+    assert_eq!(choose(Method::Auto, 100_000, 30_000), Method::Creux);
+    assert_eq!(choose(Method::Auto, 10_000_000, 20_000), Method::Creux);
+    assert_eq!(choose(Method::Iter, 100, 50), Method::Iter);
+}
+
+#[test]
+fn bad_indices_are_errors_for_every_method() {
+    let mut p = spring(Kind::Mini);
+    p.conditions[0].terms[0].0 = 7;
+    let l = Load { f: vec![1.0], d: vec![0.0] };
+    for method in [Method::Condense, Method::Ancien, Method::Creux, Method::Iter] {
+        let o = UnilOptions { method, ..Default::default() };
+        let r = solve_unilateral(&p, &l, &o, &mut UnilCache::default(), &mut |_| {});
+        assert!(r.is_err(), "{method:?}");
+    }
+}
