@@ -42,6 +42,8 @@ pub struct Interp {
     /// sandbox against runaway `REPETER` loops).
     pub steps: u64,
     pub step_limit: Option<u64>,
+    /// The last direct factorisations, reused by RESO (see ops::solver_cache).
+    pub factors: crate::ops::solver_cache::FactorPool,
 }
 
 /// How a statement ended.
@@ -69,6 +71,7 @@ impl Interp {
             called_proc: false,
             steps: 0,
             step_limit: None,
+            factors: Default::default(),
         }
     }
 

@@ -109,32 +109,51 @@ fn reso(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     } else {
         let t = std::time::Instant::now();
         let sols = {
-            let mut cache = r.cache.borrow_mut();
+            let key = {
+                let mut cache = r.cache.borrow_mut();
+                let id = cache.id;
+                let k = *cache.key.get_or_insert_with(|| crate::solve::lagrange::structure_hash(&asm.problem));
+                // STAB changes the values factorised: keep it in the key.
+                (k ^ (o.stab as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15), id)
+            };
+            let (key, id) = key;
             let opts = DirectOptions { check_residual: !o.noid, stab: o.stab };
-            let mut fact_s = None;
-            if cache.direct.is_none() || cache.direct_stab != o.stab {
-                cache.direct =
-                    Some(Factorization::new(&asm.problem, &opts).map_err(|e| asm.explain(it, &r, e, &loads))?);
-                cache.direct_stab = o.stab;
-                fact_s = Some(t.elapsed().as_secs_f64());
-                it.timers.phase("RESO factorisation", t.elapsed().as_secs_f64());
-            }
+            let mut phase = "reused";
+            let entry = match it.factors.get(key) {
+                Some(e) if e.owner == id => e,
+                Some(e) if e.fact.same_pattern(&asm.problem) => {
+                    // Same pattern, new values: numeric factorisation only.
+                    let res = e.fact.refactor(&asm.problem);
+                    e.owner = id;
+                    phase = "numeric refactorisation";
+                    if let Err(err) = res {
+                        return Err(asm.explain(it, &r, err, &loads));
+                    }
+                    it.factors.get(key).expect("present")
+                }
+                _ => {
+                    let f = Factorization::new(&asm.problem, &opts).map_err(|e| asm.explain(it, &r, e, &loads))?;
+                    phase = "factorisation";
+                    it.factors.insert(crate::ops::solver_cache::PoolEntry { key, owner: id, fact: f })
+                }
+            };
+            let fact_s = t.elapsed().as_secs_f64();
             let t = std::time::Instant::now();
-            let f = cache.direct.as_ref().expect("built above");
-            let s = f.solve(&loads).map_err(|e| asm.explain(it, &r, e, &loads));
-            it.timers.phase("RESO solve", t.elapsed().as_secs_f64());
+            let s = entry.fact.solve(&loads).map_err(|e| asm.explain(it, &r, e, &loads));
+            let solve_s = t.elapsed().as_secs_f64();
+            if phase != "reused" {
+                it.timers.phase(&format!("RESO {}", phase), fact_s);
+            }
+            it.timers.phase("RESO solve", solve_s);
             if it.opts.echo >= 1 {
-                let fact = match fact_s {
-                    Some(x) => format!("factorisation {:.3} s", x),
-                    None => "factorisation reused".into(),
-                };
                 it.println(&format!(
-                    "RESO: {} unknowns, {} conditions, {} right-hand side(s); {}, solve {:.3} s",
+                    "RESO: {} unknowns, {} conditions, {} right-hand side(s); factorisation {} ({:.3} s), solve {:.3} s",
                     asm.problem.k.n,
                     asm.problem.conditions.len(),
                     loads.len(),
-                    fact,
-                    t.elapsed().as_secs_f64()
+                    phase,
+                    fact_s,
+                    solve_s
                 ));
             }
             s

@@ -441,7 +441,7 @@ fn compress(dim: usize, count: &[usize], bucket: &mut [u64], n_src: usize) -> Co
 /// A fast structural fingerprint (indices and kinds, not values) for the
 /// "same pattern" test: reading it costs one pass over the entries, far
 /// less than a factorisation.
-pub(crate) fn structure_hash(p: &Problem) -> u64 {
+pub fn structure_hash(p: &Problem) -> u64 {
     let mut h: u64 = 0xcbf2_9ce4_8422_2325;
     let mut mix = |x: u64| {
         h ^= x;
