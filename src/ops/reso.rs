@@ -18,6 +18,7 @@ pub(crate) const OPS: &[OpDef] = &[
 ];
 
 struct Opts {
+    ense: bool,
     noid: bool,
     nounil: bool,
     stab: bool,
@@ -31,6 +32,7 @@ struct Opts {
 
 fn read_options(it: &Interp, a: &mut Args, r: &Rigidite) -> Result<Opts> {
     let mut o = Opts {
+        ense: false,
         noid: false,
         nounil: false,
         stab: false,
@@ -48,6 +50,7 @@ fn read_options(it: &Interp, a: &mut Args, r: &Rigidite) -> Result<Opts> {
     while let Some(k) = a.keyword(KW) {
         match k {
             "NOID" => o.noid = true,
+            "ENSE" => o.ense = true,
             "NOUNIL" => o.nounil = true,
             "STAB" => o.stab = true,
             "SOUC" => o.soft = true,
@@ -99,6 +102,9 @@ fn reso(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let loads: Vec<Load> =
         rhs.iter().map(|c| asm.load(it, &[c])).collect::<Result<_>>().map_err(|e| a.err(e.message))?;
     let unilateral = r.n_unilateral() > 0 && !o.nounil;
+    if o.ense && !unilateral {
+        return reso_ense(it, &r, &asm, &loads, &o);
+    }
     let mut out = Vec::new();
     if unilateral {
         for load in &loads {
@@ -165,7 +171,49 @@ fn reso(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     Ok(out)
 }
 
+/// 'ENSE': on a singular system, hold each free rigid mode by blocking its
+/// largest unknown, as Cast3M's RESO does for UNILATER. Results: the
+/// solution, the number of kernel vectors removed, and the mesh of the
+/// nodes constrained to remove them.
+fn reso_ense(it: &mut Interp, r: &Rigidite, asm: &Assembled, loads: &[Load], o: &Opts) -> Result<Vec<Value>> {
+    use crate::solve::{Condition, Kind, SolveError};
+    let opts = DirectOptions { check_residual: !o.noid, stab: o.stab };
+    let mut p = asm.problem.clone();
+    let mut held: Vec<usize> = Vec::new();
+    let fact = loop {
+        match Factorization::new(&p, &opts) {
+            Ok(f) => break f,
+            Err(SolveError::Singular { dofs }) if !dofs.is_empty() && !held.contains(&dofs[0]) && held.len() < 64 => {
+                held.push(dofs[0]);
+                p.conditions.push(Condition { terms: vec![(dofs[0], 1.0)], kind: Kind::Equal });
+            }
+            Err(e) => return Err(asm.explain(it, r, e, loads)),
+        }
+    };
+    let extended: Vec<Load> = loads
+        .iter()
+        .map(|l| {
+            let mut d = l.d.clone();
+            d.resize(p.conditions.len(), 0.0);
+            Load { f: l.f.clone(), d }
+        })
+        .collect();
+    let sols = fact.solve(&extended).map_err(|e| asm.explain(it, r, e, loads))?;
+    let mut out: Vec<Value> = sols.iter().map(|s| Value::Chpo(Rc::new(asm.field(r, s)))).collect();
+    let mut nodes: Vec<usize> = Vec::new();
+    for &j in &held {
+        let n = asm.dofs[j].0;
+        if !nodes.contains(&n) {
+            nodes.push(n);
+        }
+    }
+    out.push(Value::Int(held.len() as i64));
+    out.push(Value::Mesh(Rc::new(crate::fem::mesh::Mesh::points(&nodes))));
+    Ok(out)
+}
+
 fn merge(o: &mut Opts, m: Opts) {
+    o.ense |= m.ense;
     o.noid |= m.noid;
     o.nounil |= m.nounil;
     o.stab |= m.stab;
