@@ -33,6 +33,10 @@ fn wanted(name: &str) -> bool {
 
 #[allow(clippy::too_many_arguments)]
 fn run(name: &str, k: &Matrix, nodes: &[usize], gap: f64, load: f64, method: Method, fixed: &[usize]) {
+    // GIBI_BENCH_ONLY=name runs one case (the obstacle alone takes a while).
+    if std::env::var("GIBI_BENCH_ONLY").is_ok_and(|o| o != name) {
+        return;
+    }
     if !wanted(name) {
         return;
     }
@@ -55,8 +59,13 @@ fn run(name: &str, k: &Matrix, nodes: &[usize], gap: f64, load: f64, method: Met
     d.extend(fixed.iter().map(|_| 0.0));
     let l = Load { f: vec![load; n], d };
     let eliminated: Vec<usize> = if fixed.is_empty() { nodes.to_vec() } else { fixed.to_vec() };
-    let opts = if method == Method::Creux {
+    // GIBI_OBSTACLE_COLD=1: gibi's own cold start (all active, damped rule)
+    // instead of PDAS from all inactive.
+    let cold = std::env::var("GIBI_OBSTACLE_COLD").is_ok();
+    let opts = if method == Method::Creux && !cold {
         UnilOptions { method, rule: Rule::Pdas, initial: Some(vec![false; m]), ..Default::default() }
+    } else if method == Method::Creux {
+        UnilOptions { method, ..Default::default() }
     } else {
         UnilOptions { method, ..Default::default() }
     };
