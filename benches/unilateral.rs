@@ -64,8 +64,6 @@ fn run(name: &str, k: &Matrix, nodes: &[usize], gap: f64, load: f64, method: Met
     let cold = std::env::var("GIBI_OBSTACLE_COLD").is_ok();
     let opts = if method == Method::Creux && !cold {
         UnilOptions { method, rule: Rule::Pdas, initial: Some(vec![false; m]), ..Default::default() }
-    } else if method == Method::Creux {
-        UnilOptions { method, ..Default::default() }
     } else {
         UnilOptions { method, ..Default::default() }
     };
