@@ -56,3 +56,16 @@ fn catalogue_is_json() {
     assert!(s.trim_start().starts_with('[') && s.trim_end().ends_with(']'));
     assert!(s.contains("\"name\": \"PROG\""));
 }
+
+/// The manual is complete: every operator has a signature, a description
+/// and an example (they feed errors, `:help` and editor support).
+#[test]
+fn every_operator_is_documented() {
+    let out = gibi().arg("--list-operators").output().unwrap();
+    let s = String::from_utf8_lossy(&out.stdout);
+    for line in s.lines().filter(|l| l.contains("\"name\"")) {
+        for field in ["signature", "doc", "example"] {
+            assert!(!line.contains(&format!("\"{}\": \"\"", field)), "{} lacks {}", line, field);
+        }
+    }
+}

@@ -33,7 +33,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "PLUS", signature: "OBJ PLUS VECTOR | GEO PLUS CHPOINT", doc: "A translated copy (geometric, not arithmetic), or the mesh moved by a displacement field.", example: "l2 = l plus (0. 1.) ;", f: plus },
     OpDef { name: "MOIN", signature: "OBJ MOIN VECTOR", doc: "A copy translated by minus the vector.", example: "l2 = l moin (0. 1.) ;", f: moin },
     OpDef { name: "INVE", signature: "INVE GEO", doc: "Reverse the orientation of a mesh.", example: "l2 = inve l ;", f: inve },
-    OpDef { name: "SURF", signature: "SURF LINE ('PLAN')", doc: "Free meshing — not available in gibi: use DALL, TRAN or ROTA, or import a Gmsh mesh.", example: "", f: surf },
+    OpDef { name: "SURF", signature: "SURF LINE ('PLAN')", doc: "Free meshing — not available in gibi: use DALL, TRAN or ROTA, or import a Gmsh mesh.", example: "s = dall bas dro hau gau ;", f: surf },
 ];
 
 fn coor(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
