@@ -108,12 +108,13 @@ fn reso(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let mut out = Vec::new();
     if unilateral {
         for load in &loads {
-            let (sol, report) = solve_unil(it, &r, &asm, load, &o).map_err(|e| soften(it, e, o.soft))?;
+            let (sol, report) = solve_unil(it, &r, &asm, load, &o)?;
             out.push(Value::Chpo(Rc::new(asm.field(&r, &sol))));
             record(it, &report);
         }
     } else {
         let t = std::time::Instant::now();
+        let mut warnings: Vec<String> = Vec::new();
         let sols = {
             let key = {
                 let mut cache = r.cache.borrow_mut();
@@ -145,7 +146,18 @@ fn reso(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             };
             let fact_s = t.elapsed().as_secs_f64();
             let t = std::time::Instant::now();
-            let s = entry.fact.solve(&loads).map_err(|e| asm.explain(it, &r, e, &loads));
+            let s = match entry.fact.solve_checked(&loads, !o.noid) {
+                // 'SOUC': an inaccurate solution is a warning, not a failure.
+                Err(crate::solve::SolveError::Inaccurate { residual }) if o.soft => {
+                    let s = entry.fact.solve_checked(&loads, false);
+                    warnings.push(format!(
+                        "RESO 'SOUC': warning: inaccurate solution (relative residual {}) returned anyway",
+                        crate::value::fmt_float(residual)
+                    ));
+                    s.map_err(|e| asm.explain(it, &r, e, &loads))
+                }
+                other => other.map_err(|e| asm.explain(it, &r, e, &loads)),
+            };
             let solve_s = t.elapsed().as_secs_f64();
             if phase != "reused" {
                 it.timers.phase(&format!("RESO {}", phase), fact_s);
@@ -164,7 +176,10 @@ fn reso(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             }
             s
         };
-        for s in sols.map_err(|e| soften(it, e, o.soft))? {
+        for w in warnings {
+            it.println(&w);
+        }
+        for s in sols? {
             out.push(Value::Chpo(Rc::new(asm.field(&r, &s))));
         }
     }
@@ -231,12 +246,6 @@ fn merge(o: &mut Opts, m: Opts) {
     if m.rule != crate::solve::unilateral::Rule::Damped {
         o.rule = m.rule;
     }
-}
-
-/// 'SOUC' downgrades a failure to a warning (Cast3M's "souci"): we still
-/// stop, because returning a wrong field silently is worse.
-fn soften(_it: &mut Interp, e: Error, _soft: bool) -> Error {
-    e
 }
 
 fn solve_unil(

@@ -97,6 +97,12 @@ impl Factorization {
 
     /// Solves for several loads at once.
     pub fn solve(&self, loads: &[Load]) -> Result<Vec<Solution>, SolveError> {
+        self.solve_checked(loads, self.opts.check_residual)
+    }
+
+    /// [`Factorization::solve`] with the residual check chosen per call
+    /// ('NOID' on a reused factorisation, 'SOUC' after an inaccurate solve).
+    pub fn solve_checked(&self, loads: &[Load], check_residual: bool) -> Result<Vec<Solution>, SolveError> {
         let (n, m) = (self.sys.n, self.sys.m);
         let dim = self.sys.dim();
         for l in loads {
@@ -115,7 +121,7 @@ impl Factorization {
         }
         let mut z = b.clone();
         self.solve_mat(&mut z)?;
-        if self.opts.check_residual {
+        if check_residual {
             let mut eta = self.backward_error(&b, &z);
             if eta > RESIDUAL_TOL {
                 // One step of iterative refinement before giving up.
