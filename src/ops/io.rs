@@ -167,11 +167,17 @@ pub(crate) fn show(it: &Interp, v: &Value) -> String {
     }
 }
 
-fn mess(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+/// Every remaining argument as MESS shows it.
+fn shown_args(it: &Interp, a: &mut Args) -> Vec<String> {
     let mut parts = Vec::new();
     while let Some(v) = a.opt::<Value>() {
         parts.push(show(it, &v));
     }
+    parts
+}
+
+fn mess(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let mut parts = shown_args(it, a);
     while let Some(w) = a.word() {
         parts.push(w);
     }
@@ -209,10 +215,7 @@ fn saut(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 fn titr(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let mut parts = Vec::new();
-    while let Some(v) = a.opt::<Value>() {
-        parts.push(show(it, &v));
-    }
+    let parts = shown_args(it, a);
     it.title = parts.join(" ").chars().take(72).collect();
     Ok(vec![])
 }
@@ -254,10 +257,7 @@ fn erre(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             n => Err(Error::runtime(format!("ERRE {}: error raised by the deck", n))),
         };
     }
-    let mut parts = Vec::new();
-    while let Some(v) = a.opt::<Value>() {
-        parts.push(show(it, &v));
-    }
+    let parts = shown_args(it, a);
     if parts.is_empty() {
         return Err(a.missing("an error number or a text"));
     }

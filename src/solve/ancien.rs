@@ -428,17 +428,7 @@ mod tests {
         let a = solve(&p, &o).unwrap();
         assert!((a.lambda[0] + 0.75).abs() < 1e-10 && (a.lambda[1] + 0.25).abs() < 1e-10);
         assert_eq!(a.iterations, 1);
-        let pb = AncienProblem {
-            kc: &p.k,
-            fc: &p.f,
-            rows: &p.rows,
-            sense: &p.sense,
-            d: &p.d,
-            k_ref: None,
-            eq_rows: &[],
-            eq_d: &[],
-        };
-        let b = run(&pb, &o, &mut |_| {}).unwrap();
+        let b = crate::solve::status_testkit::solve_ancien(&p, &o).unwrap();
         assert!((b.lambda[0] + 0.75).abs() < 1e-10);
     }
 
