@@ -419,7 +419,7 @@ pub fn schur_onto(p: &Problem, keep: &[usize]) -> Result<SchurOnto, SolveError> 
         seen[j] = true;
     }
     let primal = ordering::primal_amd(p, keep, None)?;
-    let fwd = ordering::doubled_order(p, &primal, &[]);
+    let fwd = ordering::doubled_order_interleaved(p, &primal, &[]);
     // The tail starts at the first kept unknown or at a λ1 opening there.
     let first_kept = n - keep.len();
     let mut cut = fwd.len();
