@@ -37,7 +37,10 @@ fn main() {
     let mut sys = Doubled::with_tail(&p, &tail, false).unwrap();
     println!("doubled {:.3}", t.elapsed().as_secs_f64());
     let t = Instant::now();
-    let primal = ordering::primal_amd(&p, &[], Some((&sys.col_ptr, &sys.row_idx))).unwrap();
+    let primal = match std::env::var("GIBI_BENCH_ORDER").as_deref() {
+        Ok("nd") => ordering::primal_order(&p, &[], Some((&sys.col_ptr, &sys.row_idx)), ordering::Algo::Nd).unwrap(),
+        _ => ordering::primal_amd(&p, &[], Some((&sys.col_ptr, &sys.row_idx))).unwrap(),
+    };
     println!("amd {:.3}", t.elapsed().as_secs_f64());
     let t = Instant::now();
     let fwd = ordering::doubled_order(&p, &primal, &uni);

@@ -232,7 +232,7 @@ impl Condenser {
         // Without the m² explicit tail pairs first: one mesh connects the
         // tail anyway; disconnected contact zones need them.
         let sys = Doubled::with_tail(p, &tail, false)?;
-        let primal = ordering::primal_amd(p, &[], Some((&sys.col_ptr, &sys.row_idx)))?;
+        let primal = ordering::primal_best(p, &[], Some((&sys.col_ptr, &sys.row_idx)))?;
         let fwd = ordering::doubled_order(p, &primal, &uni);
         let cut = fwd.len() - uni.len();
         let core = match Interrupted::try_new(p, fwd.clone(), cut, Some(sys))? {

@@ -116,7 +116,7 @@ impl Creux {
         }
         let ps = Problem { k: p.k.clone(), conditions: sub.iter().map(|&i| p.conditions[i].clone()).collect() };
         let sys = Doubled::new(&ps, &[])?;
-        let primal = ordering::primal_amd(&ps, &[], Some((&sys.col_ptr, &sys.row_idx)))?;
+        let primal = ordering::primal_best(&ps, &[], Some((&sys.col_ptr, &sys.row_idx)))?;
         let fwd = ordering::doubled_order(&ps, &primal, &[]);
         let factor = SymFactor::analyse(&sys.col_ptr, &sys.row_idx, fwd)?;
         let mut slot_of = vec![usize::MAX; n];

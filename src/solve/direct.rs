@@ -61,7 +61,7 @@ impl Factorization {
             sys.fill(p, stab)?;
         }
         let engine = if p.k.symmetric {
-            let primal = ordering::primal_amd(p, &[], Some((&sys.col_ptr, &sys.row_idx)))?;
+            let primal = ordering::primal_best(p, &[], Some((&sys.col_ptr, &sys.row_idx)))?;
             let fwd = ordering::doubled_order(p, &primal, &[]);
             let mut f = SymFactor::analyse(&sys.col_ptr, &sys.row_idx, fwd)?;
             if let Err(z) = f.factor(&sys.col_ptr, &sys.row_idx, &sys.values, &sys.row_scale, usize::MAX, None) {

@@ -8,8 +8,9 @@
 //!   and what comes back (displacements, multipliers, statuses).
 //! * [`error`]: what can go wrong, in terms of unknown and condition numbers
 //!   (the caller turns them into node and component names).
-//! * [`lagrange`], [`ordering`], [`linear`], [`direct`]: the doubled-multiplier
-//!   system of Verpeaux & Charras and its pivot-free LDLᵀ on faer.
+//! * [`lagrange`], [`ordering`] (AMD, or METIS nested dissection in `nd`),
+//!   [`linear`], [`direct`]: the doubled-multiplier system of Verpeaux &
+//!   Charras and its pivot-free LDLᵀ on faer.
 //! * [`condense`]: the interrupted factorisation onto the second multipliers
 //!   of the unilateral conditions (and onto chosen unknowns, for SUPER).
 //! * [`status`]: the status (active-set) iteration on the condensed operator.
@@ -30,6 +31,7 @@ pub mod groups;
 mod iter;
 pub mod lagrange;
 pub mod linear;
+mod nd;
 pub mod nonsym;
 pub mod ordering;
 pub mod problem;

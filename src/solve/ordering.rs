@@ -1,7 +1,8 @@
 //! Elimination order for the doubled system (unilateral.md §2.3).
 //!
 //! Primal unknowns are ordered by AMD on the pattern of K + CᵀC (the fill
-//! the first multipliers create is that of CᵀC). Then each λ1_i goes
+//! the first multipliers create is that of CᵀC), or by METIS nested
+//! dissection when AMD's fill is that of a 3D mesh ([`primal_best`]). Then each λ1_i goes
 //! immediately before the first of its unknowns and each λ2_i immediately
 //! after the last, which is Cast3M's `optnum` rule: with it, LDLᵀ without
 //! pivoting meets no zero pivot when the problem is well posed. Conditions
@@ -14,10 +15,20 @@
 
 use faer::dyn_stack::{MemBuffer, MemStack};
 use faer::sparse::linalg::amd;
+use faer::sparse::linalg::cholesky::simplicial;
 use faer::sparse::SymbolicSparseColMatRef;
 
 use super::error::SolveError;
 use super::problem::Problem;
+
+/// Fill-reducing algorithm for the primal unknowns.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Algo {
+    /// faer's approximate minimum degree.
+    Amd,
+    /// METIS nested dissection ([`super::nd`]).
+    Nd,
+}
 
 /// AMD order of the primal unknowns on K + CᵀC: `perm[new] = old`.
 /// `k_upper` may give the already assembled upper pattern of K (the first
@@ -29,10 +40,24 @@ pub fn primal_amd(
     extra_last: &[usize],
     k_upper: Option<(&[usize], &[usize])>,
 ) -> Result<Vec<usize>, SolveError> {
+    primal_order(p, extra_last, k_upper, Algo::Amd)
+}
+
+/// [`primal_amd`] with the choice of algorithm.
+pub fn primal_order(
+    p: &Problem,
+    extra_last: &[usize],
+    k_upper: Option<(&[usize], &[usize])>,
+    algo: Algo,
+) -> Result<Vec<usize>, SolveError> {
     let n = p.k.n;
+    let run = |nf: usize, cp: &[usize], ri: &[usize]| match algo {
+        Algo::Amd => amd_order(nf, cp, ri),
+        Algo::Nd => super::nd::order(nf, cp, ri),
+    };
     let single = p.conditions.iter().all(|c| c.terms.len() <= 1);
     if let (Some((cp, ri)), true, true) = (k_upper, single, extra_last.is_empty()) {
-        return amd_order(n, &cp[..=n], &ri[..cp[n]]);
+        return run(n, &cp[..=n], &ri[..cp[n]]);
     }
     // Upper-triangle pairs of K + CᵀC (AMD symmetrises itself).
     let mut pairs: Vec<(usize, usize)> = Vec::with_capacity(p.k.entries.len() + n);
@@ -95,10 +120,79 @@ pub fn primal_amd(
         }
         col_ptr[c + 1] = row_idx.len();
     }
-    let perm = amd_order(nf, &col_ptr, &row_idx)?;
+    let perm = run(nf, &col_ptr, &row_idx)?;
     let mut out: Vec<usize> = perm.iter().map(|&k| free[k]).collect();
     out.extend_from_slice(extra_last);
     Ok(out)
+}
+
+/// Below this many estimated factor flops AMD is always kept: METIS costs
+/// about as much as a small factorisation.
+const ND_MIN_FLOPS: f64 = 5.0e9;
+/// AMD flops per pattern entry above which nested dissection is tried. A
+/// 2D grid of 262k unknowns has ~3·10³ (AMD is good there and METIS would
+/// cost twice the factorisation), a 3D grid of 10⁵ unknowns ~3·10⁵ (ND
+/// divides the flops by 2.5–3).
+const ND_MIN_DENSITY: f64 = 2.0e4;
+/// ND is kept when it saves at least this fraction of AMD's flops.
+const ND_GAIN: f64 = 0.8;
+
+/// The primal order with the fewest factor flops among AMD and, when AMD
+/// fills a lot (3D meshes), METIS nested dissection. Arguments as
+/// [`primal_amd`].
+pub fn primal_best(
+    p: &Problem,
+    extra_last: &[usize],
+    k_upper: Option<(&[usize], &[usize])>,
+) -> Result<Vec<usize>, SolveError> {
+    let amd = primal_order(p, extra_last, k_upper, Algo::Amd)?;
+    let Some((cp, ri)) = k_upper else { return Ok(amd) };
+    let n = p.k.n;
+    let (cp, ri) = (&cp[..=n], &ri[..cp[n]]);
+    let f_amd = factor_flops(n, cp, ri, &amd);
+    if f_amd < ND_MIN_FLOPS || f_amd < ND_MIN_DENSITY * ri.len() as f64 {
+        return Ok(amd);
+    }
+    let nd = primal_order(p, extra_last, Some((cp, ri)), Algo::Nd)?;
+    Ok(if factor_flops(n, cp, ri, &nd) < ND_GAIN * f_amd { nd } else { amd })
+}
+
+/// Σ (column count)² of the Cholesky factor of the upper pattern
+/// (`col_ptr`, `row_idx`) in the order `perm` (`perm[new] = old`): the
+/// multiply-adds of the factorisation, from faer's elimination tree and
+/// column counts (near-linear time, no symbolic factorisation).
+pub fn factor_flops(n: usize, col_ptr: &[usize], row_idx: &[usize], perm: &[usize]) -> f64 {
+    if n == 0 {
+        return 0.0;
+    }
+    let inv = inverse(perm);
+    let mut count = vec![0usize; n + 1];
+    for c in 0..n {
+        for &r in &row_idx[col_ptr[c]..col_ptr[c + 1]] {
+            count[inv[r].max(inv[c]) + 1] += 1;
+        }
+    }
+    for k in 0..n {
+        count[k + 1] += count[k];
+    }
+    let mut next = count.clone();
+    let mut rows = vec![0usize; count[n]];
+    for c in 0..n {
+        for &r in &row_idx[col_ptr[c]..col_ptr[c + 1]] {
+            let (a, b) = (inv[r].min(inv[c]), inv[r].max(inv[c]));
+            rows[next[b]] = a;
+            next[b] += 1;
+        }
+    }
+    for k in 0..n {
+        rows[count[k]..count[k + 1]].sort_unstable();
+    }
+    let a = SymbolicSparseColMatRef::new_checked(n, n, &count, None, &rows);
+    let mut etree = vec![0isize; n];
+    let mut cc = vec![0usize; n];
+    let mut mem = MemBuffer::new(simplicial::prefactorize_symbolic_cholesky_scratch::<usize>(n, rows.len()));
+    simplicial::prefactorize_symbolic_cholesky(&mut etree, &mut cc, a, MemStack::new(&mut mem));
+    cc.iter().map(|&c| (c as f64) * (c as f64)).sum()
 }
 
 /// faer's AMD on a sorted upper-triangle pattern.
@@ -237,6 +331,72 @@ mod tests {
         // except for the λ2 that close rows.
         let prim: Vec<usize> = fwd.iter().copied().filter(|&o| o < n).collect();
         assert_eq!(prim, primal);
+    }
+
+    /// Upper CSC pattern of a symmetric entry list.
+    fn upper(n: usize, e: &[(usize, usize, f64)]) -> (Vec<usize>, Vec<usize>) {
+        let mut cols: Vec<Vec<usize>> = vec![Vec::new(); n];
+        for &(i, j, _) in e {
+            cols[i.max(j)].push(i.min(j));
+        }
+        let (mut cp, mut ri) = (vec![0], Vec::new());
+        for mut c in cols {
+            c.sort_unstable();
+            c.dedup();
+            ri.extend(c);
+            cp.push(ri.len());
+        }
+        (cp, ri)
+    }
+
+    #[test]
+    fn factor_flops_counts_the_fill_of_the_order() {
+        // A chain factorises without fill: column counts 2, …, 2, 1.
+        let p = chain(10);
+        let (cp, ri) = upper(10, &p.k.entries);
+        let natural: Vec<usize> = (0..10).collect();
+        assert_eq!(factor_flops(10, &cp, &ri, &natural), 9.0 * 4.0 + 1.0);
+        // An arrow with its hub first fills completely: counts 10, 9, …, 1.
+        let star: Vec<(usize, usize, f64)> = (1..10).flat_map(|j| [(0, j, 1.0), (j, j, 1.0)]).collect();
+        let (cp, ri) = upper(10, &star);
+        let full: f64 = (1..=10).map(|c| (c * c) as f64).sum();
+        assert_eq!(factor_flops(10, &cp, &ri, &natural), full);
+        // Hub last: no fill.
+        let hub_last: Vec<usize> = (1..10).chain([0]).collect();
+        assert_eq!(factor_flops(10, &cp, &ri, &hub_last), 9.0 * 4.0 + 1.0);
+    }
+
+    #[test]
+    fn nested_dissection_orders_a_3d_grid_with_less_fill_than_amd() {
+        let nx = 12;
+        let id = |x: usize, y: usize, z: usize| x + nx * (y + nx * z);
+        let mut e = Vec::new();
+        for z in 0..nx {
+            for y in 0..nx {
+                for x in 0..nx {
+                    e.push((id(x, y, z), id(x, y, z), 6.0));
+                    if x + 1 < nx {
+                        e.push((id(x, y, z), id(x + 1, y, z), -1.0));
+                    }
+                    if y + 1 < nx {
+                        e.push((id(x, y, z), id(x, y + 1, z), -1.0));
+                    }
+                    if z + 1 < nx {
+                        e.push((id(x, y, z), id(x, y, z + 1), -1.0));
+                    }
+                }
+            }
+        }
+        let n = nx * nx * nx;
+        let p = Problem { k: Matrix { n, entries: e.clone(), symmetric: true }, conditions: vec![] };
+        let (cp, ri) = upper(n, &e);
+        let nd = primal_order(&p, &[], Some((&cp, &ri)), Algo::Nd).unwrap();
+        let mut seen = nd.clone();
+        seen.sort_unstable();
+        assert_eq!(seen, (0..n).collect::<Vec<_>>());
+        let amd = primal_order(&p, &[], Some((&cp, &ri)), Algo::Amd).unwrap();
+        let (f_nd, f_amd) = (factor_flops(n, &cp, &ri, &nd), factor_flops(n, &cp, &ri, &amd));
+        assert!(f_nd < f_amd, "nd {f_nd} amd {f_amd}");
     }
 
     #[test]
