@@ -63,3 +63,13 @@ fn a_panicking_operator_becomes_an_error_and_objects_survive() {
     assert!(e.message.contains("BOOM: internal error (kaboom)"), "{}", e.message);
     assert_eq!(g.get_f64("a"), Some(1.0));
 }
+
+#[test]
+fn a_listchpo_reads_back_as_a_list_of_fields() {
+    let mut g = Interpreter::new();
+    g.run_str("t", "opti dime 2 ; p = 0. 0. ; l = suit (forc 'FX' 1. p) (forc 'FY' 2. p) ;").unwrap();
+    let l: Rc<Vec<Rc<gibi::value::Chpoint>>> = g.get_as("l").unwrap();
+    assert_eq!(l.len(), 2);
+    assert_eq!(l[1].components(), vec!["FY".to_string()]);
+    assert_eq!(g.get("l").unwrap().type_name(), "LISTCHPO");
+}

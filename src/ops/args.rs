@@ -52,6 +52,7 @@ from_arg!(Rc<Vec<String>>, "LISTMOTS", Value::ListMots(l) => l.clone());
 from_arg!(Rc<RefCell<Table>>, "TABLE", Value::Table(t) => t.clone());
 from_arg!(Rc<Mesh>, "MAILLAGE", Value::Mesh(m) => m.clone());
 from_arg!(Rc<Chpoint>, "CHPOINT", Value::Chpo(c) => c.clone());
+from_arg!(Rc<Vec<Rc<Chpoint>>>, "LISTCHPO", Value::ListChpo(l) => l.clone());
 from_arg!(Rc<Rigidite>, "RIGIDITE", Value::Rigi(r) => r.clone());
 from_arg!(Rc<Model>, "MMODEL", Value::Model(m) => m.clone());
 from_arg!(Rc<Mchaml>, "MCHAML", Value::Mchaml(m) => m.clone());
@@ -161,6 +162,19 @@ impl<'a> Args<'a> {
     /// Only from the right (for arguments that must follow the operator).
     pub fn opt_right<T: FromArg>(&mut self) -> Option<T> {
         self.take_right_with(T::from_value)
+    }
+
+    /// A 1-based ENTIER index into an object of `len` items, returned
+    /// 0-based (EXTR on lists and words).
+    pub fn req_index(&mut self, len: usize) -> Result<usize> {
+        let i = self.req::<i64>()?;
+        if i < 1 || i as usize > len {
+            return Err(self.err(match len {
+                0 => format!("index {} is out of range: the object is empty", i),
+                _ => format!("index {} is outside 1..{}", i, len),
+            }));
+        }
+        Ok(i as usize - 1)
     }
 
     /// A number (ENTIER or FLOTTANT) as f64.

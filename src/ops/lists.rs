@@ -1,9 +1,9 @@
-//! Lists: PROG, LECT, MOTS, EXTR, DIME.
+//! Lists: PROG, LECT, MOTS, SUIT (LISTCHPO), EXTR, DIME.
 
 use super::{Args, OpDef};
 use crate::error::Result;
 use crate::eval::Interp;
-use crate::value::Value;
+use crate::value::{Chpoint, Value};
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
@@ -29,15 +29,22 @@ pub(crate) const OPS: &[OpDef] = &[
         f: mots,
     },
     OpDef {
+        name: "SUIT",
+        signature: "SUIT (CHPOINT1 CHPOINT2 …)",
+        doc: "Build a LISTCHPO (ordered list of fields, e.g. load cases for RESO); empty without arguments. Grow it with ET, read it with DIME and EXTR.",
+        example: "lf = suit f1 f2 f3 ;",
+        f: suit,
+    },
+    OpDef {
         name: "EXTR",
-        signature: "EXTR LIST I | MOT I J | CHPOINT COMP POINT | …",
-        doc: "Extract a part of an object (list element, substring, field value, …).",
+        signature: "EXTR LISTREEL|LISTENTI|LISTMOTS|LISTCHPO I | MOT I J | CHPOINT COMP POINT | …",
+        doc: "Extract a part of an object (list element, I from 1; substring; field value; …).",
         example: "x = extr l 2 ;",
         f: extr,
     },
     OpDef {
         name: "DIME",
-        signature: "DIME LIST|MOT|TABLE|RIGIDITE|EVOLUTIO",
+        signature: "DIME LISTREEL|LISTENTI|LISTMOTS|LISTCHPO|MOT|TABLE|CHPOINT|RIGIDITE|EVOLUTIO",
         doc: "Size of an object.",
         example: "n = dime l ;",
         f: dime,
@@ -124,6 +131,16 @@ fn mots(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     Ok(vec![Value::ListMots(Rc::new(out))])
 }
 
+/// SUIT: the fields in the order written, from the pushed operands then
+/// the right (`SUIT ;` alone is the empty list that `ET` grows).
+fn suit(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let mut out = Vec::new();
+    while let Some(c) = a.opt::<Rc<Chpoint>>() {
+        out.push(c);
+    }
+    Ok(vec![Value::ListChpo(Rc::new(out))])
+}
+
 /// LISTMOTS hold 4-character words (trailing blanks dropped).
 fn short(w: &str) -> String {
     w.chars().take(4).collect::<String>().trim_end().to_string()
@@ -133,28 +150,25 @@ fn extr(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     if let Some(v) = crate::ops::fieldfn::extr(it, a)? {
         return Ok(v);
     }
-    let idx = |a: &mut Args, len: usize| -> Result<usize> {
-        let i = a.req::<i64>()?;
-        if i < 1 || i as usize > len {
-            return Err(a.err(format!("index {} is outside 1..{}", i, len)));
-        }
-        Ok(i as usize - 1)
-    };
     if let Some(l) = a.opt::<Rc<Vec<f64>>>() {
-        let i = idx(a, l.len())?;
+        let i = a.req_index(l.len())?;
         return Ok(vec![Value::Float(l[i])]);
     }
     if let Some(l) = a.opt::<Rc<Vec<i64>>>() {
-        let i = idx(a, l.len())?;
+        let i = a.req_index(l.len())?;
         return Ok(vec![Value::Int(l[i])]);
     }
     if let Some(l) = a.opt::<Rc<Vec<String>>>() {
-        let i = idx(a, l.len())?;
+        let i = a.req_index(l.len())?;
         return Ok(vec![Value::mot(&l[i])]);
+    }
+    if let Some(l) = a.opt::<Rc<Vec<Rc<Chpoint>>>>() {
+        let i = a.req_index(l.len())?;
+        return Ok(vec![Value::Chpo(l[i].clone())]);
     }
     if let Some(m) = a.opt::<String>() {
         let chars: Vec<char> = m.chars().collect();
-        let i = idx(a, chars.len())?;
+        let i = a.req_index(chars.len())?;
         let j = match a.opt::<i64>() {
             Some(j) if j as usize > i && j as usize <= chars.len() => j as usize,
             Some(j) => return Err(a.err(format!("end index {} is outside {}..{}", j, i + 1, chars.len()))),
@@ -171,6 +185,7 @@ fn dime(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         Value::ListReel(l) => l.len() as i64,
         Value::ListEnti(l) => l.len() as i64,
         Value::ListMots(l) => l.len() as i64,
+        Value::ListChpo(l) => l.len() as i64,
         Value::Mot(s) => s.chars().count() as i64,
         Value::Table(t) => t.borrow().len() as i64,
         other => {

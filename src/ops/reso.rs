@@ -12,8 +12,8 @@ use std::cell::RefCell;
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
-    OpDef { name: "RESO", signature: "RESO RIGIDITE CHPOINT (CHPOINT …) ('NOID') ('NOUNIL') ('STAB') ('ENSE') ('SOUC') ('INIB' RIGIDITE LISTENTI)", doc: "Solve K u = F with bilateral and unilateral conditions; the result holds the unknowns and the LX of active conditions.", example: "u = reso (k et cl) f ;", f: reso },
-    OpDef { name: "REAC", signature: "REAC RIGIDITE CHPOINT", doc: "Reactions -Cᵀλ of the conditions of RIGIDITE, from the multipliers LX of a RESO result (DISCRET field).", example: "r = reac cl u ;", f: reac },
+    OpDef { name: "RESO", signature: "RESO RIGIDITE CHPOINT|LISTCHPO (CHPOINT|LISTCHPO …) ('NOID') ('NOUNIL') ('STAB') ('ENSE') ('SOUC') ('INIB' RIGIDITE LISTENTI)", doc: "Solve K u = F with bilateral and unilateral conditions; the result holds the unknowns and the LX of active conditions. Several right-hand sides share one factorisation; a LISTCHPO gives a LISTCHPO of solutions in the same order.", example: "u = reso (k et cl) f ;", f: reso },
+    OpDef { name: "REAC", signature: "REAC RIGIDITE CHPOINT|LISTCHPO", doc: "Reactions -Cᵀλ of the conditions of RIGIDITE, from the multipliers LX of a RESO result (DISCRET field); a LISTCHPO of results gives a LISTCHPO of reactions.", example: "r = reac cl u ;", f: reac },
     OpDef { name: "UNIL", signature: "UNIL RIGIDITE CHPOINT ('CONDENSE'|'ANCIEN'|'ITER'|'CREUX') ('PDAS'|'UNITAIRE') ('INIB' LISTENTI) ('MAXI' n) ('VERBEUX')", doc: "The unilateral solver (Cast3M's UNILATER): returns the solution and a TABLE of diagnostics.", example: "u diag = unil (k et c) f 'CONDENSE' ;", f: unil },
 ];
 
@@ -86,111 +86,171 @@ fn assembled(r: &Rigidite) -> Rc<Assembled> {
     cache.assembled.get_or_insert_with(|| Rc::new(Assembled::new(r))).clone()
 }
 
+/// A right-hand side as written: a CHPOINT gives one solution CHPOINT, a
+/// LISTCHPO a LISTCHPO of solutions in the same order. All of them are
+/// solved together, on one factorisation.
+enum Rhs {
+    One(Rc<Chpoint>),
+    List(Rc<Vec<Rc<Chpoint>>>),
+}
+
+impl super::FromArg for Rhs {
+    const EXPECT: &'static str = "CHPOINT or LISTCHPO";
+    fn from_value(v: &Value) -> Option<Self> {
+        match v {
+            Value::Chpo(c) => Some(Rhs::One(c.clone())),
+            Value::ListChpo(l) => Some(Rhs::List(l.clone())),
+            _ => None,
+        }
+    }
+}
+
+impl Rhs {
+    fn fields(&self) -> &[Rc<Chpoint>] {
+        match self {
+            Rhs::One(c) => std::slice::from_ref(c),
+            Rhs::List(l) => l,
+        }
+    }
+}
+
+/// Put the solutions back in the shape the right-hand sides were given.
+fn regroup(given: &[Rhs], sols: Vec<Rc<Chpoint>>) -> Vec<Value> {
+    let mut sols = sols.into_iter();
+    given
+        .iter()
+        .map(|g| match g {
+            Rhs::One(_) => Value::Chpo(sols.next().expect("one solution per right-hand side")),
+            Rhs::List(l) => Value::ListChpo(Rc::new(sols.by_ref().take(l.len()).collect())),
+        })
+        .collect()
+}
+
 fn reso(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let r = a.req::<Rc<Rigidite>>()?;
-    let mut rhs: Vec<Rc<Chpoint>> = Vec::new();
+    let mut given: Vec<Rhs> = Vec::new();
     let mut o = read_options(it, a, &r)?;
-    while let Some(c) = a.opt::<Rc<Chpoint>>() {
-        rhs.push(c);
+    while let Some(c) = a.opt::<Rhs>() {
+        given.push(c);
         let more = read_options(it, a, &r)?;
         merge(&mut o, more);
     }
+    if given.is_empty() {
+        return Err(a.missing("CHPOINT or LISTCHPO (the right-hand side)"));
+    }
+    let rhs: Vec<&Rc<Chpoint>> = given.iter().flat_map(|g| g.fields()).collect();
     if rhs.is_empty() {
-        return Err(a.missing("CHPOINT (the right-hand side)"));
+        // Only empty LISTCHPOs: nothing to solve, nothing to factorise.
+        return Ok(regroup(&given, Vec::new()));
     }
     let asm = assembled(&r);
     let loads: Vec<Load> =
         rhs.iter().map(|c| asm.load(it, &[c])).collect::<Result<_>>().map_err(|e| a.err(e.message))?;
     let unilateral = r.n_unilateral() > 0 && !o.nounil;
     if o.ense && !unilateral {
-        return reso_ense(it, &r, &asm, &loads, &o);
+        let (sols, extra) = reso_ense(it, &r, &asm, &loads, &o)?;
+        let mut out = regroup(&given, sols);
+        out.extend(extra);
+        return Ok(out);
     }
-    let mut out = Vec::new();
-    if unilateral {
+    let sols = if unilateral {
+        // Each load has its own contact statuses: solved in turn.
+        let mut sols = Vec::new();
         for load in &loads {
             let (sol, report) = solve_unil(it, &r, &asm, load, &o)?;
-            out.push(Value::Chpo(Rc::new(asm.field(&r, &sol))));
+            sols.push(Rc::new(asm.field(&r, &sol)));
             record(it, &report);
         }
+        sols
     } else {
-        let t = std::time::Instant::now();
-        let mut warnings: Vec<String> = Vec::new();
-        let sols = {
-            let key = {
-                let mut cache = r.cache.borrow_mut();
-                let id = cache.id;
-                let k = *cache.key.get_or_insert_with(|| crate::solve::lagrange::structure_hash(&asm.problem));
-                // STAB changes the values factorised: keep it in the key.
-                (k ^ (o.stab as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15), id)
-            };
-            let (key, id) = key;
-            let opts = DirectOptions { check_residual: !o.noid, stab: o.stab };
-            let mut phase = "reused";
-            let entry = match it.factors.get(key) {
-                Some(e) if e.owner == id => e,
-                Some(e) if e.fact.same_pattern(&asm.problem) => {
-                    // Same pattern, new values: numeric factorisation only.
-                    let res = e.fact.refactor(&asm.problem);
-                    e.owner = id;
-                    phase = "numeric refactorisation";
-                    if let Err(err) = res {
-                        return Err(asm.explain(it, &r, err, &loads));
-                    }
-                    it.factors.get(key).expect("present")
-                }
-                _ => {
-                    let f = Factorization::new(&asm.problem, &opts).map_err(|e| asm.explain(it, &r, e, &loads))?;
-                    phase = "factorisation";
-                    it.factors.insert(crate::ops::solver_cache::PoolEntry { key, owner: id, fact: f })
-                }
-            };
-            let fact_s = t.elapsed().as_secs_f64();
-            let t = std::time::Instant::now();
-            let s = match entry.fact.solve_checked(&loads, !o.noid) {
-                // 'SOUC': an inaccurate solution is a warning, not a failure.
-                Err(crate::solve::SolveError::Inaccurate { residual }) if o.soft => {
-                    let s = entry.fact.solve_checked(&loads, false);
-                    warnings.push(format!(
-                        "RESO 'SOUC': warning: inaccurate solution (relative residual {}) returned anyway",
-                        crate::value::fmt_float(residual)
-                    ));
-                    s.map_err(|e| asm.explain(it, &r, e, &loads))
-                }
-                other => other.map_err(|e| asm.explain(it, &r, e, &loads)),
-            };
-            let solve_s = t.elapsed().as_secs_f64();
-            if phase != "reused" {
-                it.timers.phase(&format!("RESO {}", phase), fact_s);
-            }
-            it.timers.phase("RESO solve", solve_s);
-            if it.opts.echo >= 1 {
-                it.println(&format!(
-                    "RESO: {} unknowns, {} conditions, {} right-hand side(s); factorisation {} ({:.3} s), solve {:.3} s",
-                    asm.problem.k.n,
-                    asm.problem.conditions.len(),
-                    loads.len(),
-                    phase,
-                    fact_s,
-                    solve_s
-                ));
-            }
-            s
+        solve_direct(it, &r, &asm, &loads, &o)?
+    };
+    Ok(regroup(&given, sols))
+}
+
+/// Every load on one factorisation, reused from the pool when the
+/// RIGIDITE (or one of the same pattern) was factorised before.
+fn solve_direct(it: &mut Interp, r: &Rigidite, asm: &Assembled, loads: &[Load], o: &Opts) -> Result<Vec<Rc<Chpoint>>> {
+    let t = std::time::Instant::now();
+    let mut warnings: Vec<String> = Vec::new();
+    let sols = {
+        let key = {
+            let mut cache = r.cache.borrow_mut();
+            let id = cache.id;
+            let k = *cache.key.get_or_insert_with(|| crate::solve::lagrange::structure_hash(&asm.problem));
+            // STAB changes the values factorised: keep it in the key.
+            (k ^ (o.stab as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15), id)
         };
-        for w in warnings {
-            it.println(&w);
+        let (key, id) = key;
+        let opts = DirectOptions { check_residual: !o.noid, stab: o.stab };
+        let mut phase = "reused";
+        let entry = match it.factors.get(key) {
+            Some(e) if e.owner == id => e,
+            Some(e) if e.fact.same_pattern(&asm.problem) => {
+                // Same pattern, new values: numeric factorisation only.
+                let res = e.fact.refactor(&asm.problem);
+                e.owner = id;
+                phase = "numeric refactorisation";
+                if let Err(err) = res {
+                    return Err(asm.explain(it, r, err, loads));
+                }
+                it.factors.get(key).expect("present")
+            }
+            _ => {
+                let f = Factorization::new(&asm.problem, &opts).map_err(|e| asm.explain(it, r, e, loads))?;
+                phase = "factorisation";
+                it.factors.insert(crate::ops::solver_cache::PoolEntry { key, owner: id, fact: f })
+            }
+        };
+        let fact_s = t.elapsed().as_secs_f64();
+        let t = std::time::Instant::now();
+        let s = match entry.fact.solve_checked(loads, !o.noid) {
+            // 'SOUC': an inaccurate solution is a warning, not a failure.
+            Err(crate::solve::SolveError::Inaccurate { residual }) if o.soft => {
+                let s = entry.fact.solve_checked(loads, false);
+                warnings.push(format!(
+                    "RESO 'SOUC': warning: inaccurate solution (relative residual {}) returned anyway",
+                    crate::value::fmt_float(residual)
+                ));
+                s.map_err(|e| asm.explain(it, r, e, loads))
+            }
+            other => other.map_err(|e| asm.explain(it, r, e, loads)),
+        };
+        let solve_s = t.elapsed().as_secs_f64();
+        if phase != "reused" {
+            it.timers.phase(&format!("RESO {}", phase), fact_s);
         }
-        for s in sols? {
-            out.push(Value::Chpo(Rc::new(asm.field(&r, &s))));
+        it.timers.phase("RESO solve", solve_s);
+        if it.opts.echo >= 1 {
+            it.println(&format!(
+                "RESO: {} unknowns, {} conditions, {} right-hand side(s); factorisation {} ({:.3} s), solve {:.3} s",
+                asm.problem.k.n,
+                asm.problem.conditions.len(),
+                loads.len(),
+                phase,
+                fact_s,
+                solve_s
+            ));
         }
+        s
+    };
+    for w in warnings {
+        it.println(&w);
     }
-    Ok(out)
+    Ok(sols?.iter().map(|s| Rc::new(asm.field(r, s))).collect())
 }
 
 /// 'ENSE': on a singular system, hold each free rigid mode by blocking its
 /// largest unknown, as Cast3M's RESO does for UNILATER. Results: the
 /// solution, the number of kernel vectors removed, and the mesh of the
-/// nodes constrained to remove them.
-fn reso_ense(it: &mut Interp, r: &Rigidite, asm: &Assembled, loads: &[Load], o: &Opts) -> Result<Vec<Value>> {
+/// nodes constrained to remove them (the last two, returned apart).
+fn reso_ense(
+    it: &mut Interp,
+    r: &Rigidite,
+    asm: &Assembled,
+    loads: &[Load],
+    o: &Opts,
+) -> Result<(Vec<Rc<Chpoint>>, Vec<Value>)> {
     use crate::solve::{Condition, Kind, SolveError};
     let opts = DirectOptions { check_residual: !o.noid, stab: o.stab };
     let mut p = asm.problem.clone();
@@ -214,7 +274,7 @@ fn reso_ense(it: &mut Interp, r: &Rigidite, asm: &Assembled, loads: &[Load], o: 
         })
         .collect();
     let sols = fact.solve(&extended).map_err(|e| asm.explain(it, r, e, loads))?;
-    let mut out: Vec<Value> = sols.iter().map(|s| Value::Chpo(Rc::new(asm.field(r, s)))).collect();
+    let fields: Vec<Rc<Chpoint>> = sols.iter().map(|s| Rc::new(asm.field(r, s))).collect();
     let mut nodes: Vec<usize> = Vec::new();
     for &j in &held {
         let n = asm.dofs[j].0;
@@ -222,9 +282,8 @@ fn reso_ense(it: &mut Interp, r: &Rigidite, asm: &Assembled, loads: &[Load], o: 
             nodes.push(n);
         }
     }
-    out.push(Value::Int(held.len() as i64));
-    out.push(Value::Mesh(Rc::new(crate::fem::mesh::Mesh::points(&nodes))));
-    Ok(out)
+    let extra = vec![Value::Int(held.len() as i64), Value::Mesh(Rc::new(crate::fem::mesh::Mesh::points(&nodes)))];
+    Ok((fields, extra))
 }
 
 fn merge(o: &mut Opts, m: Opts) {
@@ -294,9 +353,16 @@ fn record(it: &mut Interp, report: &UnilReport) {
     }
 }
 
-fn reac(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+/// REAC of a solution, or of each solution of a LISTCHPO.
+fn reac(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let r = a.req::<Rc<Rigidite>>()?;
-    let u = a.req::<Rc<Chpoint>>()?;
+    Ok(vec![match a.req::<Rhs>()? {
+        Rhs::One(u) => Value::Chpo(Rc::new(reaction(&r, &u))),
+        Rhs::List(l) => Value::ListChpo(Rc::new(l.iter().map(|u| Rc::new(reaction(&r, u))).collect())),
+    }])
+}
+
+fn reaction(r: &Rigidite, u: &Chpoint) -> Chpoint {
     let mut out = Chpoint::new(Nature::Discret);
     for c in &r.conds {
         // An inactive unilateral condition has no LX: its reaction is 0
@@ -306,8 +372,7 @@ fn reac(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             out.add(*n, &super::dofs::dual_of(comp), -coef * l, true);
         }
     }
-    let _ = it;
-    Ok(vec![Value::Chpo(Rc::new(out))])
+    out
 }
 
 /// UNIL: the unilateral solver called directly, with its diagnostics.

@@ -13,7 +13,7 @@ use std::rc::Rc;
 pub(crate) const OPS: &[OpDef] = &[OpDef {
     name: "ET",
     signature: "OBJ1 ET OBJ2 ('NOER')",
-    doc: "Logical and; union of meshes; assembly of rigidities; merge of fields; concatenation of lists and words.",
+    doc: "Logical and; union of meshes; assembly of rigidities; merge of fields; concatenation of lists and words (LISTCHPO ET CHPOINT|LISTCHPO appends).",
     example: "l = l1 et l2 ;",
     f: et,
 }];
@@ -61,6 +61,11 @@ pub(crate) fn union(it: &mut Interp, a: &Args, x: Value, y: Value, noer: bool) -
             v.push(s.to_string());
             ListMots(Rc::new(v))
         }
+        // A LISTCHPO grows by appending: its fields are separate load
+        // cases, never merged as `CHPOINT ET CHPOINT` would merge them.
+        (ListChpo(l), ListChpo(m)) => ListChpo(Rc::new(l.iter().chain(m.iter()).cloned().collect())),
+        (ListChpo(l), Chpo(c)) => ListChpo(Rc::new(l.iter().chain([c]).cloned().collect())),
+        (Chpo(c), ListChpo(l)) => ListChpo(Rc::new([c].into_iter().chain(l.iter()).cloned().collect())),
         (Point(_) | Mesh(_), Point(_) | Mesh(_)) => {
             Mesh(Rc::new(as_mesh(&x).unwrap_or_default().union(&as_mesh(&y).unwrap_or_default())))
         }

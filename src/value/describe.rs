@@ -13,20 +13,16 @@ pub fn describe(it: &Interp, v: &Value) -> String {
             let parts: Vec<String> = m.parts.iter().map(|p| format!("{} {}", p.len(), p.ty.name())).collect();
             format!("{} element(s) ({}), {} node(s)", m.n_elements(), parts.join(", "), m.node_list().len())
         }
-        Value::Chpo(c) => {
-            let comps = c.components();
-            let mut s = format!("{} field, components {}, {} value(s)", c.nature.name(), comps.join(" "), c.len());
-            s.push_str(&format!("\n  node {}", comps.iter().map(|c| format!(" {:>12}", c)).collect::<String>()));
-            for (k, n) in c.nodes.iter().enumerate() {
-                if k == MAX_LINES {
-                    s.push_str(&format!("\n  ... ({} more node(s))", c.nodes.len() - MAX_LINES));
+        Value::Chpo(c) => chpoint(c),
+        Value::ListChpo(l) => {
+            // Each field as CHPOINT's LIST shows it, indented under its rank.
+            let mut s = format!("{} field(s)", l.len());
+            for (i, c) in l.iter().enumerate() {
+                if i == MAX_LINES {
+                    s.push_str(&format!("\n  ... ({} more field(s))", l.len() - MAX_LINES));
                     break;
                 }
-                let vals: String = comps
-                    .iter()
-                    .map(|comp| c.get(*n, comp).map_or(format!(" {:>12}", "-"), |x| format!(" {:>12}", fmt_float(x))))
-                    .collect();
-                s.push_str(&format!("\n  {:>4}{}", n + 1, vals));
+                s.push_str(&format!("\n  field {}: {}", i + 1, chpoint(c).replace('\n', "\n  ")));
             }
             s
         }
@@ -101,6 +97,25 @@ pub fn describe(it: &Interp, v: &Value) -> String {
             other.type_name()
         }
     }
+}
+
+/// Nature, components, then one line per node (at most MAX_LINES).
+fn chpoint(c: &crate::value::Chpoint) -> String {
+    let comps = c.components();
+    let mut s = format!("{} field, components {}, {} value(s)", c.nature.name(), comps.join(" "), c.len());
+    s.push_str(&format!("\n  node {}", comps.iter().map(|c| format!(" {:>12}", c)).collect::<String>()));
+    for (k, n) in c.nodes.iter().enumerate() {
+        if k == MAX_LINES {
+            s.push_str(&format!("\n  ... ({} more node(s))", c.nodes.len() - MAX_LINES));
+            break;
+        }
+        let vals: String = comps
+            .iter()
+            .map(|comp| c.get(*n, comp).map_or(format!(" {:>12}", "-"), |x| format!(" {:>12}", fmt_float(x))))
+            .collect();
+        s.push_str(&format!("\n  {:>4}{}", n + 1, vals));
+    }
+    s
 }
 
 /// Blocks in one line each; conditions row by row (the LX node, the terms,

@@ -49,6 +49,7 @@ fn identity(v: &Value) -> usize {
         Value::Proc(r) => Rc::as_ptr(r) as *const u8 as usize,
         Value::Mesh(r) => Rc::as_ptr(r) as *const u8 as usize,
         Value::Chpo(r) => Rc::as_ptr(r) as *const u8 as usize,
+        Value::ListChpo(r) => Rc::as_ptr(r) as *const u8 as usize,
         Value::Rigi(r) => Rc::as_ptr(r) as *const u8 as usize,
         Value::Model(r) => Rc::as_ptr(r) as *const u8 as usize,
         Value::Mchaml(r) => Rc::as_ptr(r) as *const u8 as usize,
