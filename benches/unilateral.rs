@@ -9,7 +9,7 @@
 //!   supports spread over the bottom face.
 //! * `obstacle`: the 512×512 membrane fixed on its perimeter (bilateral)
 //!   above a flat obstacle, one MINI per interior node (m ≈ n), solved by
-//!   CREUX with the PDAS rule from all conditions inactive.
+//!   CREUX with its defaults (from all conditions inactive, mixed rule).
 //!
 //! F is measured in the same run, on K with the supported (or fixed)
 //! unknowns eliminated; both are medians of `GIBI_BENCH_REPEAT` (default 3)
@@ -56,13 +56,18 @@ fn run(name: &str, k: &Matrix, nodes: &[usize], gap: f64, load: f64, method: Met
     d.extend(fixed.iter().map(|_| 0.0));
     let l = Load { f: vec![load; n], d };
     let eliminated: Vec<usize> = if fixed.is_empty() { nodes.to_vec() } else { fixed.to_vec() };
-    // GIBI_OBSTACLE_COLD=1: gibi's own cold start (all active, damped rule)
-    // instead of PDAS from all inactive.
-    let cold = std::env::var("GIBI_OBSTACLE_COLD").is_ok();
-    let opts = if method == Method::Creux && !cold {
-        UnilOptions { method, rule: Rule::Pdas, initial: Some(vec![false; m]), ..Default::default() }
+    // The obstacle runs with CREUX's defaults (all inactive, mixed rule).
+    // GIBI_OBSTACLE_RULE=pdas|damped picks another rule from the same start,
+    // GIBI_OBSTACLE_COLD=1 Cast3M's cold start (all active, damped rule).
+    let rule = match std::env::var("GIBI_OBSTACLE_RULE").as_deref() {
+        Ok("pdas") => Rule::Pdas,
+        Ok("damped") => Rule::Damped,
+        _ => Rule::Auto,
+    };
+    let opts = if method == Method::Creux && std::env::var("GIBI_OBSTACLE_COLD").is_ok() {
+        UnilOptions { method, rule: Rule::Damped, initial: Some(vec![true; m]), ..Default::default() }
     } else {
-        UnilOptions { method, ..Default::default() }
+        UnilOptions { method, rule, ..Default::default() }
     };
     let verbose = std::env::var("GIBI_BENCH_VERBOSE").is_ok();
     // Medians of interleaved repeats: single timings vary by ±30 % on the

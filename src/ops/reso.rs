@@ -14,7 +14,7 @@ use std::rc::Rc;
 pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "RESO", signature: "RESO RIGIDITE CHPOINT|LISTCHPO (CHPOINT|LISTCHPO …) ('NOID') ('NOUNIL') ('STAB') ('ENSE') ('SOUC') ('INIB' RIGIDITE LISTENTI)", doc: "Solve K u = F with bilateral and unilateral conditions; the result holds the unknowns and the LX of active conditions. Several right-hand sides share one factorisation; a LISTCHPO gives a LISTCHPO of solutions in the same order.", example: "u = reso (k et cl) f ;", f: reso },
     OpDef { name: "REAC", signature: "REAC RIGIDITE CHPOINT|LISTCHPO", doc: "Reactions -Cᵀλ of the conditions of RIGIDITE, from the multipliers LX of a RESO result (DISCRET field); a LISTCHPO of results gives a LISTCHPO of reactions.", example: "r = reac cl u ;", f: reac },
-    OpDef { name: "UNIL", signature: "UNIL RIGIDITE CHPOINT ('CONDENSE'|'ANCIEN'|'ITER'|'CREUX') ('PDAS'|'UNITAIRE') ('INIB' LISTENTI) ('MAXI' n) ('VERBEUX')", doc: "The unilateral solver (Cast3M's UNILATER): returns the solution and a TABLE of diagnostics.", example: "u diag = unil (k et c) f 'CONDENSE' ;", f: unil },
+    OpDef { name: "UNIL", signature: "UNIL RIGIDITE CHPOINT ('CONDENSE'|'ANCIEN'|'ITER'|'CREUX') ('RAPIDE'|'PDAS'|'MIXTE'|'UNITAIRE') ('INIB' LISTENTI) ('MAXI' n) ('VERBEUX')", doc: "The unilateral solver (Cast3M's UNILATER): returns the solution and a TABLE of diagnostics.", example: "u diag = unil (k et c) f 'CONDENSE' ;", f: unil },
 ];
 
 struct Opts {
@@ -39,13 +39,13 @@ fn read_options(it: &Interp, a: &mut Args, r: &Rigidite) -> Result<Opts> {
         soft: false,
         initial: None,
         method: if it.opts.reso.starts_with("ITER") { Method::Iter } else { Method::Auto },
-        rule: crate::solve::unilateral::Rule::Damped,
+        rule: crate::solve::unilateral::Rule::Auto,
         max_iter: None,
         verbose: it.opts.echo >= 1,
     };
     const KW: &[&str] = &[
         "NOID", "NOUNIL", "STAB", "NOSTAB", "ENSE", "SOUC", "ELIM", "INIB", "CONDENSE", "ANCIEN", "ITER", "CREUX",
-        "PDAS", "UNITAIRE", "MAXI", "VERBEUX", "GRAD", "CHOL",
+        "PDAS", "MIXTE", "RAPIDE", "UNITAIRE", "MAXI", "VERBEUX", "GRAD", "CHOL",
     ];
     while let Some(k) = a.keyword(KW) {
         match k {
@@ -71,6 +71,8 @@ fn read_options(it: &Interp, a: &mut Args, r: &Rigidite) -> Result<Opts> {
             "ITER" => o.method = Method::Iter,
             "CREUX" => o.method = Method::Creux,
             "PDAS" => o.rule = crate::solve::unilateral::Rule::Pdas,
+            "MIXTE" => o.rule = crate::solve::unilateral::Rule::Mixed,
+            "RAPIDE" => o.rule = crate::solve::unilateral::Rule::Damped,
             "UNITAIRE" => o.rule = crate::solve::unilateral::Rule::SingleChange,
             "MAXI" => o.max_iter = Some(a.req::<i64>()?.max(1) as usize),
             "VERBEUX" => o.verbose = true,
@@ -302,7 +304,7 @@ fn merge(o: &mut Opts, m: Opts) {
     if m.max_iter.is_some() {
         o.max_iter = m.max_iter;
     }
-    if m.rule != crate::solve::unilateral::Rule::Damped {
+    if m.rule != crate::solve::unilateral::Rule::Auto {
         o.rule = m.rule;
     }
 }
