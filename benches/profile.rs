@@ -26,7 +26,7 @@ fn main() {
         common::perimeter(nx)
     };
     let conditions: Vec<Condition> =
-        nodes.iter().map(|&j| Condition { terms: vec![(j, 1.0)], kind: Kind::Mini }).collect();
+        nodes.iter().map(|&j| Condition { terms: vec![(j, 1.0)], kind: Kind::Mini, dual: None }).collect();
     let m = conditions.len();
     let p = Problem { k, conditions };
     let f = common::reference_f(&p.k, &nodes);

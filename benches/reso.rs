@@ -18,7 +18,7 @@ fn main() {
     let n = k.n;
     let fixed = common::perimeter(nx);
     let conditions: Vec<Condition> =
-        fixed.iter().map(|&j| Condition { terms: vec![(j, 1.0)], kind: Kind::Equal }).collect();
+        fixed.iter().map(|&j| Condition { terms: vec![(j, 1.0)], kind: Kind::Equal, dual: None }).collect();
     let m = conditions.len();
     let p = Problem { k, conditions };
     let load = |s: f64| Load {

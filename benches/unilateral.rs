@@ -41,8 +41,8 @@ fn run(name: &str, k: &Matrix, nodes: &[usize], gap: f64, load: f64, method: Met
     let m = nodes.len();
     let gap = gap * std::env::var("GIBI_BENCH_GAP").ok().and_then(|s| s.parse().ok()).unwrap_or(1.0);
     let mut conditions: Vec<Condition> =
-        nodes.iter().map(|&j| Condition { terms: vec![(j, 1.0)], kind: Kind::Mini }).collect();
-    conditions.extend(fixed.iter().map(|&j| Condition { terms: vec![(j, 1.0)], kind: Kind::Equal }));
+        nodes.iter().map(|&j| Condition { terms: vec![(j, 1.0)], kind: Kind::Mini, dual: None }).collect();
+    conditions.extend(fixed.iter().map(|&j| Condition { terms: vec![(j, 1.0)], kind: Kind::Equal, dual: None }));
     let p = Problem { k: k.clone(), conditions };
     let mut d: Vec<f64> = (0..m)
         .map(|q| {

@@ -25,8 +25,8 @@ fn two_bars() -> Rigidite {
     };
     let mut r = Rigidite::new(Subtype::Rigidite);
     r.blocks.push(block);
-    r.conds.push(CondRow { mult_node: 3, terms: vec![(0, "UX".into(), 1.0)], kind: Kind::Equal });
-    r.conds.push(CondRow { mult_node: 4, terms: vec![(0, "UY".into(), 1.0)], kind: Kind::Mini });
+    r.conds.push(CondRow::new(3, vec![(0, "UX".into(), 1.0)], Kind::Equal));
+    r.conds.push(CondRow::new(4, vec![(0, "UY".into(), 1.0)], Kind::Mini));
     r
 }
 

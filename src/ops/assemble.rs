@@ -54,8 +54,15 @@ impl Assembled {
         }
         let mut conditions = Vec::with_capacity(r.conds.len());
         for (k, c) in r.conds.iter().enumerate() {
-            let terms = c.terms.iter().map(|(n, comp, coef)| (a.unknown(*n, comp), *coef)).collect();
-            conditions.push(Condition { terms, kind: c.kind });
+            let mut number = |t: &[(usize, String, f64)]| -> Vec<(usize, f64)> {
+                t.iter().map(|(n, comp, coef)| (a.unknown(*n, comp), *coef)).collect()
+            };
+            let terms = number(&c.terms);
+            let dual = c.dual.as_deref().map(&mut number);
+            // A non-associated condition makes the system non-symmetric
+            // (the blocks give every entry of K, so LU can read them all).
+            symmetric &= dual.is_none();
+            conditions.push(Condition { terms, kind: c.kind, dual });
             a.mult.insert(c.mult_node, k);
         }
         a.problem = Problem { k: Matrix { n: a.dofs.len(), entries, symmetric }, conditions };

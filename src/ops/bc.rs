@@ -22,8 +22,8 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "RELA",
-        signature: "RELA ('MINI'|'MAXI') (c1) comp1 GEO1 (+|-) (c2) comp2 GEO2 … | RELA ('MINI'|'MAXI') CHPOINT",
-        doc: "Linear relations between unknowns, node by node (MINI: >= d, MAXI: <= d).",
+        signature: "RELA ('MINI'|'MAXI') (c1) comp1 GEO1 (+|-) (c2) comp2 GEO2 … | RELA ('MINI'|'MAXI') CHPOINT ('DUAL' CHPOINT)",
+        doc: "Linear relations between unknowns, node by node (MINI: >= d, MAXI: <= d). From a field, one relation whose coefficients are the field's values; 'DUAL' gives a non-associated reaction direction (the system is then solved as non-symmetric).",
         example: "r = rela 'MINI' 1. 'UX' pb - 1. 'UX' pa ;",
         f: rela,
     },
@@ -107,13 +107,13 @@ fn bloq(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             Direction::Comps(cs) => {
                 for c in cs {
                     let m = mult_node(it, n);
-                    rig.conds.push(CondRow { mult_node: m, terms: vec![(n, c.clone(), 1.0)], kind });
+                    rig.conds.push(CondRow::new(m, vec![(n, c.clone(), 1.0)], kind));
                 }
             }
             Direction::Vector(v) => {
                 let terms = direction_terms(it, n, *v).map_err(|e| a.err(e))?;
                 let m = mult_node(it, n);
-                rig.conds.push(CondRow { mult_node: m, terms, kind });
+                rig.conds.push(CondRow::new(m, terms, kind));
             }
             Direction::Radial(c, ortho) => {
                 let x = it.nodes.get(n);
@@ -123,7 +123,7 @@ fn bloq(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 }
                 let terms = direction_terms(it, n, v).map_err(|e| a.err(format!("node {}: {}", n + 1, e)))?;
                 let m = mult_node(it, n);
-                rig.conds.push(CondRow { mult_node: m, terms, kind });
+                rig.conds.push(CondRow::new(m, terms, kind));
             }
         }
     }
@@ -140,20 +140,34 @@ fn direction_terms(it: &Interp, node: usize, v: [f64; 3]) -> std::result::Result
     Ok(t.iter().enumerate().filter(|(k, _)| v[*k] != 0.0).map(|(k, c)| (node, c.to_string(), v[k] / norm)).collect())
 }
 
+/// The non-zero values of a field as relation terms over primal unknowns.
+fn field_terms(ch: &Chpoint) -> Vec<(usize, String, f64)> {
+    ch.entries().filter(|e| e.2 != 0.0).map(|(n, c, v)| (n, c.to_string(), v)).collect()
+}
+
 /// One written term of RELA: coefficient, weighted components, nodes.
 type RelaTerm = (f64, Vec<(String, f64)>, Vec<usize>);
 
 fn rela(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let kind = kind_keyword(a);
     if let Some(ch) = a.opt::<Rc<Chpoint>>() {
-        if a.keyword(&["DUAL"]).is_some() {
-            return Err(a.err("non-associated relations ('DUAL') are not supported yet"));
-        }
-        let terms: Vec<(usize, String, f64)> = ch.entries().map(|(n, c, v)| (n, c.to_string(), v)).collect();
+        let terms = field_terms(&ch);
         let first = terms.first().map(|t| t.0).ok_or_else(|| a.err("the field is empty"))?;
+        // 'DUAL' CHPO2: a non-associated reaction direction (rela.notice
+        // 2024); the relation itself stays the one of the first field.
+        let dual = match a.keyword(&["DUAL"]) {
+            Some(_) => {
+                let d = field_terms(&*a.req::<Rc<Chpoint>>()?);
+                if d.is_empty() {
+                    return Err(a.err("the DUAL field is empty"));
+                }
+                Some(d)
+            }
+            None => None,
+        };
         let m = mult_node(it, first);
         let mut rig = Rigidite::new(Subtype::Blocage);
-        rig.conds.push(CondRow { mult_node: m, terms, kind });
+        rig.conds.push(CondRow { mult_node: m, terms, kind, dual });
         return Ok(vec![Value::Rigi(Rc::new(rig))]);
     }
     // Terms: (sign) (coef) comp geo, repeated.
@@ -198,7 +212,7 @@ fn rela(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             }
         }
         let m = mult_node(it, row[0].0);
-        rig.conds.push(CondRow { mult_node: m, terms: row, kind });
+        rig.conds.push(CondRow::new(m, row, kind));
     }
     Ok(vec![Value::Rigi(Rc::new(rig))])
 }

@@ -325,7 +325,7 @@ pub(crate) fn matvec(r: &Rigidite, u: &Chpoint) -> Chpoint {
         let cu: f64 = c.terms.iter().map(|(n, comp, k)| k * u.get(*n, comp).unwrap_or(0.0)).sum();
         out.add(c.mult_node, "FLX", cu, true);
         if let Some(l) = u.get(c.mult_node, "LX") {
-            for (n, comp, k) in &c.terms {
+            for (n, comp, k) in c.reaction_terms() {
                 out.add(*n, &dofs::dual_of(comp), k * l, true);
             }
         }

@@ -196,7 +196,7 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             }
             out.conds = r.conds.clone();
             for c in out.conds.iter_mut() {
-                for t in c.terms.iter_mut() {
+                for t in c.terms.iter_mut().chain(c.dual.iter_mut().flatten()) {
                     t.1 = ren(&t.1, &old, &new);
                 }
             }

@@ -262,7 +262,7 @@ fn reso_ense(
             Ok(f) => break f,
             Err(SolveError::Singular { dofs }) if !dofs.is_empty() && !held.contains(&dofs[0]) && held.len() < 64 => {
                 held.push(dofs[0]);
-                p.conditions.push(Condition { terms: vec![(dofs[0], 1.0)], kind: Kind::Equal });
+                p.conditions.push(Condition { terms: vec![(dofs[0], 1.0)], kind: Kind::Equal, dual: None });
             }
             Err(e) => return Err(asm.explain(it, r, e, loads)),
         }
@@ -370,7 +370,7 @@ fn reaction(r: &Rigidite, u: &Chpoint) -> Chpoint {
         // An inactive unilateral condition has no LX: its reaction is 0
         // (reac.notice), written explicitly so EXTR finds it.
         let l = u.get(c.mult_node, "LX").unwrap_or(0.0);
-        for (n, comp, coef) in &c.terms {
+        for (n, comp, coef) in c.reaction_terms() {
             out.add(*n, &super::dofs::dual_of(comp), -coef * l, true);
         }
     }

@@ -16,7 +16,7 @@ fn chain(n: usize) -> Matrix {
 }
 
 fn cond(terms: &[(usize, f64)], kind: Kind) -> Condition {
-    Condition { terms: terms.to_vec(), kind }
+    Condition { terms: terms.to_vec(), kind, dual: None }
 }
 
 fn dense(p: &Problem) -> Mat<f64> {

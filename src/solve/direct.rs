@@ -230,7 +230,7 @@ pub fn check_structure(p: &Problem) -> Result<(), SolveError> {
     }
     let mut single: Vec<Vec<usize>> = vec![Vec::new(); n];
     for (ci, c) in p.conditions.iter().enumerate() {
-        for &(j, _) in &c.terms {
+        for &(j, _) in c.terms.iter().chain(c.dual.iter().flatten()) {
             touched[j] = true;
         }
         let mut dofs: Vec<usize> = c.terms.iter().map(|t| t.0).collect();

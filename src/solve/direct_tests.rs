@@ -13,7 +13,7 @@ fn bars(scale: f64) -> Matrix {
 }
 
 fn eq(terms: &[(usize, f64)]) -> Condition {
-    Condition { terms: terms.to_vec(), kind: Kind::Equal }
+    Condition { terms: terms.to_vec(), kind: Kind::Equal, dual: None }
 }
 
 fn close(a: &[f64], b: &[f64]) {
@@ -152,4 +152,25 @@ fn stab_lets_an_unloaded_mechanism_through() {
     let opts = DirectOptions { check_residual: true, stab: true };
     let s = solve(&p, &[load([0.0; 3], &[])], &opts).unwrap();
     close(&s[0].u, &[0.0; 3]);
+}
+
+#[test]
+fn non_associated_relation() {
+    // u0 blocked; u2 − u1 = 1 with the reaction on u2 alone (dual = e2),
+    // so nothing but the bars acts on u1.
+    let mut k = bars(1.0);
+    k.symmetric = false;
+    let mut rel = eq(&[(2, 1.0), (1, -1.0)]);
+    rel.dual = Some(vec![(2, 1.0)]);
+    let p = Problem { k, conditions: vec![eq(&[(0, 1.0)]), rel] };
+    let s = solve(&p, &[load([0.0; 3], &[0.0, 1.0])], &Default::default()).unwrap();
+    // Row 1: k1 (u1 − u0) + k2 (u1 − u2) = 0 with no reaction there:
+    // u1 − (u2 − u1)/2 = 0 and u2 − u1 = 1 give u1 = 0.5, u2 = 1.5; then
+    // at u2: 0.5 (u2 − u1) + λ = 0, λ = −0.5; at u0: −u1 + λ0 = 0.
+    close(&s[0].u, &[0.0, 0.5, 1.5]);
+    close(&s[0].lambda, &[0.5, -0.5]);
+    // A non-associated condition on a matrix declared symmetric is refused.
+    let mut q = p.clone();
+    q.k.symmetric = true;
+    assert!(matches!(solve(&q, &[load([0.0; 3], &[0.0, 1.0])], &Default::default()), Err(SolveError::Other(_))));
 }

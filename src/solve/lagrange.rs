@@ -76,9 +76,19 @@ pub fn validate(p: &Problem) -> Result<(), SolveError> {
             // A row without unknowns makes the multiplier block singular.
             return Err(SolveError::DependentConditions { conditions: vec![ci] });
         }
-        for &(j, v) in &c.terms {
+        for &(j, v) in c.terms.iter().chain(c.dual.iter().flatten()) {
             if j >= n || !v.is_finite() {
                 return Err(SolveError::Other(format!("condition {ci}: bad term on unknown {j}")));
+            }
+        }
+        if let Some(dual) = &c.dual {
+            if p.k.symmetric {
+                return Err(SolveError::Other(format!(
+                    "condition {ci} is non-associated: the problem must be given as non-symmetric"
+                )));
+            }
+            if dual.is_empty() {
+                return Err(SolveError::DependentConditions { conditions: vec![ci] });
             }
         }
     }
@@ -140,7 +150,7 @@ impl Doubled {
         let dim = n + 2 * m;
         let symmetric = p.k.symmetric;
         let upper = upper_mode(p);
-        let n_terms: usize = p.conditions.iter().map(|c| c.terms.len()).sum();
+        let n_terms: usize = p.conditions.iter().map(|c| c.terms.len() + c.reaction_terms().len()).sum();
         let n_src = p.k.entries.len() + 4 * n_terms + 4 * m;
         if dim >= NONE as usize
             || n_src.saturating_add(2 * dim).saturating_add(dense_tail.len().saturating_mul(dense_tail.len()))
@@ -173,7 +183,11 @@ impl Doubled {
                     emit(r, c);
                     let (r, c) = key(n + m + ci, j);
                     emit(r, c);
-                    if !symmetric {
+                }
+                // The columns of the multipliers: the reaction direction
+                // (the row itself unless the condition is non-associated).
+                if !symmetric {
+                    for &(j, _) in c.reaction_terms() {
                         emit(j as u32, (n + ci) as u32);
                         emit(j as u32, (n + m + ci) as u32);
                     }
@@ -284,7 +298,7 @@ impl Doubled {
             && p.conditions.len() == self.m
             && p.k.symmetric == self.symmetric
             && upper_mode(p) == self.upper
-            && p.conditions.iter().map(|c| c.terms.len()).sum::<usize>() == self.n_terms
+            && p.conditions.iter().map(|c| c.terms.len() + c.reaction_terms().len()).sum::<usize>() == self.n_terms
             && structure_hash(p) == self.structure
     }
 
@@ -332,14 +346,12 @@ impl Doubled {
             }
         }
         self.scaling = scaling(p, &row_max);
-        let per_term = if self.symmetric { 2 } else { 4 };
         for (ci, c) in p.conditions.iter().enumerate() {
             let sg = self.scaling.sigma[ci];
-            for &(_, v) in &c.terms {
-                for _ in 0..per_term {
-                    self.values[self.pos[s] as usize] += sg * v;
-                    s += 1;
-                }
+            let columns: &[(usize, f64)] = if self.symmetric { &[] } else { c.reaction_terms() };
+            for &(_, v) in c.terms.iter().flat_map(|t| [t, t]).chain(columns.iter().flat_map(|t| [t, t])) {
+                self.values[self.pos[s] as usize] += sg * v;
+                s += 1;
             }
         }
         for ci in 0..m {
@@ -456,6 +468,12 @@ pub fn structure_hash(p: &Problem) -> u64 {
         for &(j, _) in &c.terms {
             mix(j as u64);
         }
+        if let Some(dual) = &c.dual {
+            mix(dual.len() as u64 ^ (1 << 48));
+            for &(j, _) in dual {
+                mix(j as u64);
+            }
+        }
     }
     h
 }
@@ -468,7 +486,7 @@ mod tests {
     fn bar() -> Problem {
         Problem {
             k: Matrix { n: 2, entries: vec![(0, 0, 4.0), (0, 1, -4.0), (1, 0, -4.0), (1, 1, 4.0)], symmetric: true },
-            conditions: vec![Condition { terms: vec![(0, 2.0)], kind: Kind::Equal }],
+            conditions: vec![Condition { terms: vec![(0, 2.0)], kind: Kind::Equal, dual: None }],
         }
     }
 

@@ -24,7 +24,7 @@ pub(super) fn sparse(d: &Dense) -> (Problem, Load) {
         .rows
         .iter()
         .zip(&d.sense)
-        .map(|(r, &s)| Condition { terms: r.clone(), kind: if s > 0.0 { Kind::Mini } else { Kind::Maxi } })
+        .map(|(r, &s)| Condition { terms: r.clone(), kind: if s > 0.0 { Kind::Mini } else { Kind::Maxi }, dual: None })
         .collect();
     (Problem { k: Matrix { n, entries, symmetric: true }, conditions }, Load { f: d.f.clone(), d: d.d.clone() })
 }
@@ -171,9 +171,9 @@ pub(super) fn cases() -> Vec<(String, Problem, Load)> {
         let p = Problem {
             k: Matrix { n: 4, entries, symmetric: true },
             conditions: vec![
-                Condition { terms: vec![(0, 1.0)], kind: Kind::Equal },
-                Condition { terms: vec![(3, 1.0)], kind: Kind::Maxi },
-                Condition { terms: vec![(2, 1.0), (1, -0.5)], kind: Kind::Mini },
+                Condition { terms: vec![(0, 1.0)], kind: Kind::Equal, dual: None },
+                Condition { terms: vec![(3, 1.0)], kind: Kind::Maxi, dual: None },
+                Condition { terms: vec![(2, 1.0), (1, -0.5)], kind: Kind::Mini, dual: None },
             ],
         };
         all.push((format!("mixed {load}"), p, Load { f: vec![0.0, 0.0, 0.3, load], d: vec![0.1, 1.0, -0.2] }));
@@ -199,9 +199,9 @@ fn bilateral_rows_on_contact_unknowns() {
     let p = Problem {
         k: Matrix { n: 4, entries, symmetric: true },
         conditions: vec![
-            Condition { terms: vec![(1, 1.0)], kind: Kind::Maxi },
-            Condition { terms: vec![(2, 1.0)], kind: Kind::Mini },
-            Condition { terms: vec![(2, 1.0), (3, -0.5)], kind: Kind::Equal },
+            Condition { terms: vec![(1, 1.0)], kind: Kind::Maxi, dual: None },
+            Condition { terms: vec![(2, 1.0)], kind: Kind::Mini, dual: None },
+            Condition { terms: vec![(2, 1.0), (3, -0.5)], kind: Kind::Equal, dual: None },
         ],
     };
     for f in [0.4, 1.0, -3.0] {
@@ -216,11 +216,11 @@ fn bilateral_rows_on_contact_unknowns() {
     let p = Problem {
         k: Matrix { n: 5, entries, symmetric: true },
         conditions: vec![
-            Condition { terms: vec![(1, 1.0)], kind: Kind::Maxi },
-            Condition { terms: vec![(1, 1.0), (3, -1.0)], kind: Kind::Equal },
+            Condition { terms: vec![(1, 1.0)], kind: Kind::Maxi, dual: None },
+            Condition { terms: vec![(1, 1.0), (3, -1.0)], kind: Kind::Equal, dual: None },
             // Touches P only once the previous relation has moved.
-            Condition { terms: vec![(3, 1.0), (4, 1.0)], kind: Kind::Equal },
-            Condition { terms: vec![(0, 1.0)], kind: Kind::Mini },
+            Condition { terms: vec![(3, 1.0), (4, 1.0)], kind: Kind::Equal, dual: None },
+            Condition { terms: vec![(0, 1.0)], kind: Kind::Mini, dual: None },
         ],
     };
     for f in [1.0, -2.0] {
@@ -273,12 +273,12 @@ pub(super) fn random_problem(rng: &mut Rng) -> (Problem, Load) {
             vec![(j, if rng.below(2) == 0 { 1.0 } else { -2.0 })]
         };
         used[j] = true;
-        conditions.push(Condition { terms, kind });
+        conditions.push(Condition { terms, kind, dual: None });
         d.push(0.3 * rng.sym());
     }
     if rng.below(3) == 0 {
         if let Some(j) = (0..n).find(|&j| !used[j]) {
-            conditions.push(Condition { terms: vec![(j, 1.0)], kind: Kind::Equal });
+            conditions.push(Condition { terms: vec![(j, 1.0)], kind: Kind::Equal, dual: None });
             d.push(0.1 * rng.sym());
         }
     }
@@ -330,7 +330,7 @@ fn iter_matches_condense_on_random_problems() {
 #[test]
 fn iter_refuses_bilateral_relations() {
     let (mut p, mut l) = sparse(&chain(1.0));
-    p.conditions.push(Condition { terms: vec![(1, 1.0), (2, -1.0)], kind: Kind::Equal });
+    p.conditions.push(Condition { terms: vec![(1, 1.0), (2, -1.0)], kind: Kind::Equal, dual: None });
     l.d.push(0.0);
     assert!(matches!(run(&p, &l, Method::Iter), Err(SolveError::Other(_))));
 }

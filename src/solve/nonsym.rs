@@ -132,10 +132,7 @@ fn solve_status(p: &Problem, load: &Load, uni: &[usize], active: &[bool]) -> Res
     }
     let sub = Problem {
         k: p.k.clone(),
-        conditions: keep
-            .iter()
-            .map(|&i| Condition { terms: p.conditions[i].terms.clone(), kind: Kind::Equal })
-            .collect(),
+        conditions: keep.iter().map(|&i| Condition { kind: Kind::Equal, ..p.conditions[i].clone() }).collect(),
     };
     let sub_load = Load { f: load.f.clone(), d: keep.iter().map(|&i| load.d[i]).collect() };
     let s = direct::solve(&sub, &[sub_load], &DirectOptions::default())?.remove(0);

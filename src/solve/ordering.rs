@@ -286,9 +286,9 @@ mod tests {
         Problem {
             k: Matrix { n, entries: e, symmetric: true },
             conditions: vec![
-                Condition { terms: vec![(0, 1.0)], kind: Kind::Equal },
-                Condition { terms: vec![(2, 1.0), (5, -1.0), (3, 2.0)], kind: Kind::Equal },
-                Condition { terms: vec![(4, 1.0)], kind: Kind::Mini },
+                Condition { terms: vec![(0, 1.0)], kind: Kind::Equal, dual: None },
+                Condition { terms: vec![(2, 1.0), (5, -1.0), (3, 2.0)], kind: Kind::Equal, dual: None },
+                Condition { terms: vec![(4, 1.0)], kind: Kind::Mini, dual: None },
             ],
         }
     }

@@ -39,10 +39,25 @@ impl Kind {
 /// One condition: a sparse row over primal unknowns and its kind. Its
 /// limit `d` comes with the load ([`Load::d`]), because DEPI values change
 /// from one RESO to the next while the matrix does not.
+///
+/// `dual` makes the condition *non-associated* (RELA … 'DUAL'): the
+/// reaction acts along `dual` instead of `terms`, i.e. the equilibrium reads
+/// `K u + Σ dualᵢᵀ λᵢ = F` while the condition stays `terms·u ⋈ d`. The
+/// system is then not symmetric: a problem holding such a condition must
+/// have `k.symmetric == false` (every K entry given), and goes through
+/// sparse LU.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Condition {
     pub terms: Vec<(usize, f64)>,
     pub kind: Kind,
+    pub dual: Option<Vec<(usize, f64)>>,
+}
+
+impl Condition {
+    /// The direction of the reaction: `dual` when given, else the row.
+    pub fn reaction_terms(&self) -> &[(usize, f64)] {
+        self.dual.as_deref().unwrap_or(&self.terms)
+    }
 }
 
 /// The whole operator: stiffness plus condition rows.

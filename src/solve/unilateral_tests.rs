@@ -6,7 +6,7 @@ use crate::solve::problem::{Condition, Kind, Matrix};
 fn spring(kind: Kind) -> Problem {
     Problem {
         k: Matrix { n: 1, entries: vec![(0, 0, 10.0)], symmetric: true },
-        conditions: vec![Condition { terms: vec![(0, 1.0)], kind }],
+        conditions: vec![Condition { terms: vec![(0, 1.0)], kind, dual: None }],
     }
 }
 
@@ -46,7 +46,7 @@ fn chain_with_three_stops_and_warm_start() {
     }
     let p = Problem {
         k: Matrix { n: 3, entries, symmetric: true },
-        conditions: (0..3).map(|i| Condition { terms: vec![(i, 1.0)], kind: Kind::Maxi }).collect(),
+        conditions: (0..3).map(|i| Condition { terms: vec![(i, 1.0)], kind: Kind::Maxi, dual: None }).collect(),
     };
     let g = vec![2.0, 1.5, 2.4];
     let mut cache = UnilCache::default();
@@ -79,8 +79,8 @@ fn bilateral_and_unilateral_together() {
     let p = Problem {
         k: Matrix { n: 3, entries, symmetric: true },
         conditions: vec![
-            Condition { terms: vec![(0, 1.0)], kind: Kind::Equal },
-            Condition { terms: vec![(2, 1.0)], kind: Kind::Maxi },
+            Condition { terms: vec![(0, 1.0)], kind: Kind::Equal, dual: None },
+            Condition { terms: vec![(2, 1.0)], kind: Kind::Maxi, dual: None },
         ],
     };
     let mut seen = 0;

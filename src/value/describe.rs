@@ -139,15 +139,16 @@ fn rigidity(r: &crate::value::Rigidite) -> String {
             Kind::Mini => ">= (MINI)",
             Kind::Maxi => "<= (MAXI)",
         };
-        let terms: Vec<String> =
-            c.terms.iter().map(|(n, comp, k)| format!("{} {}(node {})", super::fmt_float(*k), comp, n + 1)).collect();
-        s.push_str(&format!(
-            "\n  condition {} (LX on node {}): {} {} d",
-            i + 1,
-            c.mult_node + 1,
-            terms.join(" + "),
-            kind
-        ));
+        let show = |t: &[(usize, String, f64)]| -> String {
+            t.iter()
+                .map(|(n, comp, k)| format!("{} {}(node {})", super::fmt_float(*k), comp, n + 1))
+                .collect::<Vec<_>>()
+                .join(" + ")
+        };
+        s.push_str(&format!("\n  condition {} (LX on node {}): {} {} d", i + 1, c.mult_node + 1, show(&c.terms), kind));
+        if let Some(d) = &c.dual {
+            s.push_str(&format!(", reaction along {}", show(d)));
+        }
     }
     if r.conds.len() > 50 {
         s.push_str(&format!("\n  … {} conditions in all", r.conds.len()));

@@ -65,6 +65,20 @@ pub struct CondRow {
     pub mult_node: usize,
     pub terms: Vec<(usize, String, f64)>,
     pub kind: Kind,
+    /// Non-associated reaction direction (`RELA … 'DUAL' CHPO`): the
+    /// reaction acts along these terms instead of `terms`.
+    pub dual: Option<Vec<(usize, String, f64)>>,
+}
+
+impl CondRow {
+    /// An associated condition (the reaction along its own row).
+    pub fn new(mult_node: usize, terms: Vec<(usize, String, f64)>, kind: Kind) -> CondRow {
+        CondRow { mult_node, terms, kind, dual: None }
+    }
+    /// The direction of the reaction.
+    pub fn reaction_terms(&self) -> &[(usize, String, f64)] {
+        self.dual.as_deref().unwrap_or(&self.terms)
+    }
 }
 
 #[derive(Debug, Clone)]
