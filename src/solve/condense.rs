@@ -16,6 +16,13 @@
 //! factor holds −4(G + A), with G + A between A and 2A; once the shift is
 //! removed, S = −4G (the active baseline of §3.2).
 //!
+//! Without proportional rows G is usually regular, and the condensed tail
+//! is first factorised *unshifted*: the trailing supernode then holds the
+//! LDLᵀ of −4G itself, which is handed to the status loop as the factor of
+//! its first (all-active) status, one dense m³/3 factorisation saved. A
+//! tiny tail pivot (rows dependent in a non-proportional way) sends it back
+//! to the shifted factorisation.
+//!
 //! The first block of the factor (everything but the tail) is independent
 //! of the statuses, so one factorisation serves every status iteration;
 //! right-hand sides and the recovery use partial forward and back
@@ -42,19 +49,35 @@ struct Interrupted {
     tail: Vec<usize>,
     /// The Schur complement of the tail (shift removed), tail order.
     schur: Mat<f64>,
+    /// Factorise the tail of condensed λ2 without the shift (see
+    /// [`Interrupted::numeric`]); cleared when that meets a tiny pivot.
+    plain: bool,
+    /// With `plain`: the packed LDLᵀ of `schur` (D on the diagonal, unit L
+    /// strictly below), read from the factor.
+    tail_factor: Option<Mat<f64>>,
 }
+
+/// A plain tail pivot smaller than this fraction of its 4α is taken as
+/// singular: the tail is then factorised with the shift.
+const PLAIN_PIVOT_TOL: f64 = 1e-10;
 
 impl Interrupted {
     /// `sys`, if given, must have been built with the tail `fwd[cut..]`.
-    fn new(p: &Problem, fwd: Vec<usize>, cut: usize, sys: Option<Doubled>) -> Result<Self, SolveError> {
-        Self::try_new(p, fwd, cut, sys)?
+    fn new(p: &Problem, fwd: Vec<usize>, cut: usize, sys: Option<Doubled>, plain: bool) -> Result<Self, SolveError> {
+        Self::try_new(p, fwd, cut, sys, plain)?
             .ok_or_else(|| SolveError::Other("the condensed block does not form one trailing supernode".into()))
     }
 
     /// [`Interrupted::new`], or `None` when the tail is not one trailing
     /// supernode (a pattern without the explicit tail pairs whose tail the
     /// elimination does not connect).
-    fn try_new(p: &Problem, fwd: Vec<usize>, cut: usize, sys: Option<Doubled>) -> Result<Option<Self>, SolveError> {
+    fn try_new(
+        p: &Problem,
+        fwd: Vec<usize>,
+        cut: usize,
+        sys: Option<Doubled>,
+        plain: bool,
+    ) -> Result<Option<Self>, SolveError> {
         check_structure(p)?;
         if !p.k.symmetric {
             return Err(SolveError::Other("condensation needs a symmetric stiffness".into()));
@@ -70,7 +93,7 @@ impl Interrupted {
         if tail.is_empty() || n_sup == 0 || sup.supernode_begin()[n_sup - 1] > cut {
             return Ok(None);
         }
-        let mut it = Interrupted { sys, factor, cut, tail, schur: Mat::zeros(0, 0) };
+        let mut it = Interrupted { sys, factor, cut, tail, schur: Mat::zeros(0, 0), plain, tail_factor: None };
         // The system was just built: it already holds the values of `p`.
         it.numeric(p, false)?;
         Ok(Some(it))
@@ -85,7 +108,11 @@ impl Interrupted {
             .iter()
             .map(|&t| {
                 if t >= n + m {
-                    -4.0 * self.sys.scaling.alpha[t - n - m]
+                    if self.plain {
+                        0.0
+                    } else {
+                        -4.0 * self.sys.scaling.alpha[t - n - m]
+                    }
                 } else if t >= n {
                     -self.sys.row_scale[t]
                 } else {
@@ -113,15 +140,40 @@ impl Interrupted {
         let v = last.val();
         let mt = self.tail.len();
         let o = self.cut - last.start();
-        let mut l = Mat::<f64>::zeros(mt, mt);
+        let lt = v.submatrix(o, o, mt, mt);
+        if self.plain {
+            // Unshifted, the tail holds the LDLᵀ of S = −4G itself, negative
+            // definite for independent rows: its pivots say whether it is
+            // usable; if not, factorise again with the shift.
+            let (n, m) = (self.sys.n, self.sys.m);
+            let bad = self.tail.iter().enumerate().any(|(k, &t)| {
+                let d = lt[(k, k)];
+                let scale = if t >= n + m { 4.0 * self.sys.scaling.alpha[t - n - m] } else { 1.0 };
+                !(d < 0.0 && d.abs() > PLAIN_PIVOT_TOL * scale)
+            });
+            if bad {
+                self.plain = false;
+                self.tail_factor = None;
+                return self.numeric(p, false);
+            }
+        }
+        // S = L D Lᵀ over the tail, from the packed factor (its strict lower
+        // part is L, unit diagonal implied) and L·D, both copied column by
+        // column from contiguous slices (an indexed copy of 2000² entries
+        // costs as much as the product).
+        let mut packed = Mat::<f64>::zeros(mt, mt);
         let mut ld = Mat::<f64>::zeros(mt, mt);
         for j in 0..mt {
-            let d = v[(o + j, o + j)];
-            l[(j, j)] = 1.0;
-            ld[(j, j)] = d;
-            for i in j + 1..mt {
-                l[(i, j)] = v[(o + i, o + j)];
-                ld[(i, j)] = v[(o + i, o + j)] * d;
+            let src = lt.col(j).subrows(j, mt - j);
+            let src = src.try_as_col_major().expect("supernode columns are contiguous").as_slice();
+            let pk = packed.col_mut(j).subrows_mut(j, mt - j);
+            pk.try_as_col_major_mut().expect("contiguous").as_slice_mut().copy_from_slice(src);
+            let dst = ld.col_mut(j).subrows_mut(j, mt - j);
+            let dst = dst.try_as_col_major_mut().expect("contiguous").as_slice_mut();
+            let d = src[0];
+            dst[0] = d;
+            for (a, b) in dst[1..].iter_mut().zip(&src[1..]) {
+                *a = b * d;
             }
         }
         let mut s = Mat::<f64>::zeros(mt, mt);
@@ -131,18 +183,18 @@ impl Interrupted {
             Accum::Replace,
             ld.as_ref(),
             BlockStructure::TriangularLower,
-            l.transpose(),
+            packed.transpose(),
             BlockStructure::UnitTriangularUpper,
             1.0,
             // m³/3 flops at m ~ 10³: worth the threads.
             faer::get_global_parallelism(),
         );
+        drop(ld);
         for j in 0..mt {
             s[(j, j)] -= shift[j];
-            for i in j + 1..mt {
-                s[(j, i)] = s[(i, j)];
-            }
         }
+        mirror_lower(&mut s);
+        self.tail_factor = if self.plain { Some(packed) } else { None };
         // Take the shift back off the stored values too, so that residual
         // checks see the true matrix.
         for (&t, &sh) in self.tail.iter().zip(&shift) {
@@ -235,17 +287,18 @@ impl Condenser {
         let primal = ordering::primal_best(p, &[], Some((&sys.col_ptr, &sys.row_idx)))?;
         let fwd = ordering::doubled_order(p, &primal, &uni);
         let cut = fwd.len() - uni.len();
-        let core = match Interrupted::try_new(p, fwd.clone(), cut, Some(sys))? {
+        // Without proportional rows (duplicates, a gap on both sides of a
+        // dof) G is usually regular: the tail is then factorised unshifted
+        // and its factor is the status loop's first one (all active).
+        let rows: Vec<Vec<(usize, f64)>> = uni.iter().map(|&i| p.conditions[i].terms.clone()).collect();
+        let sense: Vec<f64> = uni.iter().map(|&i| p.conditions[i].kind.sense()).collect();
+        let plain = super::groups::analyse(&rows, &sense, &vec![0.0; uni.len()])
+            .is_ok_and(|g| g.partner.iter().all(Option::is_none) && !g.fixed_inactive.iter().any(|&f| f));
+        let core = match Interrupted::try_new(p, fwd.clone(), cut, Some(sys), plain)? {
             Some(core) => core,
-            None => Interrupted::new(p, fwd, cut, Some(Doubled::new(p, &tail)?))?,
+            None => Interrupted::new(p, fwd, cut, Some(Doubled::new(p, &tail)?), plain)?,
         };
-        Ok(Condenser {
-            core,
-            forwarded: std::sync::Mutex::new(None),
-            sense: uni.iter().map(|&i| p.conditions[i].kind.sense()).collect(),
-            rows: uni.iter().map(|&i| p.conditions[i].terms.clone()).collect(),
-            uni,
-        })
+        Ok(Condenser { core, forwarded: std::sync::Mutex::new(None), sense, rows, uni })
     }
 
     /// Global numbers of the unilateral conditions (position q ↦ condition).
@@ -297,15 +350,19 @@ impl Condenser {
         }
         let mu = self.uni.len();
         let alpha: Vec<f64> = self.uni.iter().map(|&i| sys.scaling.alpha[i]).collect();
-        let mut g = Mat::<f64>::zeros(mu, mu);
-        for j in 0..mu {
-            for i in 0..mu {
-                g[(i, j)] = -self.core.schur[(i, j)] / 4.0;
-            }
-        }
+        let g = &self.core.schur * faer::Scale(-0.25);
         let _ = m;
+        // G = −S/4 has the same L and D/(−4).
+        let g_factor = self.core.tail_factor.as_ref().map(|f| {
+            let mut f = f.clone();
+            for j in 0..mu {
+                f[(j, j)] *= -0.25;
+            }
+            f
+        });
         Ok(Condensed {
             g,
+            g_factor,
             h: (0..mu).map(|q| -r[(q, 0)] / 4.0).collect(),
             alpha,
             sigma: self.uni.iter().map(|&i| sys.scaling.sigma[i]).collect(),
@@ -343,6 +400,22 @@ impl Condenser {
             lambda[i] = if active[q] { 2.0 * sg[i] * x[q] } else { 0.0 };
         }
         Ok(Solution { u: z[..n].to_vec(), lambda, active: act })
+    }
+}
+
+/// Copies the lower triangle of a square matrix onto its upper one, by
+/// tiles so that both the reads and the writes stay in cache.
+fn mirror_lower(s: &mut Mat<f64>) {
+    const B: usize = 64;
+    let n = s.nrows();
+    for jb in (0..n).step_by(B) {
+        for ib in (jb..n).step_by(B) {
+            for j in jb..(jb + B).min(n) {
+                for i in ib.max(j + 1)..(ib + B).min(n) {
+                    s[(j, i)] = s[(i, j)];
+                }
+            }
+        }
     }
 }
 
@@ -439,7 +512,7 @@ pub fn schur_onto(p: &Problem, keep: &[usize]) -> Result<SchurOnto, SolveError> 
     } {
         cut -= 1;
     }
-    Ok(SchurOnto { core: Interrupted::new(p, fwd, cut, None)? })
+    Ok(SchurOnto { core: Interrupted::new(p, fwd, cut, None, false)? })
 }
 
 #[cfg(test)]

@@ -221,3 +221,77 @@ fn pure_stiffness_condensation_is_the_guyan_matrix() {
     assert_close(kc[(0, 1)], -ks, 1.0);
     assert_close(kc[(1, 1)], ks, 1.0);
 }
+
+/// G = ΣC H⁻¹ CᵀΣ by dense algebra (unilateral rows only, no bilateral).
+fn reference_g(p: &Problem, cd: &Condensed) -> Mat<f64> {
+    let n = p.k.n;
+    let m = p.conditions.len();
+    let cm = Mat::<f64>::from_fn(m, n, |i, j| p.conditions[i].terms.iter().filter(|t| t.0 == j).map(|t| t.1).sum());
+    let mut h = dense(p);
+    for i in 0..m {
+        let w = cd.sigma[i].powi(2) / cd.alpha[i];
+        for a in 0..n {
+            for b in 0..n {
+                h[(a, b)] += w * cm[(i, a)] * cm[(i, b)];
+            }
+        }
+    }
+    let sc = Mat::from_fn(n, m, |j, i| cm[(i, j)] * cd.sigma[i]);
+    let x = h.partial_piv_lu().solve(&sc);
+    sc.transpose() * &x
+}
+
+/// Independent rows: the tail is factorised unshifted and its factor is
+/// G's own (L D Lᵀ = G). A row that is a sum of two others (dependent, not
+/// proportional) makes that factor singular: the tail is factorised again
+/// with the shift, and G is still right.
+#[test]
+fn unshifted_tail_gives_the_factor_of_g_or_falls_back() {
+    let load = |m: usize| Load { f: vec![0.3, -1.0, 0.0, 2.0, 0.5, -0.7], d: vec![0.0; m] };
+    let independent = Problem {
+        k: chain(6),
+        conditions: vec![
+            cond(&[(0, 1.0)], Kind::Mini),
+            cond(&[(2, 1.0), (3, -2.0)], Kind::Maxi),
+            cond(&[(5, 1.0)], Kind::Mini),
+        ],
+    };
+    let dependent = Problem {
+        k: chain(6),
+        conditions: vec![
+            cond(&[(1, 1.0)], Kind::Mini),
+            cond(&[(4, 1.0)], Kind::Mini),
+            cond(&[(1, 1.0), (4, 1.0)], Kind::Maxi),
+        ],
+    };
+    for (p, factored) in [(independent, true), (dependent, false)] {
+        let m = p.conditions.len();
+        let cd = Condenser::new(&p).unwrap().condensed(&load(m)).unwrap();
+        let g = reference_g(&p, &cd);
+        let gmax = (0..m).fold(0.0f64, |a, i| a.max(g[(i, i)].abs()));
+        for i in 0..m {
+            for j in 0..m {
+                assert_close(cd.g[(i, j)], g[(i, j)], gmax);
+            }
+        }
+        assert_eq!(cd.g_factor.is_some(), factored);
+        if let Some(f) = &cd.g_factor {
+            let l = Mat::<f64>::from_fn(m, m, |i, j| {
+                if i == j {
+                    1.0
+                } else if i > j {
+                    f[(i, j)]
+                } else {
+                    0.0
+                }
+            });
+            let ld = Mat::<f64>::from_fn(m, m, |i, j| l[(i, j)] * f[(j, j)]);
+            let back = &ld * l.transpose();
+            for i in 0..m {
+                for j in 0..m {
+                    assert_close(back[(i, j)], g[(i, j)], gmax);
+                }
+            }
+        }
+    }
+}

@@ -31,8 +31,13 @@ impl DenseLdlt {
     /// Never fails: a zero pivot leaves the later pivots as NaN so that
     /// [`DenseLdlt::first_bad_pivot`] points at the first failure.
     pub fn factor(a: MatRef<'_, f64>) -> Self {
+        Self::factor_owned(a.to_owned())
+    }
+
+    /// [`DenseLdlt::factor`] in the storage of `a` (no copy of m² entries).
+    pub fn factor_owned(a: Mat<f64>) -> Self {
         let n = a.nrows();
-        let mut ld = a.to_owned();
+        let mut ld = a;
         // Threads only where they pay (m³/3 flops at m ≳ 300), as the
         // embedder set faer's global parallelism (Seq for none). The blocked
         // factorisation is deterministic for a given thread count.
@@ -45,6 +50,11 @@ impl DenseLdlt {
                 ld[(k, k)] = f64::NAN;
             }
         }
+        DenseLdlt { ld, updates: 0 }
+    }
+
+    /// A factor computed elsewhere, packed as this type keeps it.
+    pub fn from_packed(ld: Mat<f64>) -> Self {
         DenseLdlt { ld, updates: 0 }
     }
 

@@ -244,6 +244,7 @@ pub(super) fn solve(
     let hf = pcg(&h, &inv_diag, &f_eff).map_err(g)?;
     let cd = Condensed {
         g: gm,
+        g_factor: None,
         h: (0..mu).map(|q| 0.5 * (sc_row(q, &uf) - sc.sigma[q] * d[q])).collect(),
         alpha: sc.alpha.clone(),
         sigma: sc.sigma.clone(),

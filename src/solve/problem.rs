@@ -96,6 +96,11 @@ pub struct Condensed {
     /// `G = ΣC H⁻¹ CᵀΣ` (m×m, symmetric; positive definite when the rows
     /// are independent).
     pub g: faer::Mat<f64>,
+    /// The packed LDLᵀ of `g` (D on the diagonal, unit L strictly below)
+    /// when the condensation produced it (an unshifted interrupted
+    /// factorisation): the status loop's factor while every condition is
+    /// active, with no dense factorisation.
+    pub g_factor: Option<faer::Mat<f64>>,
     /// `h = ½ (ΣC H⁻¹ (F + CᵀW d) − Σd)`.
     pub h: Vec<f64>,
     /// Multiplier-block scaling α_i (the diagonal change on release is α_i).

@@ -116,7 +116,17 @@ pub fn build(p: &Dense) -> Built {
     let g = Mat::<f64>::from_fn(m, m, |a, b| sigma[a] * p.dot(a, &x[b]));
     let hv = (0..m).map(|i| 0.5 * (sigma[i] * p.dot(i, &uf) - sigma[i] * p.d[i])).collect();
     let xtf = (0..m).map(|i| sigma[i] * p.dot(i, &hf)).collect();
-    let c = Condensed { g, h: hv, alpha, sigma, sense: p.sense.clone(), xtf, rows: p.rows.clone(), d: p.d.clone() };
+    let c = Condensed {
+        g,
+        g_factor: None,
+        h: hv,
+        alpha,
+        sigma,
+        sense: p.sense.clone(),
+        xtf,
+        rows: p.rows.clone(),
+        d: p.d.clone(),
+    };
     Built { c, h, w }
 }
 
