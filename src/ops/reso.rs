@@ -14,7 +14,7 @@ use std::rc::Rc;
 pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "RESO", signature: "RESO RIGIDITE CHPOINT|LISTCHPO (CHPOINT|LISTCHPO …) ('NOID') ('NOUNIL') ('STAB') ('ENSE') ('SOUC') ('INIB' RIGIDITE LISTENTI)", doc: "Solve K u = F with bilateral and unilateral conditions; the result holds the unknowns and the LX of active conditions. Several right-hand sides share one factorisation; a LISTCHPO gives a LISTCHPO of solutions in the same order.", example: "u = reso (k et cl) f ;", f: reso },
     OpDef { name: "REAC", signature: "REAC RIGIDITE CHPOINT|LISTCHPO", doc: "Reactions -Cᵀλ of the conditions of RIGIDITE, from the multipliers LX of a RESO result (DISCRET field); a LISTCHPO of results gives a LISTCHPO of reactions.", example: "r = reac cl u ;", f: reac },
-    OpDef { name: "UNIL", signature: "UNIL RIGIDITE CHPOINT ('CONDENSE'|'ANCIEN'|'ITER'|'CREUX') ('RAPIDE'|'PDAS'|'MIXTE'|'UNITAIRE') ('INIB' LISTENTI) ('MAXI' n) ('VERBEUX')", doc: "The unilateral solver (Cast3M's UNILATER): returns the solution and a TABLE of diagnostics.", example: "u diag = unil (k et c) f 'CONDENSE' ;", f: unil },
+    OpDef { name: "UNIL", signature: "UNIL RIGIDITE CHPOINT ('CONDENSE'|'ANCIEN'|'ITER'|'CREUX') ('RAPIDE'|'PDAS'|'MIXTE'|'UNITAIRE') ('INIB' LISTENTI) ('MAXI' n) ('SOUC') ('VERBEUX')", doc: "The unilateral solver (Cast3M's UNILATER): returns the solution and a TABLE of diagnostics (METHODE, NCONDITIONS, NITER, NACTIFS, CONVERGE, per-iteration records, phase times). 'SOUC' returns the last iterate with a warning when the status iteration does not converge.", example: "u diag = unil (k et c) f 'CONDENSE' ;", f: unil },
 ];
 
 struct Opts {
@@ -194,12 +194,15 @@ fn solve_direct(it: &mut Interp, r: &Rigidite, asm: &Assembled, loads: &[Load], 
                 e.owner = id;
                 phase = "numeric refactorisation";
                 if let Err(err) = res {
-                    return Err(asm.explain(it, r, err, loads));
+                    return soft_singular(it, r, asm, loads, o, err);
                 }
                 it.factors.get(key).expect("present")
             }
             _ => {
-                let f = Factorization::new(&asm.problem, &opts).map_err(|e| asm.explain(it, r, e, loads))?;
+                let f = match Factorization::new(&asm.problem, &opts) {
+                    Ok(f) => f,
+                    Err(e) => return soft_singular(it, r, asm, loads, o, e),
+                };
                 phase = "factorisation";
                 it.factors.insert(crate::ops::solver_cache::PoolEntry { key, owner: id, fact: f })
             }
@@ -240,6 +243,32 @@ fn solve_direct(it: &mut Interp, r: &Rigidite, asm: &Assembled, loads: &[Load], 
         it.println(&w);
     }
     Ok(sols?.iter().map(|s| Rc::new(asm.field(r, s))).collect())
+}
+
+/// A factorisation error: with 'SOUC' a singular system is solved as
+/// 'ENSE' does (each free rigid mode held at its largest unknown) with a
+/// warning naming where; anything else, or no 'SOUC', is the error.
+fn soft_singular(
+    it: &mut Interp,
+    r: &Rigidite,
+    asm: &Assembled,
+    loads: &[Load],
+    o: &Opts,
+    e: crate::solve::SolveError,
+) -> Result<Vec<Rc<Chpoint>>> {
+    if !(o.soft && matches!(e, crate::solve::SolveError::Singular { .. })) {
+        return Err(asm.explain(it, r, e, loads));
+    }
+    let (sols, extra) = reso_ense(it, r, asm, loads, o)?;
+    let held = match &extra[..] {
+        [Value::Int(k), Value::Mesh(m)] => {
+            let nodes: Vec<String> = m.node_list().iter().take(8).map(|&n| super::assemble::node_name(it, n)).collect();
+            format!("{} rigid mode(s) held at {}", k, nodes.join(", "))
+        }
+        _ => "rigid modes held".to_string(),
+    };
+    it.println(&format!("RESO 'SOUC': warning: singular system; {held}; that solution is returned"));
+    Ok(sols)
 }
 
 /// 'ENSE': on a singular system, hold each free rigid mode by blocking its
@@ -316,7 +345,13 @@ fn solve_unil(
     load: &Load,
     o: &Opts,
 ) -> Result<(crate::solve::Solution, UnilReport)> {
-    let opts = UnilOptions { method: o.method, max_iter: o.max_iter, initial: o.initial.clone(), rule: o.rule };
+    let opts = UnilOptions {
+        method: o.method,
+        max_iter: o.max_iter,
+        initial: o.initial.clone(),
+        rule: o.rule,
+        keep_last: o.soft,
+    };
     let mut lines = Vec::new();
     let verbose = o.verbose;
     let res = {
@@ -340,7 +375,25 @@ fn solve_unil(
     for l in lines {
         it.println(&l);
     }
-    res.map_err(|e| asm.explain(it, r, e, std::slice::from_ref(load)))
+    let (sol, report) = res.map_err(|e| asm.explain(it, r, e, std::slice::from_ref(load)))?;
+    if !report.converged {
+        // 'SOUC': Cast3M's UNILATER returns its last iterate with a warning.
+        let last = report.records.last().expect("an unconverged iteration has records");
+        let changing: Vec<String> = last
+            .activated
+            .iter()
+            .chain(&last.released)
+            .take(8)
+            .map(|&k| super::assemble::describe_condition(it, r, k, load.d.get(k).copied().unwrap_or(0.0)))
+            .collect();
+        it.println(&format!(
+            "RESO 'SOUC': warning: the status iteration did not converge after {} solves; the last iterate is returned ({} condition(s) still changing: {})",
+            report.iterations,
+            last.activated.len() + last.released.len(),
+            changing.join("; ")
+        ));
+    }
+    Ok((sol, report))
 }
 
 fn record(it: &mut Interp, report: &UnilReport) {
@@ -396,6 +449,7 @@ fn unil(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     set(&mut t, "NCONDITIONS", Value::Int(rep.m as i64));
     set(&mut t, "NITER", Value::Int(rep.iterations as i64));
     set(&mut t, "NACTIFS", Value::Int(rep.active_count as i64));
+    set(&mut t, "CONVERGE", Value::Bool(rep.converged));
     let mut iters = Table::new();
     for (i, rec) in rep.records.iter().enumerate() {
         let mut e = Table::new();

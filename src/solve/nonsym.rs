@@ -14,7 +14,7 @@
 use super::direct::{self, DirectOptions};
 use super::error::SolveError;
 use super::problem::{Condition, Kind, Load, Problem, Solution};
-use super::status::{IterRecord, Rule, StatusOptions};
+use super::status::{IterRecord, Rule, StatusOptions, UNCONVERGED};
 use super::unilateral::StatusError;
 use std::collections::HashSet;
 
@@ -77,8 +77,24 @@ pub(super) fn solve(
             phases.push(("lu status loop", t0.elapsed().as_secs_f64()));
             return Ok((sol, active));
         }
+        if it == cap && sopts.keep_last {
+            record.mode = UNCONVERGED;
+            record.activated = violated;
+            record.released = release;
+            on_iter(&record);
+            phases.push(("lu status loop", t0.elapsed().as_secs_f64()));
+            return Ok((sol, active));
+        }
         if !history.insert(active.clone()) {
             if single {
+                if sopts.keep_last {
+                    record.mode = UNCONVERGED;
+                    record.activated = violated;
+                    record.released = release;
+                    on_iter(&record);
+                    phases.push(("lu status loop", t0.elapsed().as_secs_f64()));
+                    return Ok((sol, active));
+                }
                 on_iter(&record);
                 let mut changing = release.clone();
                 changing.extend(&violated);

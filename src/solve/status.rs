@@ -52,7 +52,16 @@ pub struct StatusOptions {
     /// as Cast3M's cold start (one per proportional group).
     pub start: Option<Vec<bool>>,
     pub rule: Rule,
+    /// On no convergence, return the last iterate instead of
+    /// `NoConvergence` (RESO 'SOUC', Cast3M's UNILATER behaviour): its
+    /// record then has the mode [`UNCONVERGED`], with the conditions that
+    /// still wanted to change as activated / released.
+    pub keep_last: bool,
 }
+
+/// Mode of the last record of an iteration that stopped unconverged
+/// ([`StatusOptions::keep_last`]).
+pub const UNCONVERGED: &str = "unconverged";
 
 /// What happened at one solve. Indices are positions 0..m in the
 /// [`Condensed`] data.
@@ -240,6 +249,12 @@ pub(crate) fn iterate(
                 Mode::Fast => Mode::Safe,
                 Mode::Safe => Mode::Slow,
                 Mode::Slow => {
+                    if opts.keep_last {
+                        unconverged(&mut rec, &set, &status);
+                        on_iter(&rec);
+                        records.push(rec);
+                        return Ok((x, status, records));
+                    }
                     on_iter(&rec);
                     records.push(rec);
                     return Err(SolveError::NoConvergence { iterations: it, conditions: set });
@@ -249,6 +264,13 @@ pub(crate) fn iterate(
             history.insert(status.clone());
             rec.mode = mode_name(mode, opts.rule);
             set = violated(mode, &frozen);
+        }
+        if it == maxit && opts.keep_last && !set.is_empty() {
+            // The cap: this solve is the last iterate.
+            unconverged(&mut rec, &set, &status);
+            on_iter(&rec);
+            records.push(rec);
+            return Ok((x, status, records));
         }
         loop {
             if set.is_empty() {
@@ -280,6 +302,14 @@ pub(crate) fn iterate(
         last_set = set;
     }
     Err(SolveError::NoConvergence { iterations: maxit, conditions: last_set })
+}
+
+/// Marks `rec` as the last, unconverged iterate: the conditions of `set`
+/// that still wanted to change, split by their status.
+fn unconverged(rec: &mut IterRecord, set: &[usize], status: &[bool]) {
+    rec.mode = UNCONVERGED;
+    rec.activated = set.iter().copied().filter(|&i| !status[i]).collect();
+    rec.released = set.iter().copied().filter(|&i| status[i]).collect();
 }
 
 fn mode_name(mode: Mode, rule: Rule) -> &'static str {

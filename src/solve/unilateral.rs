@@ -51,11 +51,14 @@ pub struct UnilOptions {
     /// of `Problem::conditions`; overrides the cached warm start.
     pub initial: Option<Vec<bool>>,
     pub rule: Rule,
+    /// Return the last iterate when the status iteration does not converge
+    /// (RESO 'SOUC'); [`UnilReport::converged`] then says so.
+    pub keep_last: bool,
 }
 
 impl Default for UnilOptions {
     fn default() -> Self {
-        UnilOptions { method: Method::Auto, max_iter: None, initial: None, rule: Rule::Auto }
+        UnilOptions { method: Method::Auto, max_iter: None, initial: None, rule: Rule::Auto, keep_last: false }
     }
 }
 
@@ -82,6 +85,10 @@ pub struct UnilReport {
     pub records: Vec<IterRecord>,
     pub active_count: usize,
     pub phase_seconds: Vec<(&'static str, f64)>,
+    /// False when the iteration stopped without converging and the last
+    /// iterate was kept ([`UnilOptions::keep_last`]); the last record then
+    /// lists the conditions that still wanted to change.
+    pub converged: bool,
 }
 
 /// Solves `p` for `load`, unilateral conditions included.
@@ -133,7 +140,7 @@ pub fn solve_unilateral(
         Rule::Auto => Rule::Damped,
         r => r,
     };
-    let sopts = status::StatusOptions { max_iter: opts.max_iter, start, rule };
+    let sopts = status::StatusOptions { max_iter: opts.max_iter, start, rule, keep_last: opts.keep_last };
     let global = |v: &[usize]| v.iter().map(|&q| uni[q]).collect::<Vec<_>>();
     let mut records = Vec::new();
     let mut forward = |r: &IterRecord| {
@@ -165,7 +172,9 @@ pub fn solve_unilateral(
         Err(StatusError::Global(e)) => return Err(e),
         Err(StatusError::Local(e)) => return Err(to_global(e, &uni)),
     };
+    let converged = records.last().is_none_or(|r| r.mode != status::UNCONVERGED);
     let report = UnilReport {
+        converged,
         method: match method {
             _ if nonsym => "lu",
             Method::Auto | Method::Condense => "condense",
@@ -179,7 +188,8 @@ pub fn solve_unilateral(
         records,
         phase_seconds: phases,
     };
-    cache.status = Some(active);
+    // An unconverged status is no warm start.
+    cache.status = if report.converged { Some(active) } else { None };
     Ok((sol, report))
 }
 
