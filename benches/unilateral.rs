@@ -7,6 +7,10 @@
 //!   the bottom edge; m = 2000 are spread over the whole perimeter.
 //! * `mini*_3d`: the same on a 47³ grid (7-point Laplacian, n = 103,823),
 //!   supports spread over the bottom face.
+//! * `mini50_ancien`, `mini500_ancien`, `mini50_iter`: the same with the
+//!   old method and with ITER (one IC(0)-preconditioned CG solve per
+//!   condition), for comparison; the ITER case runs only when named in
+//!   `GIBI_BENCH_ONLY` (it takes minutes).
 //! * `obstacle`: the 512×512 membrane fixed on its perimeter (bilateral)
 //!   above a flat obstacle, one MINI per interior node (m ≈ n), solved by
 //!   CREUX with its defaults (from all conditions inactive, mixed rule).
@@ -27,7 +31,9 @@ use gibi::solve::{Condition, Kind, Load, Matrix, Problem};
 fn wanted(name: &str) -> bool {
     match std::env::var("GIBI_BENCH_ONLY") {
         Ok(list) => list.split(',').any(|w| w == name),
-        Err(_) => true,
+        // ITER takes minutes here (m CG solves on an operator held only by
+        // its supports): opt-in.
+        Err(_) => !name.ends_with("_iter"),
     }
 }
 
@@ -134,9 +140,15 @@ fn main() {
         (2000, 200.0, Method::Condense),
         (50, 200.0, Method::Ancien),
         (500, 150.0, Method::Ancien),
+        (50, 200.0, Method::Iter),
     ] {
         let pool = if m <= nx { &bottom } else { &per };
-        let name = format!("mini{m}{}", if method == Method::Ancien { "_ancien" } else { "" });
+        let suffix = match method {
+            Method::Ancien => "_ancien",
+            Method::Iter => "_iter",
+            _ => "",
+        };
+        let name = format!("mini{m}{suffix}");
         run(&name, &k, &spread(pool, m), gap, load, method, &[]);
     }
 

@@ -208,6 +208,7 @@ fn bilateral_rows_on_contact_unknowns() {
         let l = Load { f: vec![0.0, f, 0.2, -f], d: vec![0.3, -0.2, 0.1] };
         assert!(same_as_condense("relation", &p, &l, Method::Ancien, 1e-9));
         assert!(same_as_condense("relation", &p, &l, Method::Creux, 1e-9));
+        assert!(same_as_condense("relation", &p, &l, Method::Iter, 1e-8));
     }
     let mut entries = vec![];
     for i in 0..4 {
@@ -225,7 +226,7 @@ fn bilateral_rows_on_contact_unknowns() {
     };
     for f in [1.0, -2.0] {
         let l = Load { f: vec![-0.5, f, 0.0, 0.3, -f], d: vec![0.1, 0.02, 0.05, -0.2] };
-        for m in [Method::Ancien, Method::Creux] {
+        for m in [Method::Ancien, Method::Creux, Method::Iter] {
             assert!(same_as_condense("chained", &p, &l, m, 1e-9));
         }
     }
@@ -280,6 +281,16 @@ pub(super) fn random_problem(rng: &mut Rng) -> (Problem, Load) {
         if let Some(j) = (0..n).find(|&j| !used[j]) {
             conditions.push(Condition { terms: vec![(j, 1.0)], kind: Kind::Equal, dual: None });
             d.push(0.1 * rng.sym());
+            used[j] = true;
+        }
+    }
+    if rng.below(4) == 0 {
+        // A bilateral relation between two unknowns free of equalities.
+        let free: Vec<usize> = (0..n).filter(|&j| !used[j]).collect();
+        if free.len() >= 2 {
+            let (a, b) = (free[0], free[free.len() - 1]);
+            conditions.push(Condition { terms: vec![(a, 1.0), (b, -1.5)], kind: Kind::Equal, dual: None });
+            d.push(0.1 * rng.sym());
         }
     }
     let f = (0..n).map(|_| 2.0 * rng.sym()).collect();
@@ -328,11 +339,15 @@ fn iter_matches_condense_on_random_problems() {
 }
 
 #[test]
-fn iter_refuses_bilateral_relations() {
+fn iter_eliminates_bilateral_relations() {
     let (mut p, mut l) = sparse(&chain(1.0));
     p.conditions.push(Condition { terms: vec![(1, 1.0), (2, -1.0)], kind: Kind::Equal, dual: None });
-    l.d.push(0.0);
-    assert!(matches!(run(&p, &l, Method::Iter), Err(SolveError::Other(_))));
+    l.d.push(0.05);
+    assert!(same_as_condense("chain + relation", &p, &l, Method::Iter, 1e-9));
+    // A relation that repeats the others is reported, not guessed.
+    p.conditions.push(Condition { terms: vec![(2, 2.0), (1, -2.0)], kind: Kind::Equal, dual: None });
+    l.d.push(-0.1);
+    assert!(matches!(run(&p, &l, Method::Iter), Err(SolveError::DependentConditions { .. })));
 }
 
 /// Two bodies that share nothing: the tail of the interrupted

@@ -26,6 +26,7 @@ pub mod condensed_op;
 mod creux;
 pub mod dense_ldlt;
 pub mod direct;
+mod eliminate;
 pub mod error;
 pub mod groups;
 mod iter;
