@@ -182,7 +182,10 @@ impl Assembled {
                 format!("linearly dependent conditions: {}", list(conditions, &cond))
             }
             SolveError::Conflicting { conditions } => {
-                format!("conflicting unilateral conditions (no position satisfies them all): {}", list(conditions, &cond))
+                format!(
+                    "conflicting conditions (no position satisfies them all together with the other conditions): {}",
+                    list(conditions, &cond)
+                )
             }
             SolveError::Infeasible { conditions, work } => format!(
                 "no equilibrium: the load pushes the structure away from its unilateral supports along a rigid-body motion (load work {}); released: {}",

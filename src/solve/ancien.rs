@@ -323,9 +323,11 @@ impl Backend for Old<'_> {
     }
 
     fn dependent(&mut self, active: &[bool]) -> Vec<usize> {
-        // Gram matrix of the active rows: the first negligible pivot and
-        // the leading rows it depends on.
-        let list: Vec<usize> = (0..active.len()).filter(|&i| active[i]).collect();
+        // Gram matrix of the bilateral rows (always there, independent)
+        // then the active ones: the first negligible pivot and the leading
+        // unilateral rows it depends on. A unilateral row that only
+        // repeats bilateral ones comes out alone.
+        let list: Vec<usize> = (self.mu..self.rows.len()).chain((0..active.len()).filter(|&i| active[i])).collect();
         let k = list.len();
         let gram = Mat::<f64>::from_fn(k, k, |p, q| {
             let (ri, rj) = (&self.rows[list[p]], &self.rows[list[q]]);
@@ -333,8 +335,9 @@ impl Backend for Old<'_> {
         });
         let scale: Vec<f64> = (0..k).map(|p| gram[(p, p)]).collect();
         let f = DenseLdlt::factor(gram.as_ref());
+        let unilateral = |v: Vec<usize>| v.into_iter().filter(|&i| i < self.mu).collect::<Vec<_>>();
         let Some(b) = f.first_bad_pivot(&vec![true; k], &scale, EPS_PIV) else {
-            return list;
+            return unilateral(list);
         };
         let lead = DenseLdlt::factor(gram.as_ref().submatrix(0, 0, b, b));
         let mut c: Vec<f64> = (0..b).map(|p| gram[(p, b)]).collect();
@@ -342,7 +345,7 @@ impl Backend for Old<'_> {
         let cmax = c.iter().fold(1.0_f64, |s, v| s.max(v.abs()));
         let mut out: Vec<usize> = (0..b).filter(|&p| c[p].abs() > 1e-8 * cmax).map(|p| list[p]).collect();
         out.push(list[b]);
-        out
+        unilateral(out)
     }
 }
 

@@ -133,6 +133,14 @@ impl Interrupted {
         }
         let sys = &self.sys;
         if let Err(z) = self.factor.factor(&sys.col_ptr, &sys.row_idx, &sys.values, &sys.row_scale, self.cut, None) {
+            if self.plain && self.tail.contains(&z.index) {
+                // An exactly zero pivot in the unshifted tail: G is singular
+                // (a row fixed by the others); the shifted tail has none.
+                // The plain shifts are 0 on the λ2: nothing to take off.
+                self.plain = false;
+                self.tail_factor = None;
+                return self.numeric(p, false);
+            }
             return Err(diagnose(sys, &mut self.factor, z));
         }
         let f = self.factor.ldlt_ref();

@@ -250,19 +250,31 @@ pub(super) fn solve(
     let k_full = Csr::from_triplets(n, &kt);
     let row_max: Vec<f64> =
         (0..n).map(|r| (k_full.ptr[r]..k_full.ptr[r + 1]).fold(0.0_f64, |a, k| a.max(k_full.val[k].abs()))).collect();
-    let uni_p = Problem { k: Default::default(), conditions: uni.iter().map(|&i| p.conditions[i].clone()).collect() };
-    let sc = lagrange::scaling(&uni_p, &row_max);
+    let all_uni = uni;
     // Unilateral rows over the masters; the eliminated part shifts d.
+    // A row the eliminated conditions fix entirely (a RELA 'MINI' between
+    // two blocked nodes) has a constant value: it holds or it conflicts,
+    // and never acts (as the status loop drops such rows).
+    let mut kept: Vec<usize> = Vec::with_capacity(uni.len());
     let mut rows: Vec<Vec<(usize, f64)>> = Vec::with_capacity(uni.len());
     let mut d = Vec::with_capacity(uni.len());
     for &i in uni {
         let (r, k0) = el.reduce(&p.conditions[i].terms);
         if r.is_empty() {
-            return Err(g(SolveError::DependentConditions { conditions: vec![i] }));
+            let c = &p.conditions[i];
+            let chat = c.terms.iter().fold(1.0_f64, |a, t| a.max(t.1.abs()));
+            if c.kind.sense() * (k0 - load.d[i]) < -1e-10 * chat.max(load.d[i].abs()).max(k0.abs()) {
+                return Err(g(SolveError::Conflicting { conditions: vec![i] }));
+            }
+            continue;
         }
+        kept.push(i);
         rows.push(r);
         d.push(load.d[i] - k0);
     }
+    let uni = &kept[..];
+    let uni_p = Problem { k: Default::default(), conditions: uni.iter().map(|&i| p.conditions[i].clone()).collect() };
+    let sc = lagrange::scaling(&uni_p, &row_max);
     let w: Vec<f64> = (0..uni.len()).map(|q| sc.sigma[q] * sc.sigma[q] / sc.alpha[q]).collect();
     // H = TᵀKT + C_UᵀWC_U on the masters; F_eff = Tᵀ(F − K g).
     let mut ht: Vec<(usize, usize, f64)> = Vec::with_capacity(kt.len());
@@ -331,7 +343,15 @@ pub(super) fn solve(
     phases.push(("condense", t0.elapsed().as_secs_f64()));
 
     let t1 = std::time::Instant::now();
-    let res = status::run(&cd, sopts, on_iter).map_err(StatusError::Local)?;
+    // Positions among the kept rows ↔ among all unilateral rows.
+    let pos: Vec<usize> = uni.iter().map(|i| all_uni.iter().position(|j| j == i).expect("kept from all")).collect();
+    let local_opts =
+        StatusOptions { start: sopts.start.as_ref().map(|s| pos.iter().map(|&q| s[q]).collect()), ..sopts.clone() };
+    let remap = |v: &[usize]| v.iter().map(|&q| pos[q]).collect::<Vec<_>>();
+    let res = status::run(&cd, &local_opts, &mut |r: &IterRecord| {
+        on_iter(&IterRecord { activated: remap(&r.activated), released: remap(&r.released), ..r.clone() })
+    })
+    .map_err(|e| StatusError::Local(super::unilateral::to_global(e, &pos)))?;
     phases.push(("status", t1.elapsed().as_secs_f64()));
 
     // §3.3: u = H⁻¹(F + CᵀWd − 2CᵀΣx).
@@ -345,6 +365,9 @@ pub(super) fn solve(
     let u = el.unknowns(&uf);
     let mut lambda = vec![0.0; m];
     let mut active = vec![true; m];
+    for &i in all_uni {
+        active[i] = false;
+    }
     // The eliminated rows supply what K u and the unilateral reactions
     // leave unbalanced: F − K u − C_Uᵀλ_U.
     let mut react = vec![0.0; n];
@@ -363,7 +386,8 @@ pub(super) fn solve(
         lambda[i] = l;
     }
     phases.push(("recover", t2.elapsed().as_secs_f64()));
-    Ok((Solution { u, lambda, active }, res.active))
+    let statuses = all_uni.iter().map(|&i| active[i]).collect();
+    Ok((Solution { u, lambda, active }, statuses))
 }
 
 #[cfg(test)]

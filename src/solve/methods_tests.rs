@@ -56,7 +56,9 @@ pub(super) fn sparse_kkt_ok(p: &Problem, l: &Load, s: &Solution, tol: f64) -> bo
         let chat = c.terms.iter().fold(1.0_f64, |a, t| a.max(t.1.abs()));
         let cu: f64 = c.terms.iter().map(|&(j, v)| v * s.u[j]).sum();
         let gap = (cu - l.d[i]) / chat;
-        let scale = tol * (umax + l.d[i].abs() / chat);
+        // Lengths: the displacements, the limit, and force over stiffness
+        // (u may be all round-off when every support acts).
+        let scale = tol * (umax + l.d[i].abs() / chat + fmax / kmax.max(f64::MIN_POSITIVE));
         let lam = s.lambda[i];
         let sense = match c.kind {
             Kind::Equal => return gap.abs() <= scale,
@@ -384,4 +386,65 @@ fn disconnected_contact_zones() {
     for m in [Method::Ancien, Method::Creux, Method::Iter] {
         let _ = same_as_condense("disconnected", &p, &l, m, 1e-9);
     }
+}
+
+/// Rows that depend on others: a relation between two unknowns that
+/// bilateral conditions fix (u0 − u1 ⋈ d with u0, u1 blocked), and a row
+/// that is the sum of two others. Each is left out of the iteration; it
+/// must hold at the end (every method), else the conditions conflict.
+#[test]
+fn rows_fixed_by_other_conditions_are_dropped_or_conflict() {
+    let mut entries = vec![];
+    for i in 0..3 {
+        entries.extend([(i, i, 1.0), (i + 1, i + 1, 1.0), (i, i + 1, -1.0), (i + 1, i, -1.0)]);
+    }
+    let k = Matrix { n: 4, entries, symmetric: true };
+    let eq = |j: usize| Condition { terms: vec![(j, 1.0)], kind: Kind::Equal, dual: None };
+    let fixed = Problem {
+        k: k.clone(),
+        conditions: vec![
+            eq(0),
+            eq(1),
+            Condition { terms: vec![(0, 1.0), (1, -1.0)], kind: Kind::Mini, dual: None },
+            Condition { terms: vec![(3, 1.0)], kind: Kind::Maxi, dual: None },
+        ],
+    };
+    // u0 = 0.2, u1 = 0: u0 − u1 = 0.2 ≥ −0.1 holds; the stop u3 ≤ 0.5 acts
+    // under F3 = 1 (free: u3 = u1 + 2 = 2).
+    let holds = Load { f: vec![0.0, 0.0, 0.0, 1.0], d: vec![0.2, 0.0, -0.1, 0.5] };
+    for m in [Method::Condense, Method::Creux, Method::Ancien, Method::Iter] {
+        let s = run(&fixed, &holds, m).unwrap_or_else(|e| panic!("{m:?}: {e:?}"));
+        assert!(!s.active[2] && s.lambda[2] == 0.0, "{m:?}: {s:?}");
+        assert!(s.active[3] && (s.u[3] - 0.5).abs() < 1e-10, "{m:?}: {s:?}");
+        assert!(sparse_kkt_ok(&fixed, &holds, &s, 1e-9), "{m:?}: {s:?}");
+    }
+    // u0 − u1 = 0.2 ≥ 0.3 cannot hold. From the cold start (all active)
+    // the row is dropped and found violated at the end; CREUX starts from
+    // all inactive and meets it as a singular activation instead, which
+    // the spec reports as dependent rows (§7.5: do not guess).
+    let conflict = Load { d: vec![0.2, 0.0, 0.3, 0.5], ..holds.clone() };
+    for m in [Method::Condense, Method::Ancien, Method::Iter] {
+        assert!(matches!(run(&fixed, &conflict, m), Err(SolveError::Conflicting { .. })), "{m:?}");
+    }
+    let creux = run(&fixed, &conflict, Method::Creux);
+    assert!(
+        matches!(creux, Err(SolveError::DependentConditions { ref conditions }) if conditions.contains(&2)),
+        "{creux:?}"
+    );
+    // u0 ≥ 0, u1 ≥ 0 and u0 + u1 ≥ 0 pressed down by F = −1 on both
+    // (springs to the ground keep K regular): rows that depend on other
+    // unilateral rows are reported with the rows involved (§7.5).
+    let mut ground = k.clone();
+    ground.entries.extend((0..4).map(|i| (i, i, 0.5)));
+    let sum = Problem {
+        k: ground,
+        conditions: vec![
+            Condition { terms: vec![(0, 1.0)], kind: Kind::Mini, dual: None },
+            Condition { terms: vec![(1, 1.0)], kind: Kind::Mini, dual: None },
+            Condition { terms: vec![(0, 1.0), (1, 1.0)], kind: Kind::Mini, dual: None },
+        ],
+    };
+    let down = Load { f: vec![-1.0, -1.0, 0.0, 0.0], d: vec![0.0; 3] };
+    let r = run(&sum, &down, Method::Condense);
+    assert!(matches!(r, Err(SolveError::DependentConditions { ref conditions }) if conditions.len() == 3), "{r:?}");
 }

@@ -188,7 +188,7 @@ pub(crate) fn iterate(
     on_iter: &mut dyn FnMut(&IterRecord),
 ) -> Result<Outcome, SolveError> {
     let m = sense.len();
-    let groups = groups::analyse(rows, sense, d)?;
+    let mut groups = groups::analyse(rows, sense, d)?;
     if m == 0 {
         return Ok((Vec::new(), Vec::new(), Vec::new()));
     }
@@ -199,7 +199,7 @@ pub(crate) fn iterate(
         .map(|(r, di)| di.abs() / r.iter().fold(1.0_f64, |a, &(_, v)| a.max(v.abs())))
         .fold(0.0_f64, f64::max);
 
-    let cold = start_status(&groups, &vec![true; m]);
+    let mut cold = start_status(&groups, &vec![true; m]);
     let mut status = match &opts.start {
         Some(s) if s.len() != m => {
             return Err(SolveError::Other(format!("start status has {} entries for {m} conditions", s.len())))
@@ -207,11 +207,36 @@ pub(crate) fn iterate(
         Some(s) => start_status(&groups, s),
         None => cold.clone(),
     };
+    // Conditions left out of the iteration because their rows depend on
+    // others, with the rows they depend on.
+    let mut dropped: Vec<(usize, Vec<usize>)> = Vec::new();
     if b.set_status(&status).is_err() {
         // A warm start that frees a rigid mode falls back to the cold start,
         // which holds every mode that any support holds.
         if status == cold || b.set_status(&cold).is_err() {
-            return Err(SolveError::DependentConditions { conditions: b.dependent(&cold) });
+            // The cold start itself is singular. A row that depends on the
+            // bilateral conditions alone (a RELA 'MINI' over two blocked
+            // nodes, as a node-by-node relation along clamped edges gives)
+            // has its value fixed by them: it never needs to act, and it
+            // must hold at the end. Cast3M drops such rows too (MAFREIN).
+            // Rows that depend on other unilateral rows are reported
+            // (§7.5: do not guess which of them should act).
+            loop {
+                let dep = b.dependent(&cold);
+                let k = match dep[..] {
+                    [k] if cold[k] => k,
+                    _ => return Err(SolveError::DependentConditions { conditions: dep }),
+                };
+                groups.fixed_inactive[k] = true;
+                cold[k] = false;
+                dropped.push((k, dep));
+                if b.set_status(&cold).is_ok() {
+                    break;
+                }
+                if dropped.len() == m {
+                    return Err(SolveError::DependentConditions { conditions: (0..m).collect() });
+                }
+            }
         }
         status = cold;
     }
@@ -238,8 +263,9 @@ pub(crate) fn iterate(
             mode: mode_name(mode, opts.rule),
         };
         let lref = x.iter().fold(lref0, |a, xi| a.max(xi.abs()));
+        let tau_of = |mode: Mode| EPS_TOL * lref * if mode == Mode::Slow { SLOW_FACTOR } else { 1.0 };
         let violated = |mode: Mode, frozen: &[bool]| -> Vec<usize> {
-            let tau = EPS_TOL * lref * if mode == Mode::Slow { SLOW_FACTOR } else { 1.0 };
+            let tau = tau_of(mode);
             (0..m).filter(|&i| v[i] > tau && !groups.fixed_inactive[i] && !frozen[i]).collect()
         };
         let mut set = violated(mode, &frozen);
@@ -276,6 +302,15 @@ pub(crate) fn iterate(
             if set.is_empty() {
                 on_iter(&rec);
                 records.push(rec);
+                // A dropped row violated at the end cannot be met together
+                // with the bilateral conditions that fix it.
+                if let Some((k, dep)) = dropped.iter().find(|(k, _)| v[*k] > tau_of(mode)) {
+                    let mut conditions = dep.clone();
+                    if !conditions.contains(k) {
+                        conditions.push(*k);
+                    }
+                    return Err(SolveError::Conflicting { conditions });
+                }
                 return Ok((x, status, records));
             }
             let ctx = Ctx { groups: &groups, v: &v, rule: opts.rule };

@@ -261,8 +261,9 @@ fn condense(
     Ok((sol, res.active))
 }
 
-/// Condition positions among the unilateral ones → global numbers.
-fn to_global(e: SolveError, uni: &[usize]) -> SolveError {
+/// Condition positions among the unilateral ones → global numbers (or any
+/// position map `uni`).
+pub(super) fn to_global(e: SolveError, uni: &[usize]) -> SolveError {
     let g = |v: Vec<usize>| v.into_iter().map(|q| uni.get(q).copied().unwrap_or(q)).collect();
     match e {
         SolveError::DependentConditions { conditions } => SolveError::DependentConditions { conditions: g(conditions) },
