@@ -1,6 +1,6 @@
 //! Lists: PROG, LECT, MOTS, SUIT (LISTCHPO), EXTR, DIME.
 
-use super::{Args, OpDef};
+use super::{limits, Args, OpDef};
 use crate::error::Result;
 use crate::eval::Interp;
 use crate::value::{Chpoint, Value};
@@ -51,24 +51,22 @@ pub(crate) const OPS: &[OpDef] = &[
     },
 ];
 
-/// Sequence builder shared by PROG and LECT.
+/// Sequence builder shared by PROG and LECT. Every count is checked
+/// before it is allocated ([`limits`]).
 fn sequence(a: &mut Args, int: bool) -> Result<Vec<f64>> {
     let mut out = Vec::new();
     loop {
         if let Some(x) = a.opt_num_right() {
             if a.sign_like_star() {
                 let v = a.opt_num_right().ok_or_else(|| a.missing("a value after '*'"))?;
-                if x < 0.0 || x.fract() != 0.0 {
-                    return Err(a.err(format!("a repeat count must be a non-negative ENTIER, found {}", x)));
-                }
-                out.extend(std::iter::repeat_n(v, x as usize));
+                let n = limits::room(a, out.len(), x)?;
+                out.extend(std::iter::repeat_n(v, n));
             } else if a.keyword(&["PAS"]).is_some() {
                 let step = a.opt_num_right().ok_or_else(|| a.missing("the step after PAS"))?;
                 if a.keyword(&["NPAS"]).is_some() {
                     let n = a.opt_num_right().ok_or_else(|| a.missing("the count after NPAS"))?;
-                    for k in 0..=(n.max(0.0) as usize) {
-                        out.push(x + k as f64 * step);
-                    }
+                    let n = limits::room(a, out.len(), n.max(0.0) + 1.0)?;
+                    out.extend((0..n).map(|k| x + k as f64 * step));
                 } else {
                     let end = a.opt_num_right().ok_or_else(|| a.missing("the last value after PAS"))?;
                     if step == 0.0 || (end - x) * step < 0.0 {
@@ -78,19 +76,18 @@ fn sequence(a: &mut Args, int: bool) -> Result<Vec<f64>> {
                     if int && ((end - x) / step - n).abs() > 1e-9 {
                         return Err(a.err(format!("PAS {} does not divide the interval from {} to {}", step, x, end)));
                     }
-                    if n > 1.0e8 {
-                        return Err(a.err("too many values"));
-                    }
-                    for k in 0..=(n as usize) {
-                        out.push(x + k as f64 * step);
-                    }
+                    let n = limits::room(a, out.len(), n + 1.0)?;
+                    out.extend((0..n).map(|k| x + k as f64 * step));
                 }
             } else {
+                limits::room(a, out.len(), 1.0)?;
                 out.push(x);
             }
         } else if let Some(l) = a.opt_right::<Rc<Vec<f64>>>() {
+            limits::room(a, out.len(), l.len() as f64)?;
             out.extend(l.iter());
         } else if let Some(l) = a.opt_right::<Rc<Vec<i64>>>() {
+            limits::room(a, out.len(), l.len() as f64)?;
             out.extend(l.iter().map(|&i| i as f64));
         } else {
             break;
@@ -111,18 +108,23 @@ fn lect(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     Ok(vec![Value::ListEnti(Rc::new(v.into_iter().map(|x| x as i64).collect()))])
 }
 
+/// MOTS reads what follows it as words, operator names included
+/// (`MOTS PRES FORC`, `MOTS UX MAXI`): Cast3M's MOTS reads words, so
+/// mots.notice asks to write MOTS first. A name bound to a MOT gives its
+/// value; anything else ends the list.
 fn mots(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let mut out = Vec::new();
     loop {
-        if let Some(n) = a.opt_right::<i64>() {
+        if let Some(n) = a.opt_num_right() {
             if !a.sign_like_star() {
                 return Err(a.err("expected '*' after a repeat count"));
             }
             let w = a.word().ok_or_else(|| a.missing("a word after '*'"))?;
-            out.extend(std::iter::repeat_n(short(&w), n.max(0) as usize));
+            let n = limits::room(a, out.len(), n)?;
+            out.extend(std::iter::repeat_n(short(&w), n));
         } else if let Some(l) = a.opt_right::<Rc<Vec<String>>>() {
             out.extend(l.iter().cloned());
-        } else if let Some(w) = a.word_not_operator() {
+        } else if let Some(w) = a.word() {
             out.push(short(&w));
         } else {
             break;

@@ -12,6 +12,7 @@ mod export;
 mod fieldfn;
 mod fields;
 mod io;
+mod limits;
 mod lists;
 mod manu;
 mod math;

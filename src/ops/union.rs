@@ -30,6 +30,8 @@ fn et(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 
 pub(crate) fn union(it: &mut Interp, a: &Args, x: Value, y: Value, noer: bool) -> Result<Value> {
     use Value::*;
+    // `l = l ET l` in a loop doubles each pass: check before allocating.
+    super::limits::check_len(a, item_count(&x).saturating_add(item_count(&y)))?;
     Ok(match (&x, &y) {
         (Bool(p), Bool(q)) => Bool(*p && *q),
         (Mot(s), Mot(t)) => Value::mot(format!("{}{}", s, t)),
@@ -74,6 +76,18 @@ pub(crate) fn union(it: &mut Interp, a: &Args, x: Value, y: Value, noer: bool) -
             None => return Err(a.err(format!("cannot join {} and {}", x.type_name(), y.type_name()))),
         },
     })
+}
+
+/// Items of a list or characters of a word (0 for other objects).
+fn item_count(v: &Value) -> usize {
+    match v {
+        Value::ListReel(l) => l.len(),
+        Value::ListEnti(l) => l.len(),
+        Value::ListMots(l) => l.len(),
+        Value::ListChpo(l) => l.len(),
+        Value::Mot(s) => s.len(),
+        _ => 0,
+    }
 }
 
 /// A POINT or a MAILLAGE as a mesh (a point is a POI1 element).
