@@ -19,6 +19,7 @@ mod math;
 mod mesh;
 mod model;
 mod objects;
+mod pointwise;
 mod post;
 mod reso;
 pub mod solver_cache;

@@ -109,7 +109,7 @@ pub(crate) fn fields_union(_it: &mut Interp, a: &Args, x: &Value, y: &Value, noe
 
 /// `+ - * /` on FE objects.
 pub(crate) fn fields_binary(_it: &mut Interp, a: &Args, op: Bin, x: &Value, y: &Value) -> Result<Option<Value>> {
-    match super::fields::binary(op, x, y) {
+    match super::fields::binary(op, x, y).or_else(|| super::pointwise::binary(op, x, y)) {
         Some(r) => super::fields::to_err(a, r).map(Some),
         None => Ok(None),
     }

@@ -1,6 +1,7 @@
-//! Every size a deck can ask for is checked before it is allocated: an
-//! absurd count is an ordinary runtime error (exit 70 from the CLI), never
-//! an allocation abort that takes the process down.
+//! Mistakes that used to end the process or slip through silently are
+//! ordinary runtime errors (exit 70 from the CLI): every size a deck asks
+//! for is checked before it is allocated, and floating results that would
+//! be inf or NaN are refused.
 
 use gibi::Interpreter;
 
@@ -45,4 +46,22 @@ fn mesh_products_are_capped() {
         ),
         "allowed",
     );
+}
+
+#[test]
+fn float_division_by_zero_and_nan_powers() {
+    // Prefix forms go through the operators (numeric infix instructions
+    // take eval's fast path).
+    fails_cleanly("x = '/' 7 0. ;", "division of 7 by zero");
+    fails_cleanly("x = '/' 0. 0 ;", "by zero");
+    fails_cleanly("x = (prog 1. 2.) / 0. ;", "division of a LISTREEL by zero");
+    fails_cleanly("x = (prog 1. 2.) / (prog 1. 0.) ;", "divides by zero");
+    fails_cleanly("x = '**' (-8.) 0.5 ;", "no finite real value");
+    fails_cleanly("x = (prog 4. -1.) ** 0.5 ;", "no finite real value");
+    fails_cleanly("x = log (prog 1. 0.) ;", "no finite result");
+    fails_cleanly("x = asin 2. ;", "no finite result");
+    let mut g = Interpreter::new();
+    g.run_str("t", "x = '**' (-8.) 2. ; y = (prog 4. 9.) ** 0.5 ; z = '/' 1 2. ;").unwrap();
+    assert_eq!(g.get_f64("x"), Some(64.0));
+    assert_eq!(g.get_f64("z"), Some(0.5));
 }
