@@ -1,4 +1,4 @@
-//! Lists: PROG, LECT, MOTS, SUIT (LISTCHPO), EXTR, DIME.
+//! Lists: PROG, LECT, MOTS, SUIT (LISTCHPO), EXTR, ORDO, DIME.
 
 use super::{limits, Args, OpDef};
 use crate::error::Result;
@@ -37,10 +37,17 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "EXTR",
-        signature: "EXTR LISTREEL|LISTENTI|LISTMOTS|LISTCHPO I | MOT I J | CHPOINT COMP POINT | …",
-        doc: "Extract a part of an object (list element, I from 1; substring; field value; …).",
+        signature: "EXTR LISTREEL|LISTENTI|LISTMOTS|LISTCHPO I | LIST LISTENTI | MOT I J | CHPOINT COMP POINT | EVOLUTIO 'ABSC'|'ORDO' (N) | …",
+        doc: "Extract a part of an object (list element, I from 1; sub-list at the places of a LISTENTI; substring; field value; curve N's lists; …).",
         example: "x = extr l 2 ;",
         f: extr,
+    },
+    OpDef {
+        name: "ORDO",
+        signature: "ORDO LIST1 (LIST2 …) ('CROI'|'DECR') ('ABS')",
+        doc: "Sort a LISTREEL, LISTENTI or LISTMOTS (increasing by default); further lists of the same length follow the first one's order, one result per list.",
+        example: "ls = ordo (prog 3. 1. 2.) ;",
+        f: ordo,
     },
     OpDef {
         name: "DIME",
@@ -153,14 +160,23 @@ fn extr(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         return Ok(v);
     }
     if let Some(l) = a.opt::<Rc<Vec<f64>>>() {
+        if let Some(idx) = a.opt::<Rc<Vec<i64>>>() {
+            return Ok(vec![Value::ListReel(Rc::new(sublist(a, &l, &idx)?))]);
+        }
         let i = a.req_index(l.len())?;
         return Ok(vec![Value::Float(l[i])]);
     }
     if let Some(l) = a.opt::<Rc<Vec<i64>>>() {
+        if let Some(idx) = a.opt::<Rc<Vec<i64>>>() {
+            return Ok(vec![Value::ListEnti(Rc::new(sublist(a, &l, &idx)?))]);
+        }
         let i = a.req_index(l.len())?;
         return Ok(vec![Value::Int(l[i])]);
     }
     if let Some(l) = a.opt::<Rc<Vec<String>>>() {
+        if let Some(idx) = a.opt::<Rc<Vec<i64>>>() {
+            return Ok(vec![Value::ListMots(Rc::new(sublist(a, &l, &idx)?))]);
+        }
         let i = a.req_index(l.len())?;
         return Ok(vec![Value::mot(&l[i])]);
     }
@@ -179,6 +195,81 @@ fn extr(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         return Ok(vec![Value::mot(chars[i..j].iter().collect::<String>())]);
     }
     Err(a.missing("an object to extract from"))
+}
+
+fn list_len(v: &Value) -> Option<usize> {
+    match v {
+        Value::ListReel(l) => Some(l.len()),
+        Value::ListEnti(l) => Some(l.len()),
+        Value::ListMots(l) => Some(l.len()),
+        _ => None,
+    }
+}
+
+/// ORDO: a stable sort of the first list; the others follow its order.
+fn ordo(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let mut order = None;
+    let mut use_abs = false;
+    let mut lists: Vec<Value> = Vec::new();
+    loop {
+        if let Some(k) = a.keyword(&["CROI", "DECR", "ABS"]) {
+            match k {
+                "ABS" => use_abs = true,
+                k => order = Some(k),
+            }
+            continue;
+        }
+        let next = if lists.is_empty() { a.opt::<Value>() } else { a.opt_right::<Value>() };
+        match next {
+            Some(v) if list_len(&v).is_some() => lists.push(v),
+            Some(v) if lists.is_empty() => {
+                return Err(a.err(format!("sorts a LISTREEL, LISTENTI or LISTMOTS, not a {}", v.type_name())))
+            }
+            Some(v) => {
+                return Err(
+                    a.err(format!("the lists to reorder are LISTREEL, LISTENTI or LISTMOTS, not {}", v.type_name()))
+                )
+            }
+            None => break,
+        }
+    }
+    let Some(key) = lists.first() else { return Err(a.missing("LISTREEL, LISTENTI or LISTMOTS")) };
+    let n = list_len(key).unwrap_or(0);
+    if let Some(other) = lists.iter().find(|l| list_len(l) != Some(n)) {
+        return Err(a.err(format!("the lists have different lengths ({} and {})", n, list_len(other).unwrap_or(0))));
+    }
+    let num = |x: f64| if use_abs { x.abs() } else { x };
+    let cmp = |i: usize, j: usize| match key {
+        Value::ListReel(l) => num(l[i]).total_cmp(&num(l[j])),
+        Value::ListEnti(l) if use_abs => l[i].abs().cmp(&l[j].abs()),
+        Value::ListEnti(l) => l[i].cmp(&l[j]),
+        Value::ListMots(l) => l[i].cmp(&l[j]),
+        _ => std::cmp::Ordering::Equal,
+    };
+    // Stable either way: equal keys keep their order.
+    let decr = order == Some("DECR");
+    let mut perm: Vec<usize> = (0..n).collect();
+    perm.sort_by(|&i, &j| if decr { cmp(j, i) } else { cmp(i, j) });
+    Ok(lists
+        .iter()
+        .map(|l| match l {
+            Value::ListReel(l) => Value::ListReel(Rc::new(perm.iter().map(|&i| l[i]).collect())),
+            Value::ListEnti(l) => Value::ListEnti(Rc::new(perm.iter().map(|&i| l[i]).collect())),
+            Value::ListMots(l) => Value::ListMots(Rc::new(perm.iter().map(|&i| l[i].clone()).collect())),
+            other => other.clone(),
+        })
+        .collect())
+}
+
+/// `EXTR LIST LISTENTI`: the items at the given (1-based) places, in the
+/// order of the places.
+fn sublist<T: Clone>(a: &Args, l: &[T], idx: &[i64]) -> Result<Vec<T>> {
+    idx.iter()
+        .map(|&i| match usize::try_from(i).ok().and_then(|i| i.checked_sub(1)).and_then(|i| l.get(i)) {
+            Some(x) => Ok(x.clone()),
+            None => Err(a.err(format!("index {} is outside 1..{}", i, l.len()))),
+        })
+        .collect()
 }
 
 fn dime(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {

@@ -6,6 +6,7 @@ mod args;
 mod arith;
 mod assemble;
 mod bc;
+mod curves;
 mod dofs;
 mod evol;
 mod export;
@@ -172,6 +173,7 @@ impl Registry {
             superele::OPS,
             export::OPS,
             evol::OPS,
+            curves::OPS,
         ] {
             for d in table {
                 r.insert(OpSpec::from(d));

@@ -13,7 +13,7 @@ use std::rc::Rc;
 pub(crate) const OPS: &[OpDef] = &[OpDef {
     name: "ET",
     signature: "OBJ1 ET OBJ2 ('NOER')",
-    doc: "Logical and; union of meshes; assembly of rigidities; merge of fields; concatenation of lists and words (LISTCHPO ET CHPOINT|LISTCHPO appends).",
+    doc: "Logical and; union of meshes; assembly of rigidities; merge of fields; concatenation of lists and words (LISTCHPO ET CHPOINT|LISTCHPO appends); curves gathered into one EVOLUTIO.",
     example: "l = l1 et l2 ;",
     f: et,
 }];
@@ -68,6 +68,10 @@ pub(crate) fn union(it: &mut Interp, a: &Args, x: Value, y: Value, noer: bool) -
         (ListChpo(l), ListChpo(m)) => ListChpo(Rc::new(l.iter().chain(m.iter()).cloned().collect())),
         (ListChpo(l), Chpo(c)) => ListChpo(Rc::new(l.iter().chain([c]).cloned().collect())),
         (Chpo(c), ListChpo(l)) => ListChpo(Rc::new([c].into_iter().chain(l.iter()).cloned().collect())),
+        // Curves gather into one multi-curve EVOLUTIO (what DESS draws).
+        (Evol(e), Evol(f)) => {
+            Evol(Rc::new(crate::value::Evolution { curves: e.curves.iter().chain(f.curves.iter()).cloned().collect() }))
+        }
         (Point(_) | Mesh(_), Point(_) | Mesh(_)) => {
             Mesh(Rc::new(as_mesh(&x).unwrap_or_default().union(&as_mesh(&y).unwrap_or_default())))
         }
