@@ -1,6 +1,6 @@
 //! Lists: PROG, LECT, MOTS, SUIT (LISTCHPO), EXTR, ORDO, DIME.
 
-use super::{limits, Args, OpDef};
+use super::{limits, Args, FromArg, OpDef};
 use crate::error::Result;
 use crate::eval::Interp;
 use crate::value::{Chpoint, Value};
@@ -197,6 +197,15 @@ fn extr(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     Err(a.missing("an object to extract from"))
 }
 
+/// A LISTREEL, LISTENTI or LISTMOTS argument.
+struct AnyList(Value);
+impl FromArg for AnyList {
+    const EXPECT: &'static str = "LISTREEL, LISTENTI or LISTMOTS";
+    fn from_value(v: &Value) -> Option<Self> {
+        list_len(v).map(|_| AnyList(v.clone()))
+    }
+}
+
 fn list_len(v: &Value) -> Option<usize> {
     match v {
         Value::ListReel(l) => Some(l.len()),
@@ -219,21 +228,14 @@ fn ordo(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             }
             continue;
         }
-        let next = if lists.is_empty() { a.opt::<Value>() } else { a.opt_right::<Value>() };
+        // The key list may have been pushed before ORDO; the others follow.
+        let next = if lists.is_empty() { a.opt::<AnyList>() } else { a.opt_right::<AnyList>() };
         match next {
-            Some(v) if list_len(&v).is_some() => lists.push(v),
-            Some(v) if lists.is_empty() => {
-                return Err(a.err(format!("sorts a LISTREEL, LISTENTI or LISTMOTS, not a {}", v.type_name())))
-            }
-            Some(v) => {
-                return Err(
-                    a.err(format!("the lists to reorder are LISTREEL, LISTENTI or LISTMOTS, not {}", v.type_name()))
-                )
-            }
+            Some(AnyList(v)) => lists.push(v),
             None => break,
         }
     }
-    let Some(key) = lists.first() else { return Err(a.missing("LISTREEL, LISTENTI or LISTMOTS")) };
+    let Some(key) = lists.first() else { return Err(a.missing(AnyList::EXPECT)) };
     let n = list_len(key).unwrap_or(0);
     if let Some(other) = lists.iter().find(|l| list_len(l) != Some(n)) {
         return Err(a.err(format!("the lists have different lengths ({} and {})", n, list_len(other).unwrap_or(0))));
@@ -270,6 +272,31 @@ fn sublist<T: Clone>(a: &Args, l: &[T], idx: &[i64]) -> Result<Vec<T>> {
             None => Err(a.err(format!("index {} is outside 1..{}", i, l.len()))),
         })
         .collect()
+}
+
+/// `ENLE LIST I|LISTENTI`: the list without the items at those places.
+/// None when the argument is not a list.
+pub(crate) fn enle(a: &mut Args) -> Result<Option<Vec<Value>>> {
+    let Some(AnyList(l)) = a.opt::<AnyList>() else { return Ok(None) };
+    let n = list_len(&l).unwrap_or(0);
+    let places: Vec<i64> = match a.opt::<i64>() {
+        Some(i) => vec![i],
+        None => a.req::<Rc<Vec<i64>>>()?.to_vec(),
+    };
+    let mut keep = vec![true; n];
+    for i in places {
+        match usize::try_from(i).ok().and_then(|i| i.checked_sub(1)).filter(|&i| i < n) {
+            Some(i) => keep[i] = false,
+            None => return Err(a.err(format!("index {} is outside 1..{}", i, n))),
+        }
+    }
+    let pick = |k: &usize| keep[*k];
+    Ok(Some(vec![match l {
+        Value::ListReel(l) => Value::ListReel(Rc::new((0..n).filter(pick).map(|k| l[k]).collect())),
+        Value::ListEnti(l) => Value::ListEnti(Rc::new((0..n).filter(pick).map(|k| l[k]).collect())),
+        Value::ListMots(l) => Value::ListMots(Rc::new((0..n).filter(pick).map(|k| l[k].clone()).collect())),
+        other => other,
+    }]))
 }
 
 fn dime(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {

@@ -25,6 +25,7 @@ mod post;
 mod reso;
 pub mod solver_cache;
 mod superele;
+mod tables;
 mod union;
 
 pub use args::{Args, FromArg, PointId};
@@ -174,6 +175,7 @@ impl Registry {
             export::OPS,
             evol::OPS,
             curves::OPS,
+            tables::OPS,
         ] {
             for d in table {
                 r.insert(OpSpec::from(d));

@@ -111,8 +111,11 @@ pub(crate) fn fields_union(_it: &mut Interp, a: &Args, x: &Value, y: &Value, noe
     }
 }
 
-/// `+ - * /` on FE objects.
-pub(crate) fn fields_binary(_it: &mut Interp, a: &Args, op: Bin, x: &Value, y: &Value) -> Result<Option<Value>> {
+/// `+ - * /` on FE objects, curves and VECTEUR tables.
+pub(crate) fn fields_binary(it: &mut Interp, a: &Args, op: Bin, x: &Value, y: &Value) -> Result<Option<Value>> {
+    if let Some(r) = super::tables::binary(it, a, op, x, y) {
+        return r.map(Some);
+    }
     match super::fields::binary(op, x, y).or_else(|| super::pointwise::binary(op, x, y)) {
         Some(r) => super::fields::to_err(a, r).map(Some),
         None => Ok(None),
