@@ -12,6 +12,7 @@ mod evol;
 mod export;
 mod fieldfn;
 mod fields;
+mod format;
 mod io;
 mod limits;
 mod lists;
