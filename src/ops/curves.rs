@@ -29,11 +29,17 @@ pub(crate) const OPS: &[OpDef] = &[
 /// What IPOL reads: numbers, lists, fields, curves.
 struct IpolArg(Value);
 impl FromArg for IpolArg {
-    const EXPECT: &'static str = "a number, a LISTREEL, a field or an EVOLUTIO";
+    const EXPECT: &'static str = "a number, a list, a field or an EVOLUTIO";
     fn from_value(v: &Value) -> Option<Self> {
         let ok = matches!(
             v,
-            Value::Int(_) | Value::Float(_) | Value::ListReel(_) | Value::Chpo(_) | Value::Mchaml(_) | Value::Evol(_)
+            Value::Int(_)
+                | Value::Float(_)
+                | Value::ListReel(_)
+                | Value::ListEnti(_)
+                | Value::Chpo(_)
+                | Value::Mchaml(_)
+                | Value::Evol(_)
         );
         ok.then(|| IpolArg(v.clone()))
     }
