@@ -112,3 +112,16 @@ fn drawing_without_file_access_is_a_no_op_and_bad_calls_are_errors() {
     let e = gibi.run_str("e", "trac (coor 1 s) ;").unwrap_err().render();
     assert!(e.contains("needs the mesh it lives on"), "{}", e);
 }
+
+#[test]
+fn dess_of_curves_joined_with_et() {
+    let dir = scratch("dess_et");
+    let mut gibi = Interpreter::builder().files(FilePolicy::Under(dir.clone())).build();
+    run(
+        &mut gibi,
+        "x = prog 0. 1. 2. ; ev1 = evol 'MANU' 'LEGE' 'first' 'time' x 'load' (prog 0. 1. 4.) ; \
+         ev2 = evol 'MANU' 'LEGE' 'second' 'time' x 'load' (prog 0. 2. 1.) ; dess (ev1 et ev2) ;",
+    );
+    let svg = assert_svg(&dir.join("gibi_trac_1.svg"));
+    assert!(svg.contains("first") && svg.contains("second"), "both legends are drawn");
+}

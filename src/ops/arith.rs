@@ -2,7 +2,7 @@
 //! pushed operand on their left, else read two operands on their right
 //! (`'-' 10 4`), so `1 + 2 * 3` is 9: there is no precedence.
 
-use super::{Args, OpDef};
+use super::{pointwise, Args, OpDef};
 use crate::error::Result;
 use crate::eval::Interp;
 use crate::value::Value;
@@ -112,7 +112,22 @@ fn int_op(a: &Args, op: Bin, x: i64, y: i64) -> Result<Value> {
 
 fn binary(it: &mut Interp, a: &mut Args, op: Bin) -> Result<Vec<Value>> {
     let (x, y) = operands(a)?;
-    Ok(vec![apply(it, a, op, x, y)?])
+    // A FLOTTANT divided by zero or a power with no real value would give
+    // inf or NaN, and a NaN passes every `SI (err > tol)` check: both are
+    // errors, as the division of an ENTIER by zero already is. (Purely
+    // numeric instructions take eval's fast path, which does not check yet.)
+    if op == Bin::Div && y.as_f64() == Some(0.0) && !matches!((&x, &y), (Value::Int(_), Value::Int(_))) {
+        return Err(a.err(format!("division of {} by zero", pointwise::describe(&x))));
+    }
+    let r = apply(it, a, op, x.clone(), y.clone())?;
+    if matches!(op, Bin::Div | Bin::Pow) && pointwise::finite(&x) && pointwise::finite(&y) && !pointwise::finite(&r) {
+        let (dx, dy) = (pointwise::describe(&x), pointwise::describe(&y));
+        return Err(a.err(match op {
+            Bin::Div => format!("{} / {} divides by zero", dx, dy),
+            _ => format!("{} ** {} has no finite real value", dx, dy),
+        }));
+    }
+    Ok(vec![r])
 }
 
 pub(crate) fn apply(it: &mut Interp, a: &Args, op: Bin, x: Value, y: Value) -> Result<Value> {

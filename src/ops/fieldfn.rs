@@ -1,18 +1,10 @@
-//! Hooks through which the generic operators (ABS, MAXI, MINI, EXTR, DIME)
+//! Hooks through which the generic operators (MAXI, MINI, EXTR, DIME)
 //! reach the finite-element objects.
 
 use super::Args;
 use crate::error::Result;
 use crate::eval::Interp;
 use crate::value::Value;
-use std::rc::Rc;
-
-pub(crate) fn abs(_it: &mut Interp, v: &Value) -> Option<Value> {
-    match v {
-        Value::Chpo(c) => Some(Value::Chpo(Rc::new(c.map(f64::abs)))),
-        _ => None,
-    }
-}
 
 pub(crate) fn extremum(_it: &mut Interp, a: &mut Args, max: bool, abs: bool) -> Result<Option<Value>> {
     super::fields::extremum(a, max, abs)

@@ -43,8 +43,9 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "ENLE",
-        signature: "ENLE CHPOINT COMP|LISTMOTS",
-        doc: "Remove components of a field.",
+        signature: "ENLE CHPOINT COMP|LISTMOTS | ENLE LISTREEL|LISTENTI|LISTMOTS I|LISTENTI | ENLE TABLE KEY",
+        doc:
+            "Remove components of a field, the items of a list at the given places, or a key (in a copy of the table).",
         example: "u2 = enle u 'LX' ;",
         f: enle,
     },
@@ -202,7 +203,15 @@ fn nomc(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 fn enle(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let ch = a.req_find::<Rc<Chpoint>>()?;
+    let Some(ch) = a.find::<Rc<Chpoint>>() else {
+        if let Some(r) = super::lists::enle(a)? {
+            return Ok(r);
+        }
+        if let Some(r) = super::tables::enle(a)? {
+            return Ok(r);
+        }
+        return Err(a.missing("CHPOINT, a list or a TABLE"));
+    };
     let comps = comp_list(a).ok_or_else(|| a.missing("components to remove"))?;
     let out = Chpoint::from_entries(ch.nature, ch.entries().filter(|(_, c, _)| !comps.iter().any(|x| x == c)));
     Ok(vec![Value::Chpo(Rc::new(out))])

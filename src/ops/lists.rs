@@ -1,6 +1,6 @@
-//! Lists: PROG, LECT, MOTS, SUIT (LISTCHPO), EXTR, DIME.
+//! Lists: PROG, LECT, MOTS, SUIT (LISTCHPO), EXTR, ORDO, DIME.
 
-use super::{Args, OpDef};
+use super::{limits, Args, FromArg, OpDef};
 use crate::error::Result;
 use crate::eval::Interp;
 use crate::value::{Chpoint, Value};
@@ -37,10 +37,17 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "EXTR",
-        signature: "EXTR LISTREEL|LISTENTI|LISTMOTS|LISTCHPO I | MOT I J | CHPOINT COMP POINT | …",
-        doc: "Extract a part of an object (list element, I from 1; substring; field value; …).",
+        signature: "EXTR LISTREEL|LISTENTI|LISTMOTS|LISTCHPO I | LIST LISTENTI | MOT I J | CHPOINT COMP POINT | EVOLUTIO 'ABSC'|'ORDO' (N) | …",
+        doc: "Extract a part of an object (list element, I from 1; sub-list at the places of a LISTENTI; substring; field value; curve N's lists; …).",
         example: "x = extr l 2 ;",
         f: extr,
+    },
+    OpDef {
+        name: "ORDO",
+        signature: "ORDO LIST1 (LIST2 …) ('CROI'|'DECR') ('ABS')",
+        doc: "Sort a LISTREEL, LISTENTI or LISTMOTS (increasing by default); further lists of the same length follow the first one's order, one result per list.",
+        example: "ls = ordo (prog 3. 1. 2.) ;",
+        f: ordo,
     },
     OpDef {
         name: "DIME",
@@ -51,24 +58,22 @@ pub(crate) const OPS: &[OpDef] = &[
     },
 ];
 
-/// Sequence builder shared by PROG and LECT.
+/// Sequence builder shared by PROG and LECT. Every count is checked
+/// before it is allocated ([`limits`]).
 fn sequence(a: &mut Args, int: bool) -> Result<Vec<f64>> {
     let mut out = Vec::new();
     loop {
         if let Some(x) = a.opt_num_right() {
             if a.sign_like_star() {
                 let v = a.opt_num_right().ok_or_else(|| a.missing("a value after '*'"))?;
-                if x < 0.0 || x.fract() != 0.0 {
-                    return Err(a.err(format!("a repeat count must be a non-negative ENTIER, found {}", x)));
-                }
-                out.extend(std::iter::repeat_n(v, x as usize));
+                let n = limits::room(a, out.len(), x)?;
+                out.extend(std::iter::repeat_n(v, n));
             } else if a.keyword(&["PAS"]).is_some() {
                 let step = a.opt_num_right().ok_or_else(|| a.missing("the step after PAS"))?;
                 if a.keyword(&["NPAS"]).is_some() {
                     let n = a.opt_num_right().ok_or_else(|| a.missing("the count after NPAS"))?;
-                    for k in 0..=(n.max(0.0) as usize) {
-                        out.push(x + k as f64 * step);
-                    }
+                    let n = limits::room(a, out.len(), n.max(0.0) + 1.0)?;
+                    out.extend((0..n).map(|k| x + k as f64 * step));
                 } else {
                     let end = a.opt_num_right().ok_or_else(|| a.missing("the last value after PAS"))?;
                     if step == 0.0 || (end - x) * step < 0.0 {
@@ -78,19 +83,18 @@ fn sequence(a: &mut Args, int: bool) -> Result<Vec<f64>> {
                     if int && ((end - x) / step - n).abs() > 1e-9 {
                         return Err(a.err(format!("PAS {} does not divide the interval from {} to {}", step, x, end)));
                     }
-                    if n > 1.0e8 {
-                        return Err(a.err("too many values"));
-                    }
-                    for k in 0..=(n as usize) {
-                        out.push(x + k as f64 * step);
-                    }
+                    let n = limits::room(a, out.len(), n + 1.0)?;
+                    out.extend((0..n).map(|k| x + k as f64 * step));
                 }
             } else {
+                limits::room(a, out.len(), 1.0)?;
                 out.push(x);
             }
         } else if let Some(l) = a.opt_right::<Rc<Vec<f64>>>() {
+            limits::room(a, out.len(), l.len() as f64)?;
             out.extend(l.iter());
         } else if let Some(l) = a.opt_right::<Rc<Vec<i64>>>() {
+            limits::room(a, out.len(), l.len() as f64)?;
             out.extend(l.iter().map(|&i| i as f64));
         } else {
             break;
@@ -111,18 +115,23 @@ fn lect(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     Ok(vec![Value::ListEnti(Rc::new(v.into_iter().map(|x| x as i64).collect()))])
 }
 
+/// MOTS reads what follows it as words, operator names included
+/// (`MOTS PRES FORC`, `MOTS UX MAXI`): Cast3M's MOTS reads words, so
+/// mots.notice asks to write MOTS first. A name bound to a MOT gives its
+/// value; anything else ends the list.
 fn mots(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let mut out = Vec::new();
     loop {
-        if let Some(n) = a.opt_right::<i64>() {
+        if let Some(n) = a.opt_num_right() {
             if !a.sign_like_star() {
                 return Err(a.err("expected '*' after a repeat count"));
             }
             let w = a.word().ok_or_else(|| a.missing("a word after '*'"))?;
-            out.extend(std::iter::repeat_n(short(&w), n.max(0) as usize));
+            let n = limits::room(a, out.len(), n)?;
+            out.extend(std::iter::repeat_n(short(&w), n));
         } else if let Some(l) = a.opt_right::<Rc<Vec<String>>>() {
             out.extend(l.iter().cloned());
-        } else if let Some(w) = a.word_not_operator() {
+        } else if let Some(w) = a.word() {
             out.push(short(&w));
         } else {
             break;
@@ -151,14 +160,23 @@ fn extr(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         return Ok(v);
     }
     if let Some(l) = a.opt::<Rc<Vec<f64>>>() {
+        if let Some(idx) = a.opt::<Rc<Vec<i64>>>() {
+            return Ok(vec![Value::ListReel(Rc::new(sublist(a, &l, &idx)?))]);
+        }
         let i = a.req_index(l.len())?;
         return Ok(vec![Value::Float(l[i])]);
     }
     if let Some(l) = a.opt::<Rc<Vec<i64>>>() {
+        if let Some(idx) = a.opt::<Rc<Vec<i64>>>() {
+            return Ok(vec![Value::ListEnti(Rc::new(sublist(a, &l, &idx)?))]);
+        }
         let i = a.req_index(l.len())?;
         return Ok(vec![Value::Int(l[i])]);
     }
     if let Some(l) = a.opt::<Rc<Vec<String>>>() {
+        if let Some(idx) = a.opt::<Rc<Vec<i64>>>() {
+            return Ok(vec![Value::ListMots(Rc::new(sublist(a, &l, &idx)?))]);
+        }
         let i = a.req_index(l.len())?;
         return Ok(vec![Value::mot(&l[i])]);
     }
@@ -177,6 +195,108 @@ fn extr(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         return Ok(vec![Value::mot(chars[i..j].iter().collect::<String>())]);
     }
     Err(a.missing("an object to extract from"))
+}
+
+/// A LISTREEL, LISTENTI or LISTMOTS argument.
+struct AnyList(Value);
+impl FromArg for AnyList {
+    const EXPECT: &'static str = "LISTREEL, LISTENTI or LISTMOTS";
+    fn from_value(v: &Value) -> Option<Self> {
+        list_len(v).map(|_| AnyList(v.clone()))
+    }
+}
+
+fn list_len(v: &Value) -> Option<usize> {
+    match v {
+        Value::ListReel(l) => Some(l.len()),
+        Value::ListEnti(l) => Some(l.len()),
+        Value::ListMots(l) => Some(l.len()),
+        _ => None,
+    }
+}
+
+/// ORDO: a stable sort of the first list; the others follow its order.
+fn ordo(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let mut order = None;
+    let mut use_abs = false;
+    let mut lists: Vec<Value> = Vec::new();
+    loop {
+        if let Some(k) = a.keyword(&["CROI", "DECR", "ABS"]) {
+            match k {
+                "ABS" => use_abs = true,
+                k => order = Some(k),
+            }
+            continue;
+        }
+        // The key list may have been pushed before ORDO; the others follow.
+        let next = if lists.is_empty() { a.opt::<AnyList>() } else { a.opt_right::<AnyList>() };
+        match next {
+            Some(AnyList(v)) => lists.push(v),
+            None => break,
+        }
+    }
+    let Some(key) = lists.first() else { return Err(a.missing(AnyList::EXPECT)) };
+    let n = list_len(key).unwrap_or(0);
+    if let Some(other) = lists.iter().find(|l| list_len(l) != Some(n)) {
+        return Err(a.err(format!("the lists have different lengths ({} and {})", n, list_len(other).unwrap_or(0))));
+    }
+    let num = |x: f64| if use_abs { x.abs() } else { x };
+    let cmp = |i: usize, j: usize| match key {
+        Value::ListReel(l) => num(l[i]).total_cmp(&num(l[j])),
+        Value::ListEnti(l) if use_abs => l[i].abs().cmp(&l[j].abs()),
+        Value::ListEnti(l) => l[i].cmp(&l[j]),
+        Value::ListMots(l) => l[i].cmp(&l[j]),
+        _ => std::cmp::Ordering::Equal,
+    };
+    // Stable either way: equal keys keep their order.
+    let decr = order == Some("DECR");
+    let mut perm: Vec<usize> = (0..n).collect();
+    perm.sort_by(|&i, &j| if decr { cmp(j, i) } else { cmp(i, j) });
+    Ok(lists
+        .iter()
+        .map(|l| match l {
+            Value::ListReel(l) => Value::ListReel(Rc::new(perm.iter().map(|&i| l[i]).collect())),
+            Value::ListEnti(l) => Value::ListEnti(Rc::new(perm.iter().map(|&i| l[i]).collect())),
+            Value::ListMots(l) => Value::ListMots(Rc::new(perm.iter().map(|&i| l[i].clone()).collect())),
+            other => other.clone(),
+        })
+        .collect())
+}
+
+/// `EXTR LIST LISTENTI`: the items at the given (1-based) places, in the
+/// order of the places.
+fn sublist<T: Clone>(a: &Args, l: &[T], idx: &[i64]) -> Result<Vec<T>> {
+    idx.iter()
+        .map(|&i| match usize::try_from(i).ok().and_then(|i| i.checked_sub(1)).and_then(|i| l.get(i)) {
+            Some(x) => Ok(x.clone()),
+            None => Err(a.err(format!("index {} is outside 1..{}", i, l.len()))),
+        })
+        .collect()
+}
+
+/// `ENLE LIST I|LISTENTI`: the list without the items at those places.
+/// None when the argument is not a list.
+pub(crate) fn enle(a: &mut Args) -> Result<Option<Vec<Value>>> {
+    let Some(AnyList(l)) = a.opt::<AnyList>() else { return Ok(None) };
+    let n = list_len(&l).unwrap_or(0);
+    let places: Vec<i64> = match a.opt::<i64>() {
+        Some(i) => vec![i],
+        None => a.req::<Rc<Vec<i64>>>()?.to_vec(),
+    };
+    let mut keep = vec![true; n];
+    for i in places {
+        match usize::try_from(i).ok().and_then(|i| i.checked_sub(1)).filter(|&i| i < n) {
+            Some(i) => keep[i] = false,
+            None => return Err(a.err(format!("index {} is outside 1..{}", i, n))),
+        }
+    }
+    let pick = |k: &usize| keep[*k];
+    Ok(Some(vec![match l {
+        Value::ListReel(l) => Value::ListReel(Rc::new((0..n).filter(pick).map(|k| l[k]).collect())),
+        Value::ListEnti(l) => Value::ListEnti(Rc::new((0..n).filter(pick).map(|k| l[k]).collect())),
+        Value::ListMots(l) => Value::ListMots(Rc::new((0..n).filter(pick).map(|k| l[k].clone()).collect())),
+        other => other,
+    }]))
 }
 
 fn dime(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {

@@ -1,103 +1,159 @@
-//! Scalar functions. Angles are in degrees, as in Cast3M.
+//! Mathematical functions, applied value by value to lists, node and
+//! element fields and curve ordinates. Angles are in degrees, as in Cast3M.
 
-use super::{Args, OpDef};
+use super::{pointwise, Args, FromArg, OpDef};
 use crate::error::Result;
 use crate::eval::Interp;
-use crate::value::Value;
+use crate::value::{fmt_float, Value};
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
     OpDef {
         name: "ABS",
-        signature: "ABS NUM|LISTREEL|LISTENTI|CHPOINT",
-        doc: "Absolute value.",
+        signature: "ABS NUM|LISTREEL|LISTENTI|CHPOINT|MCHAML|EVOLUTIO",
+        doc: "Absolute value (of every value of a list or field; of the ordinates of a curve).",
         example: "e = abs (x - 1.) ;",
         f: abs,
     },
-    OpDef { name: "SIN", signature: "SIN NUM", doc: "Sine of an angle in degrees.", example: "s = sin 30. ;", f: sin },
+    OpDef {
+        name: "SIN",
+        signature: "SIN NUM|LISTREEL|LISTENTI|CHPOINT|MCHAML|EVOLUTIO",
+        doc: "Sine of an angle in degrees, value by value on lists and fields.",
+        example: "s = sin 30. ;",
+        f: sin,
+    },
     OpDef {
         name: "COS",
-        signature: "COS NUM",
-        doc: "Cosine of an angle in degrees.",
+        signature: "COS NUM|LISTREEL|LISTENTI|CHPOINT|MCHAML|EVOLUTIO",
+        doc: "Cosine of an angle in degrees, value by value on lists and fields.",
         example: "c = cos 60. ;",
         f: cos,
     },
     OpDef {
         name: "TAN",
-        signature: "TAN NUM",
-        doc: "Tangent of an angle in degrees.",
+        signature: "TAN NUM|LISTREEL|LISTENTI|CHPOINT|MCHAML|EVOLUTIO",
+        doc: "Tangent of an angle in degrees, value by value on lists and fields.",
         example: "t = tan 45. ;",
         f: tan,
     },
-    OpDef { name: "ASIN", signature: "ASIN NUM", doc: "Arc sine, in degrees.", example: "a = asin 0.5 ;", f: asin },
-    OpDef { name: "ACOS", signature: "ACOS NUM", doc: "Arc cosine, in degrees.", example: "a = acos 0.5 ;", f: acos },
+    OpDef {
+        name: "ASIN",
+        signature: "ASIN NUM|LISTREEL|LISTENTI|CHPOINT|MCHAML|EVOLUTIO",
+        doc: "Arc sine, in degrees.",
+        example: "a = asin 0.5 ;",
+        f: asin,
+    },
+    OpDef {
+        name: "ACOS",
+        signature: "ACOS NUM|LISTREEL|LISTENTI|CHPOINT|MCHAML|EVOLUTIO",
+        doc: "Arc cosine, in degrees.",
+        example: "a = acos 0.5 ;",
+        f: acos,
+    },
     OpDef {
         name: "ATG",
-        signature: "ATG NUM (NUM2)",
-        doc: "Arc tangent in degrees; with two numbers, atan2(NUM, NUM2).",
+        signature: "ATG NUM (NUM2) | ATG LISTREEL (LISTREEL2) | ATG CHPOINT|MCHAML|EVOLUTIO",
+        doc: "Arc tangent in degrees; with two numbers or lists, atan2(NUM, NUM2).",
         example: "a = atg 1. ;",
         f: atg,
     },
-    OpDef { name: "EXP", signature: "EXP NUM", doc: "Exponential.", example: "e = exp 1. ;", f: exp },
-    OpDef { name: "LOG", signature: "LOG NUM", doc: "Natural logarithm.", example: "l = log 10. ;", f: log },
+    OpDef {
+        name: "EXP",
+        signature: "EXP NUM|LISTREEL|LISTENTI|CHPOINT|MCHAML|EVOLUTIO",
+        doc: "Exponential, value by value on lists and fields.",
+        example: "e = exp 1. ;",
+        f: exp,
+    },
+    OpDef {
+        name: "LOG",
+        signature: "LOG NUM|LISTREEL|LISTENTI|CHPOINT|MCHAML|EVOLUTIO",
+        doc: "Natural logarithm, value by value on lists and fields.",
+        example: "l = log 10. ;",
+        f: log,
+    },
     OpDef {
         name: "ENTI",
-        signature: "ENTI NUM ('INFE'|'SUPE'|'PROC')",
-        doc: "Integer part (truncation; INFE floor, SUPE ceiling, PROC nearest).",
+        signature: "ENTI NUM|LISTREEL|LISTENTI|MOT ('INFE'|'SUPE'|'PROC')",
+        doc: "Integer part (truncation; INFE floor, SUPE ceiling, PROC nearest); a LISTREEL gives a LISTENTI, a MOT holding a number its value.",
         example: "i = enti 3.7 ;",
         f: enti,
+    },
+    OpDef {
+        name: "FLOT",
+        signature: "FLOT NUM|LISTENTI|LISTREEL|MOT",
+        doc: "Conversion to FLOTTANT (a LISTENTI gives a LISTREEL, a MOT holding a number its value).",
+        example: "x = flot 3 ;",
+        f: flot,
     },
     OpDef { name: "PI", signature: "PI", doc: "The number pi.", example: "l = 2. * pi ;", f: pi },
     OpDef {
         name: "MAXI",
-        signature: "MAXI (ABS) LISTREEL|LISTENTI|NUM1 NUM2 ...|CHPOINT",
-        doc: "Largest value of a list, of several numbers or of a field.",
+        signature: "MAXI (ABS) LISTREEL|LISTENTI|NUM1 NUM2 ...|CHPOINT|MCHAML",
+        doc: "Largest value of a list, of several numbers or of a field (ENTIER when every value is).",
         example: "m = maxi (prog 3. 8. 1.) ;",
         f: maxi,
     },
     OpDef {
         name: "MINI",
-        signature: "MINI (ABS) LISTREEL|LISTENTI|NUM1 NUM2 ...|CHPOINT",
-        doc: "Smallest value of a list, of several numbers or of a field.",
+        signature: "MINI (ABS) LISTREEL|LISTENTI|NUM1 NUM2 ...|CHPOINT|MCHAML",
+        doc: "Smallest value of a list, of several numbers or of a field (ENTIER when every value is).",
         example: "m = mini (prog 3. 8. 1.) ;",
         f: mini,
     },
 ];
 
-/// The one numeric operand of a unary function: left (newest) or right.
-fn num_arg(a: &mut Args) -> Result<f64> {
-    if let Some(v) = a.left_top::<crate::ops::args::Num>() {
-        return Ok(v.0);
+/// An operand holding numbers: a number, a list, a field or a curve.
+struct Numeric(Value);
+impl FromArg for Numeric {
+    const EXPECT: &'static str = "a number, a list, a field or a curve";
+    fn from_value(v: &Value) -> Option<Self> {
+        let ok = matches!(
+            v,
+            Value::Int(_)
+                | Value::Float(_)
+                | Value::ListReel(_)
+                | Value::ListEnti(_)
+                | Value::Chpo(_)
+                | Value::Mchaml(_)
+                | Value::Evol(_)
+        );
+        ok.then(|| Numeric(v.clone()))
     }
-    if let Some(i) = a.left_top::<i64>() {
-        return Ok(i as f64);
-    }
-    a.opt_num_right().ok_or_else(|| a.missing("FLOTTANT"))
 }
 
+/// The operand of a one-argument function: the newest pushed value when
+/// it holds numbers (`(x - 1.) abs`), else the next one on the right.
+fn operand(a: &mut Args) -> Result<Value> {
+    match a.left_top::<Numeric>().or_else(|| a.opt_right::<Numeric>()) {
+        Some(n) => Ok(n.0),
+        None => Err(a.missing(Numeric::EXPECT)),
+    }
+}
+
+/// `f` value by value; a NaN or an infinity made from a finite value is
+/// an error, since it would slip through every `SI (err > tol)` check.
 fn unary(a: &mut Args, f: fn(f64) -> f64) -> Result<Vec<Value>> {
-    let x = num_arg(a)?;
-    let y = f(x);
-    if y.is_nan() {
-        return Err(a.err(format!("undefined for {}", x)));
+    let v = operand(a)?;
+    let g = |x: f64| {
+        let y = f(x);
+        if x.is_finite() && !y.is_finite() {
+            f64::NAN
+        } else {
+            y
+        }
+    };
+    match pointwise::map_checked(&v, &g) {
+        Some(Ok(r)) => Ok(vec![r]),
+        Some(Err(x)) => Err(a.err(format!("no finite result for {}", fmt_float(x)))),
+        None => Err(a.err(format!("no value by value function of a {}", v.type_name()))),
     }
-    Ok(vec![Value::Float(y)])
 }
 
-fn abs(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let v = match a.left_value() {
-        Some(v) => v,
-        None => a.right_any().ok_or_else(|| a.missing("a number, list or field"))?,
-    };
-    Ok(vec![match v {
+fn abs(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    Ok(vec![match operand(a)? {
         Value::Int(i) => Value::Int(i.abs()),
-        Value::Float(f) => Value::Float(f.abs()),
-        Value::ListReel(l) => Value::ListReel(Rc::new(l.iter().map(|x| x.abs()).collect())),
         Value::ListEnti(l) => Value::ListEnti(Rc::new(l.iter().map(|x| x.abs()).collect())),
-        other => match crate::ops::fieldfn::abs(it, &other) {
-            Some(v) => v,
-            None => return Err(a.err(format!("no absolute value of a {}", other.type_name()))),
-        },
+        other => pointwise::map(&other, &f64::abs).unwrap_or(other),
     }])
 }
 
@@ -117,35 +173,94 @@ fn acos(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     unary(a, |x| x.acos().to_degrees())
 }
 fn atg(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let y = num_arg(a)?;
-    Ok(vec![Value::Float(match a.opt_num_right() {
-        Some(x) => y.atan2(x).to_degrees(),
-        None => y.atan().to_degrees(),
-    })])
+    let y = operand(a)?;
+    match &y {
+        Value::Int(_) | Value::Float(_) => {
+            let yv = y.as_f64().unwrap_or(0.0);
+            Ok(vec![Value::Float(match a.opt_num_right() {
+                Some(x) => yv.atan2(x).to_degrees(),
+                None => yv.atan().to_degrees(),
+            })])
+        }
+        Value::ListReel(l) => match a.opt_right::<Rc<Vec<f64>>>() {
+            Some(m) if m.len() == l.len() => Ok(vec![Value::ListReel(Rc::new(
+                l.iter().zip(m.iter()).map(|(p, q)| p.atan2(*q).to_degrees()).collect(),
+            ))]),
+            Some(m) => Err(a.err(format!("lists of different lengths ({} and {})", l.len(), m.len()))),
+            None => Ok(vec![pointwise::map(&y, &|x| x.atan().to_degrees()).unwrap_or(y)]),
+        },
+        _ => Ok(vec![pointwise::map(&y, &|x| x.atan().to_degrees()).unwrap_or(y)]),
+    }
 }
 fn exp(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     unary(a, f64::exp)
 }
 fn log(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let x = num_arg(a)?;
-    if x <= 0.0 {
-        return Err(a.err(format!("logarithm of a non-positive number ({})", x)));
-    }
-    Ok(vec![Value::Float(x.ln())])
+    // ln 0 is -inf and ln of a negative number NaN: both are errors.
+    unary(a, |x| if x > 0.0 { x.ln() } else { f64::NAN })
 }
+
+/// A number written in a MOT, Fortran style (`'12'`, `'1.5D3'`).
+fn parse_number(s: &str) -> Option<f64> {
+    let t = s.trim().replace(['D', 'd', 'Q', 'q'], "E");
+    t.parse::<f64>().ok().filter(|x| x.is_finite())
+}
+
+/// ENTI and FLOT also read a MOT holding a number.
+struct NumericOrMot(Value);
+impl FromArg for NumericOrMot {
+    const EXPECT: &'static str = "a number, a list or a word holding a number";
+    fn from_value(v: &Value) -> Option<Self> {
+        let ok = matches!(v, Value::Int(_) | Value::Float(_) | Value::ListReel(_) | Value::ListEnti(_) | Value::Mot(_));
+        ok.then(|| NumericOrMot(v.clone()))
+    }
+}
+
+fn numeric_or_mot(a: &mut Args) -> Result<Value> {
+    match a.left_top::<NumericOrMot>().or_else(|| a.opt_right::<NumericOrMot>()) {
+        Some(n) => Ok(n.0),
+        None => Err(a.missing(NumericOrMot::EXPECT)),
+    }
+}
+
+fn word_number(a: &Args, s: &str) -> Result<f64> {
+    parse_number(s).ok_or_else(|| a.err(format!("the word '{}' is not a number", s)))
+}
+
 fn enti(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let x = num_arg(a)?;
-    let r = match a.keyword(&["INFE", "SUPE", "PROC"]) {
-        Some("INFE") => x.floor(),
-        Some("SUPE") => x.ceil(),
-        Some(_) => x.round(),
-        None => x.trunc(),
+    let v = numeric_or_mot(a)?;
+    let round: fn(f64) -> f64 = match a.keyword(&["INFE", "SUPE", "PROC"]) {
+        Some("INFE") => f64::floor,
+        Some("SUPE") => f64::ceil,
+        Some(_) => f64::round,
+        None => f64::trunc,
     };
-    if !r.is_finite() || r.abs() > 9.0e18 {
-        return Err(a.err(format!("{} has no ENTIER value", x)));
-    }
-    Ok(vec![Value::Int(r as i64)])
+    let to_int = |x: f64| -> Result<i64> {
+        let r = round(x);
+        if !r.is_finite() || r.abs() > 9.0e18 {
+            return Err(a.err(format!("{} has no ENTIER value", x)));
+        }
+        Ok(r as i64)
+    };
+    Ok(vec![match v {
+        Value::Int(i) => Value::Int(i),
+        Value::Float(x) => Value::Int(to_int(x)?),
+        Value::Mot(s) => Value::Int(to_int(word_number(a, &s)?)?),
+        Value::ListEnti(l) => Value::ListEnti(l),
+        Value::ListReel(l) => Value::ListEnti(Rc::new(l.iter().map(|x| to_int(*x)).collect::<Result<_>>()?)),
+        other => return Err(a.err(format!("no integer part of a {}", other.type_name()))),
+    }])
 }
+
+fn flot(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    Ok(vec![match numeric_or_mot(a)? {
+        Value::Int(i) => Value::Float(i as f64),
+        Value::Mot(s) => Value::Float(word_number(a, &s)?),
+        Value::ListEnti(l) => Value::ListReel(Rc::new(l.iter().map(|i| *i as f64).collect())),
+        other => other,
+    }])
+}
+
 fn pi(_: &mut Interp, _: &mut Args) -> Result<Vec<Value>> {
     Ok(vec![Value::Float(std::f64::consts::PI)])
 }
@@ -166,14 +281,28 @@ fn extremum(it: &mut Interp, a: &mut Args, max: bool) -> Result<Vec<Value>> {
     if let Some(r) = crate::ops::fieldfn::extremum(it, a, max, use_abs)? {
         return Ok(vec![r]);
     }
+    // Numbers: ENTIER when every one is (as for a LISTENTI), else FLOTTANT.
     let mut nums = Vec::new();
-    while let Some(x) = a.opt_num() {
-        nums.push(x);
+    loop {
+        if let Some(i) = a.opt::<i64>() {
+            nums.push(Value::Int(i));
+        } else if let Some(x) = a.opt::<f64>() {
+            nums.push(Value::Float(x));
+        } else {
+            break;
+        }
     }
     if nums.is_empty() {
         return Err(a.missing("a list, numbers or a field"));
     }
-    Ok(vec![Value::Float(nums.into_iter().map(conv).reduce(pick).unwrap_or(0.0))])
+    if nums.iter().all(|v| matches!(v, Value::Int(_))) {
+        let ints =
+            nums.iter()
+                .filter_map(|v| if let Value::Int(i) = v { Some(if use_abs { i.abs() } else { *i }) } else { None });
+        let r = if max { ints.max() } else { ints.min() };
+        return Ok(vec![Value::Int(r.unwrap_or(0))]);
+    }
+    Ok(vec![Value::Float(nums.iter().filter_map(Value::as_f64).map(conv).reduce(pick).unwrap_or(0.0))])
 }
 fn maxi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     extremum(it, a, true)

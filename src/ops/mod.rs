@@ -6,22 +6,27 @@ mod args;
 mod arith;
 mod assemble;
 mod bc;
+mod curves;
 mod dofs;
 mod evol;
 mod export;
 mod fieldfn;
 mod fields;
+mod format;
 mod io;
+mod limits;
 mod lists;
 mod manu;
 mod math;
 mod mesh;
 mod model;
 mod objects;
+mod pointwise;
 mod post;
 mod reso;
 pub mod solver_cache;
 mod superele;
+mod tables;
 mod union;
 
 pub use args::{Args, FromArg, PointId};
@@ -170,6 +175,8 @@ impl Registry {
             superele::OPS,
             export::OPS,
             evol::OPS,
+            curves::OPS,
+            tables::OPS,
         ] {
             for d in table {
                 r.insert(OpSpec::from(d));

@@ -1,5 +1,6 @@
 //! Object utilities: TYPE, EXIS, OUBL, DETR, MOT, CHAI, COMM, TABL.
 
+use super::format::{self, Edit};
 use super::{Args, OpDef};
 use crate::error::Result;
 use crate::eval::Interp;
@@ -45,9 +46,9 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "CHAI",
-        signature: "CHAI OBJ1 OBJ2 …",
-        doc: "Join words and numbers into one MOT (floats as 1PE12.5).",
-        example: "m = chai 'err=' x ;",
+        signature: "CHAI ('FORMAT' '(F8.3)') OBJ1 (*N) OBJ2 …",
+        doc: "Join words and numbers into one MOT (floats as 1PE12.5 unless a Fortran format F, E, 1PE, ES, D, G, I or A is given; *N starts the next item at column N).",
+        example: "m = chai 'err=' 'FORMAT' '(F8.3)' x *20 'done' ;",
         f: chai,
     },
     OpDef {
@@ -142,32 +143,75 @@ fn mot(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     Ok(vec![Value::mot(w)])
 }
 
-/// Cast3M's default float format for CHAI, (1PE12.5): `1.00000E+00`.
+/// Longest MOT CHAI builds (chai.notice).
+const MAX_TEXT: usize = 512;
+
+/// CHAI joins words and numbers into one MOT. Floats default to Cast3M's
+/// (1PE12.5) digits, `1.00000E+00`, without the field's leading blank.
+/// `'FORMAT' '(F8.3)'` sets how the following FLOTTANTs are written (an
+/// I descriptor sets ENTIERs, an A descriptor words); `*N` starts the
+/// next item at column N.
 fn chai(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let mut s = String::new();
-    let mut parts = Vec::new();
-    while let Some(v) = a.opt::<Value>() {
-        parts.push(v);
-    }
-    for v in parts {
+    let (mut real, mut int, mut text): (Option<Edit>, Option<Edit>, Option<Edit>) = (None, None, None);
+    loop {
+        // Operands pushed before CHAI come first, as written.
+        if a.left_len() == 0 {
+            if is_format_word(a.peek_right()) {
+                a.right_any();
+                let f = a.opt_right::<String>().ok_or_else(|| a.missing("a Fortran format such as '(F8.3)'"))?;
+                let e = format::parse(&f).map_err(|m| a.err(m))?;
+                match e {
+                    Edit::I { .. } => int = Some(e),
+                    Edit::A { .. } => text = Some(e),
+                    _ => real = Some(e),
+                }
+                continue;
+            }
+            if a.sign_like_star() {
+                let col = a.opt_right::<i64>().ok_or_else(|| a.missing("a column number after '*'"))?;
+                if col < 1 || col as usize > MAX_TEXT {
+                    return Err(a.err(format!("column {} is outside 1..{}", col, MAX_TEXT)));
+                }
+                let have = s.chars().count();
+                if have + 1 < col as usize {
+                    s.push_str(&" ".repeat(col as usize - 1 - have));
+                }
+                continue;
+            }
+        }
+        let Some(v) = a.opt::<Value>() else { break };
         match v {
-            Value::Mot(m) => s.push_str(&m),
-            Value::Int(i) => s.push_str(&i.to_string()),
-            Value::Float(f) => s.push_str(&fmt_float(f)),
+            Value::Mot(m) => s.push_str(&text.as_ref().map_or_else(|| m.to_string(), |e| format::text(e, &m))),
+            Value::Int(i) => s.push_str(&int.as_ref().map_or_else(|| i.to_string(), |e| format::int(e, i))),
+            Value::Float(f) => s.push_str(&real.as_ref().map_or_else(|| fmt_float(f), |e| format::real(e, f))),
             Value::Bool(b) => s.push_str(if b { "VRAI" } else { "FAUX" }),
             Value::Point(p) => {
                 let x = it.nodes.get(p);
                 let d = it.opts.dime.max(1);
-                let c: Vec<String> = x[..d].iter().map(|c| fmt_float(*c)).collect();
+                let show = |c: f64| real.as_ref().map_or_else(|| fmt_float(c), |e| format::real(e, c));
+                let c: Vec<String> = x[..d].iter().map(|c| show(*c)).collect();
                 s.push_str(&c.join(" "));
             }
             other => return Err(a.err(format!("cannot put a {} in a text", other.type_name()))),
         }
-    }
-    if s.chars().count() > 512 {
-        return Err(a.err("a text holds at most 512 characters"));
+        if s.chars().count() > MAX_TEXT {
+            return Err(a.err(format!("a text holds at most {} characters", MAX_TEXT)));
+        }
     }
     Ok(vec![Value::mot(s)])
+}
+
+/// `'FORMAT'` (or `'FORM'`, `'FORMA'`): not any word that starts with
+/// FORM, so a text like 'FORMULE' stays a text.
+fn is_format_word(v: Option<Value>) -> bool {
+    match v {
+        Some(Value::Mot(w)) => {
+            let w = w.trim();
+            w.len() >= 4 && "FORMAT".starts_with(w)
+        }
+        _ => false,
+    }
 }
 
 fn comm(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {

@@ -13,7 +13,7 @@ use std::rc::Rc;
 pub(crate) const OPS: &[OpDef] = &[OpDef {
     name: "ET",
     signature: "OBJ1 ET OBJ2 ('NOER')",
-    doc: "Logical and; union of meshes; assembly of rigidities; merge of fields; concatenation of lists and words (LISTCHPO ET CHPOINT|LISTCHPO appends).",
+    doc: "Logical and; union of meshes; assembly of rigidities; merge of fields; concatenation of lists and words (LISTCHPO ET CHPOINT|LISTCHPO appends); curves gathered into one EVOLUTIO.",
     example: "l = l1 et l2 ;",
     f: et,
 }];
@@ -30,6 +30,8 @@ fn et(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 
 pub(crate) fn union(it: &mut Interp, a: &Args, x: Value, y: Value, noer: bool) -> Result<Value> {
     use Value::*;
+    // `l = l ET l` in a loop doubles each pass: check before allocating.
+    super::limits::check_len(a, item_count(&x).saturating_add(item_count(&y)))?;
     Ok(match (&x, &y) {
         (Bool(p), Bool(q)) => Bool(*p && *q),
         (Mot(s), Mot(t)) => Value::mot(format!("{}{}", s, t)),
@@ -66,6 +68,10 @@ pub(crate) fn union(it: &mut Interp, a: &Args, x: Value, y: Value, noer: bool) -
         (ListChpo(l), ListChpo(m)) => ListChpo(Rc::new(l.iter().chain(m.iter()).cloned().collect())),
         (ListChpo(l), Chpo(c)) => ListChpo(Rc::new(l.iter().chain([c]).cloned().collect())),
         (Chpo(c), ListChpo(l)) => ListChpo(Rc::new([c].into_iter().chain(l.iter()).cloned().collect())),
+        // Curves gather into one multi-curve EVOLUTIO (what DESS draws).
+        (Evol(e), Evol(f)) => {
+            Evol(Rc::new(crate::value::Evolution { curves: e.curves.iter().chain(f.curves.iter()).cloned().collect() }))
+        }
         (Point(_) | Mesh(_), Point(_) | Mesh(_)) => {
             Mesh(Rc::new(as_mesh(&x).unwrap_or_default().union(&as_mesh(&y).unwrap_or_default())))
         }
@@ -74,6 +80,18 @@ pub(crate) fn union(it: &mut Interp, a: &Args, x: Value, y: Value, noer: bool) -
             None => return Err(a.err(format!("cannot join {} and {}", x.type_name(), y.type_name()))),
         },
     })
+}
+
+/// Items of a list or characters of a word (0 for other objects).
+fn item_count(v: &Value) -> usize {
+    match v {
+        Value::ListReel(l) => l.len(),
+        Value::ListEnti(l) => l.len(),
+        Value::ListMots(l) => l.len(),
+        Value::ListChpo(l) => l.len(),
+        Value::Mot(s) => s.len(),
+        _ => 0,
+    }
 }
 
 /// A POINT or a MAILLAGE as a mesh (a point is a POI1 element).
@@ -93,9 +111,12 @@ pub(crate) fn fields_union(_it: &mut Interp, a: &Args, x: &Value, y: &Value, noe
     }
 }
 
-/// `+ - * /` on FE objects.
-pub(crate) fn fields_binary(_it: &mut Interp, a: &Args, op: Bin, x: &Value, y: &Value) -> Result<Option<Value>> {
-    match super::fields::binary(op, x, y) {
+/// `+ - * /` on FE objects, curves and VECTEUR tables.
+pub(crate) fn fields_binary(it: &mut Interp, a: &Args, op: Bin, x: &Value, y: &Value) -> Result<Option<Value>> {
+    if let Some(r) = super::tables::binary(it, a, op, x, y) {
+        return r.map(Some);
+    }
+    match super::fields::binary(op, x, y).or_else(|| super::pointwise::binary(op, x, y)) {
         Some(r) => super::fields::to_err(a, r).map(Some),
         None => Ok(None),
     }

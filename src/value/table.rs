@@ -13,7 +13,19 @@ pub enum Key {
     Mot(String),
     Bool(bool),
     Point(usize),
-    Object(usize, &'static str),
+    Object(ObjectKey),
+}
+
+/// An object used as a key. It is held, not just its address: INDE gives
+/// the object back, and a freed address cannot be reused by another object
+/// while the key lives.
+#[derive(Debug, Clone)]
+pub struct ObjectKey(Value);
+
+impl PartialEq for ObjectKey {
+    fn eq(&self, other: &Self) -> bool {
+        identity(&self.0) == identity(&other.0) && self.0.ty() == other.0.ty()
+    }
 }
 
 impl Key {
@@ -24,7 +36,7 @@ impl Key {
             Value::Mot(s) => Key::Mot(s.trim_end().to_string()),
             Value::Bool(b) => Key::Bool(*b),
             Value::Point(p) => Key::Point(*p),
-            other => Key::Object(identity(other), other.ty().name()),
+            other => Key::Object(ObjectKey(other.clone())),
         }
     }
 
@@ -35,7 +47,7 @@ impl Key {
             Key::Mot(s) => Value::mot(s),
             Key::Bool(b) => Value::Bool(*b),
             Key::Point(p) => Value::Point(*p),
-            Key::Object(_, t) => Value::mot(format!("<{}>", t)),
+            Key::Object(o) => o.0.clone(),
         }
     }
 }

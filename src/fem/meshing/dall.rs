@@ -1,6 +1,7 @@
 //! DALL: a structured surface from four sides, by transfinite (Coons)
 //! interpolation.
 
+use super::grading::MAX_COUNT;
 use super::query::line_chain;
 use super::vec3::{add, dist, scale, sub, V3};
 use super::{check_nodes, fail, mesh_of, MeshError};
@@ -77,6 +78,11 @@ pub fn dall(nodes: &mut Nodes, sides: [&Mesh; 4], ty: ElemType) -> Result<Mesh, 
                 ),
             );
         }
+    }
+    // Each side is at most MAX_COUNT long, but the grid is their product.
+    let cells = (chains[0].len() - 1).saturating_mul(chains[1].len() - 1) / (per_elem * per_elem);
+    if cells > MAX_COUNT {
+        return fail(OP, format!("{cells} elements is more than the {MAX_COUNT} allowed"));
     }
     let grid = Grid::build(nodes, &chains, |i, j| !(ty == ElemType::Qua8 && i % 2 == 1 && j % 2 == 1));
     Ok(grid.elements(ty))

@@ -144,7 +144,7 @@ fn graded(n: usize, d1: f64, d2: f64) -> Vec<f64> {
 
 /// A count above this is surely a typo (or a density in the wrong unit);
 /// refusing it keeps memory safe.
-const MAX_COUNT: usize = 10_000_000;
+pub(crate) const MAX_COUNT: usize = 10_000_000;
 
 /// `round(∫_0^L ds / d(s))`, at least 1; `None` above [`MAX_COUNT`].
 fn count_from_densities(length: f64, d1: f64, d2: f64) -> Option<usize> {

@@ -21,7 +21,7 @@
 //!   when the base face's normal points against the sweep, the base is
 //!   listed reversed (`a d c b` / `a c b`) before the top face above it.
 
-use super::grading::{fractions, Spacing};
+use super::grading::{fractions, Spacing, MAX_COUNT};
 use super::vec3::{add, cross, dist, dot, lerp, norm, rotate, scale, sub, V3};
 use super::{check_nodes, fail, MeshError};
 use crate::fem::mesh::{ElemType, Mesh, Nodes};
@@ -161,6 +161,11 @@ fn sweep_to(
         return fail(op, "the mesh to sweep is empty");
     }
     let n = t.len() - 1;
+    // The layer count is capped alone; the result is layers times the input.
+    let total = n.saturating_mul(mesh.n_elements());
+    if total > MAX_COUNT {
+        return fail(op, format!("{total} elements is more than the {MAX_COUNT} allowed"));
+    }
     let origin: Vec<(V3, f64)> = list.iter().map(|&a| (nodes.get(a), nodes.density[a])).collect();
     let copy = |nodes: &mut Nodes, k: usize, s: f64| -> usize {
         let (a, (x, d)) = (list[k], origin[k]);

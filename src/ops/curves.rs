@@ -1,0 +1,152 @@
+//! Calculus on sampled curves: IPOL (linear interpolation, from an
+//! EVOLUTIO or from two lists) and INTG of an EVOLUTIO (trapezoidal
+//! integral, exact for the piecewise linear curve IPOL reads).
+
+use super::{pointwise, Args, FromArg, OpDef};
+use crate::error::Result;
+use crate::eval::Interp;
+use crate::value::model::Curve;
+use crate::value::{fmt_float, Evolution, Value};
+use std::rc::Rc;
+
+pub(crate) const OPS: &[OpDef] = &[
+    OpDef {
+        name: "IPOL",
+        signature: "IPOL X EVOLUTIO | IPOL X LISTREEL_X LISTREEL_Y   (X: NUM|LISTREEL|CHPOINT|MCHAML)",
+        doc: "Linear interpolation of a curve at X (value by value for lists and fields); the abscissae must be monotonic and X within them.",
+        example: "y = ipol 1.5 (prog 0. 1. 2.) (prog 0. 10. 40.) ;",
+        f: ipol,
+    },
+    OpDef {
+        name: "INTG",
+        signature: "INTG EVOLUTIO (N)",
+        doc: "Integral of curve N (1 by default) of an EVOLUTIO over its abscissae, by the trapezoidal rule.",
+        example: "s = intg (evol 'MANU' (prog 0. 1.) (prog 0. 2.)) ;",
+        f: intg,
+    },
+];
+
+/// What IPOL reads: numbers, lists, fields, curves.
+struct IpolArg(Value);
+impl FromArg for IpolArg {
+    const EXPECT: &'static str = "a number, a list, a field or an EVOLUTIO";
+    fn from_value(v: &Value) -> Option<Self> {
+        let ok = matches!(
+            v,
+            Value::Int(_)
+                | Value::Float(_)
+                | Value::ListReel(_)
+                | Value::ListEnti(_)
+                | Value::Chpo(_)
+                | Value::Mchaml(_)
+                | Value::Evol(_)
+        );
+        ok.then(|| IpolArg(v.clone()))
+    }
+}
+
+fn ipol(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    // Up to three operands, in the order written: X then the curve (one
+    // EVOLUTIO, or the abscissae and ordinates lists).
+    let mut vals: Vec<Value> = Vec::new();
+    while vals.len() < 3 {
+        let Some(v) = a.opt::<IpolArg>() else { break };
+        vals.push(v.0);
+        let has_curve = vals.iter().any(|v| matches!(v, Value::Evol(_)));
+        if has_curve && vals.len() == 2 {
+            break;
+        }
+    }
+    let (x, xs, ys) = match vals.iter().position(|v| matches!(v, Value::Evol(_))) {
+        Some(k) => {
+            let Value::Evol(e) = &vals[k] else { unreachable!() };
+            let c = single_curve(a, e)?;
+            let x = vals.iter().enumerate().find(|(i, _)| *i != k).map(|(_, v)| v.clone());
+            (x, c.x.clone(), c.y.clone())
+        }
+        None => {
+            let lists: Vec<(usize, Rc<Vec<f64>>)> = vals
+                .iter()
+                .enumerate()
+                .filter_map(|(i, v)| if let Value::ListReel(l) = v { Some((i, l.clone())) } else { None })
+                .collect();
+            if lists.len() < 2 {
+                return Err(a.missing("EVOLUTIO, or the LISTREELs of abscissae and ordinates"));
+            }
+            // Three lists: X is the first one written.
+            let (xs, ys) = (&lists[lists.len() - 2], &lists[lists.len() - 1]);
+            let x = vals.iter().enumerate().find(|(i, _)| *i != xs.0 && *i != ys.0).map(|(_, v)| v.clone());
+            (x, xs.1.to_vec(), ys.1.to_vec())
+        }
+    };
+    let x = x.ok_or_else(|| a.missing("the value to interpolate at"))?;
+    check_curve(a, &xs, &ys)?;
+    let (lo, hi) = (xs[0].min(xs[xs.len() - 1]), xs[0].max(xs[xs.len() - 1]));
+    let f = |t: f64| interpolate(&xs, &ys, t).unwrap_or(f64::NAN);
+    match pointwise::map_checked(&x, &f) {
+        Some(Ok(Value::Evol(_))) | None => Err(a.err(format!("cannot interpolate at a {}", x.type_name()))),
+        Some(Ok(r)) => Ok(vec![r]),
+        Some(Err(t)) => Err(a.err(format!(
+            "{} is outside the abscissae ({} to {}); IPOL does not extrapolate",
+            fmt_float(t),
+            fmt_float(lo),
+            fmt_float(hi)
+        ))),
+    }
+}
+
+/// The one curve of an EVOLUTIO that IPOL reads.
+fn single_curve<'e>(a: &Args, e: &'e Evolution) -> Result<&'e Curve> {
+    match e.curves.as_slice() {
+        [c] => Ok(c),
+        cs => Err(a.err(format!("the EVOLUTIO has {} curves: take one with EXTR ev 'COUR' n", cs.len()))),
+    }
+}
+
+/// Abscissae strictly increasing or strictly decreasing, one ordinate each.
+fn check_curve(a: &Args, xs: &[f64], ys: &[f64]) -> Result<()> {
+    if xs.len() != ys.len() {
+        return Err(a.err(format!("{} abscissae for {} ordinates", xs.len(), ys.len())));
+    }
+    if xs.is_empty() {
+        return Err(a.err("the curve is empty"));
+    }
+    let up = xs.windows(2).all(|w| w[1] > w[0]);
+    let down = xs.windows(2).all(|w| w[1] < w[0]);
+    if !(up || down) {
+        return Err(a.err("the abscissae must be strictly increasing or strictly decreasing"));
+    }
+    Ok(())
+}
+
+/// y(t) on the polyline (xs, ys); None outside [x_first, x_last].
+fn interpolate(xs: &[f64], ys: &[f64], t: f64) -> Option<f64> {
+    let n = xs.len();
+    if n == 1 {
+        return (t == xs[0]).then_some(ys[0]);
+    }
+    let up = xs[n - 1] > xs[0];
+    let key = |x: f64| if up { x } else { -x };
+    let (tk, first, last) = (key(t), key(xs[0]), key(xs[n - 1]));
+    if !(first..=last).contains(&tk) {
+        return None;
+    }
+    // First segment whose right end is at or past t.
+    let j = xs.partition_point(|x| key(*x) < tk).clamp(1, n - 1);
+    let (x0, x1, y0, y1) = (xs[j - 1], xs[j], ys[j - 1], ys[j]);
+    Some(y0 + (y1 - y0) * (t - x0) / (x1 - x0))
+}
+
+fn intg(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let Some(e) = a.opt::<Rc<Evolution>>() else {
+        return Err(a.missing("EVOLUTIO (INTG of an element field over a model is not implemented)"));
+    };
+    let n = a.opt::<i64>().unwrap_or(1);
+    let c = usize::try_from(n)
+        .ok()
+        .and_then(|i| i.checked_sub(1))
+        .and_then(|i| e.curves.get(i))
+        .ok_or_else(|| a.err(format!("curve {} does not exist (the object has {})", n, e.curves.len())))?;
+    let s: f64 = c.x.windows(2).zip(c.y.windows(2)).map(|(x, y)| (x[1] - x[0]) * (y[0] + y[1]) / 2.0).sum();
+    Ok(vec![Value::Float(s)])
+}
