@@ -22,8 +22,8 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "MOME",
-        signature: "MOME ('MZ' v …) | VECTOR  GEO",
-        doc: "Nodal moments.",
+        signature: "MOME ('MZ' v …) | VECTOR | FLOTTANT (2D: MZ)  GEO",
+        doc: "Nodal moments (in 2D a plain number is the moment MZ).",
         example: "m = mome 'MZ' 2. p1 ;",
         f: mome,
     },
@@ -83,6 +83,12 @@ fn loads(it: &mut Interp, a: &mut Args, vec_names: &[&'static str]) -> Result<Ve
     let mut comps: Vec<(String, f64)> = Vec::new();
     while let Some(w) = a.word_not_operator() {
         comps.push((w, a.req_num()?));
+    }
+    // In 2D a moment has one component: `MOME 5. p` is MZ = 5 (mome.notice).
+    if let ([single], true) = (vec_names, comps.is_empty()) {
+        if let Some(v) = a.opt_num() {
+            comps.push((single.to_string(), v));
+        }
     }
     let geo = if comps.is_empty() {
         let v = a.req::<PointId>()?;
