@@ -22,6 +22,7 @@ mod post;
 mod reso;
 pub mod solver_cache;
 mod superele;
+pub mod unimplemented;
 mod union;
 
 pub use args::{Args, FromArg, PointId};
@@ -147,6 +148,9 @@ pub fn op_key(word: &str) -> &str {
 #[derive(Debug, Clone, Default)]
 pub struct Registry {
     ops: HashMap<String, Rc<OpSpec>>,
+    /// Cast3M names gibi lacks: found like operators (so a deck that calls
+    /// one stops there, named), but not part of the manual.
+    missing: HashMap<String, Rc<OpSpec>>,
 }
 
 impl Registry {
@@ -175,6 +179,13 @@ impl Registry {
                 r.insert(OpSpec::from(d));
             }
         }
+        // After every family, so that a stub never hides an operator.
+        for d in unimplemented::ops() {
+            let key = op_key(d.name).to_string();
+            if !r.ops.contains_key(&key) {
+                r.missing.insert(key, Rc::new(OpSpec::from(&d)));
+            }
+        }
         r
     }
 
@@ -184,7 +195,8 @@ impl Registry {
 
     /// The operator a word names, by its first 4 letters.
     pub fn find(&self, word: &str) -> Option<Rc<OpSpec>> {
-        self.ops.get(op_key(word)).cloned()
+        let key = op_key(word);
+        self.ops.get(key).or_else(|| self.missing.get(key)).cloned()
     }
 
     /// Every operator, sorted by name.
