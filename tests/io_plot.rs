@@ -112,3 +112,14 @@ fn drawing_without_file_access_is_a_no_op_and_bad_calls_are_errors() {
     let e = gibi.run_str("e", "trac (coor 1 s) ;").unwrap_err().render();
     assert!(e.contains("needs the mesh it lives on"), "{}", e);
 }
+
+#[test]
+fn trac_draws_elements_in_their_colour() {
+    let dir = scratch("coul");
+    let mut gibi = session(&dir);
+    run(&mut gibi, "trac ((s coul roug) et ((s plus (3. 0.)) coul vert)) ;");
+    let svg = assert_svg(&dir.join("gibi_trac_1.svg"));
+    // ROUG and VERT as fem::colour draws them, one stroke per element.
+    assert_eq!(svg.matches("stroke=\"#DC0000\"").count(), 32, "red elements");
+    assert_eq!(svg.matches("stroke=\"#00A000\"").count(), 32, "green elements");
+}

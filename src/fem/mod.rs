@@ -7,6 +7,7 @@
 //! documented at the top of [`element`] and [`quadrature`].
 pub mod bar;
 pub mod beam;
+pub mod colour;
 pub mod element;
 pub mod loads;
 pub mod material;

@@ -66,7 +66,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef {
         name: "DEFO",
         signature: "DEFO GEO CHPOINT (SCALE) (COLOUR)",
-        doc: "The deformed mesh: nodes moved by SCALE times the displacement field (for TRAC).",
+        doc: "The deformed mesh: nodes moved by SCALE times the displacement field (for TRAC), in COLOUR if given.",
         example: "d = defo s u 100. ;",
         f: defo,
     },
@@ -240,9 +240,15 @@ fn defo(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let geo = req_geo(a)?;
     let u = a.req::<Rc<Chpoint>>()?;
     let scale = a.opt_num().unwrap_or(1.0);
-    // Colour words (ROUG, BLEU, …) only matter to plots.
-    a.word_not_operator();
-    Ok(vec![Value::Mesh(Rc::new(super::mesh::moved_by_field(it, &geo, &u, scale)))])
+    let moved = super::mesh::moved_by_field(it, &geo, &u, scale);
+    // A colour word colours the deformed mesh for TRAC; other words are
+    // options of Cast3M's graphics.
+    let colour = a.word_not_operator().and_then(|w| crate::fem::mesh::Colour::from_name(&w));
+    let moved = match colour {
+        Some(c) => moved.coloured(c),
+        None => moved,
+    };
+    Ok(vec![Value::Mesh(Rc::new(moved))])
 }
 
 fn resu(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {

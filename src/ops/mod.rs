@@ -6,6 +6,7 @@ mod args;
 mod arith;
 mod assemble;
 mod bc;
+mod colour;
 mod dofs;
 mod evol;
 mod export;
@@ -165,6 +166,7 @@ impl Registry {
             io::OPS,
             union::OPS,
             mesh::OPS,
+            colour::OPS,
             bc::OPS,
             model::OPS,
             manu::OPS,

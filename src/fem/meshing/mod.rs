@@ -89,5 +89,5 @@ pub(crate) fn check_node(op: &'static str, nodes: &Nodes, n: usize) -> Result<()
 /// Build a mesh from `(type, connectivity)` pairs, dropping empty parts and
 /// keeping the order given.
 pub(crate) fn mesh_of(parts: Vec<(ElemType, Vec<usize>)>) -> Mesh {
-    Mesh { parts: parts.into_iter().filter(|(_, c)| !c.is_empty()).map(|(ty, conn)| Part { ty, conn }).collect() }
+    Mesh { parts: parts.into_iter().filter(|(_, c)| !c.is_empty()).map(|(ty, conn)| Part::with(ty, conn)).collect() }
 }
