@@ -32,6 +32,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "DIFF", signature: "DIFF GEO1 GEO2", doc: "Symmetric difference of two meshes.", example: "d = diff s1 s2 ;", f: diff },
     OpDef { name: "PLUS", signature: "OBJ PLUS VECTOR | GEO PLUS CHPOINT", doc: "A translated copy (geometric, not arithmetic), or the mesh moved by a displacement field.", example: "l2 = l plus (0. 1.) ;", f: plus },
     OpDef { name: "MOIN", signature: "OBJ MOIN VECTOR", doc: "A copy translated by minus the vector.", example: "l2 = l moin (0. 1.) ;", f: moin },
+    OpDef { name: "SYME", signature: "POINT|MAILLAGE SYME ('DROIT' P1 P2 | 'PLAN' P1 P2 P3 | 'POINT' P)", doc: "Mirror image on new nodes: about a line (2D; in 3D the half-turn about it), a plane (3D) or a point. Surfaces and volumes keep their orientation.", example: "s2 = s1 syme 'DROIT' p1 p2 ;", f: syme },
     OpDef { name: "INVE", signature: "INVE GEO", doc: "Reverse the orientation of a mesh.", example: "l2 = inve l ;", f: inve },
     OpDef { name: "SURF", signature: "SURF LINE ('PLAN')", doc: "Free meshing — not available in gibi: use DALL, TRAN or ROTA, or import a Gmsh mesh.", example: "s = dall bas dro hau gau ;", f: surf },
 ];
@@ -339,6 +340,42 @@ fn plus(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 
 fn moin(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     translate(it, a, -1.0)
+}
+
+fn syme(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    // The object is the operand before SYME (`s2 = s1 syme …`), else the
+    // first value after it, else what follows the symmetry element.
+    let mut obj = a.left_value();
+    if obj.is_none() && a.peek_right().is_some_and(|v| matches!(v, Value::Point(_) | Value::Mesh(_))) {
+        obj = a.right_any();
+    }
+    let mirror = match a.req_keyword(&["DROIT", "PLAN", "POINT"])? {
+        "DROIT" => {
+            let p1 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
+            mg::Mirror::Line(p1, vector(it, a).ok_or_else(|| a.missing("POINT"))?)
+        }
+        "PLAN" => {
+            let p1 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
+            let p2 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
+            mg::Mirror::Plane(p1, p2, vector(it, a).ok_or_else(|| a.missing("POINT"))?)
+        }
+        _ => mg::Mirror::Point(vector(it, a).ok_or_else(|| a.missing("POINT"))?),
+    };
+    let obj = match obj {
+        Some(v) => v,
+        None => a.right_any().ok_or_else(|| a.missing("POINT or MAILLAGE"))?,
+    };
+    let dim = it.opts.dime.max(2);
+    match obj {
+        Value::Point(p) => {
+            mirror.check(dim)?;
+            let x = mirror.image(it.nodes.get(p));
+            let d = it.nodes.density[p];
+            Ok(vec![Value::Point(it.nodes.push(x, d))])
+        }
+        Value::Mesh(m) => Ok(mesh_val(mg::syme(&mut it.nodes, &m, mirror, dim)?)),
+        other => Err(a.err(format!("cannot take the symmetric of a {}", other.type_name()))),
+    }
 }
 
 fn inve(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {

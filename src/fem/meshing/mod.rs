@@ -25,6 +25,7 @@ pub mod grading;
 pub mod line;
 pub mod query;
 pub mod sweep;
+pub mod symmetry;
 mod vec3;
 
 #[cfg(test)]
@@ -41,6 +42,7 @@ pub use query::{
     line_chain, nbel, nbel_of_type, nbno, poin_droit, poin_final, poin_init, poin_nth, poin_plan, poin_proc,
 };
 pub use sweep::{rota, tran, volu};
+pub use symmetry::{syme, Mirror};
 
 use crate::fem::mesh::{ElemType, Mesh, Nodes, Part};
 
