@@ -23,9 +23,10 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "DALL", signature: "DALL LINE1 LINE2 LINE3 LINE4 ('PLAN')", doc: "A structured surface (OPTI ELEM QUA4, TRI3, QUA8, TRI6) from four sides forming a closed contour.", example: "s = dall bas dro hau gau ;", f: dall },
     OpDef { name: "TRAN", signature: "GEO TRAN (n) ('DINI' d1) ('DFIN' d2) VECTOR", doc: "Sweep a line into a surface or a surface into a volume along a vector.", example: "s = l tran 4 (0. 1.) ;", f: tran },
     OpDef { name: "ROTA", signature: "GEO ROTA (n) ANGLE CENTRE (AXIS_POINT)", doc: "Sweep by rotation (angle in degrees) about a point (2D) or an axis (3D).", example: "s = l rota 8 90. o ;", f: rota },
-    OpDef { name: "VOLU", signature: "VOLU (n) SURF1 SURF2", doc: "Volume between two compatible surfaces.", example: "v = volu 3 s1 s2 ;", f: volu },
+    OpDef { name: "VOLU", signature: "VOLU (n) SURF1 SURF2 | VOLU (n) SURF 'TRAN' VECTOR | VOLU (n) SURF 'ROTA' ANGLE P1 (P2)", doc: "Volume between two compatible surfaces, or swept from a surface by a translation or a rotation (as TRAN and ROTA).", example: "v = volu 3 s1 s2 ;", f: volu },
     OpDef { name: "ELEM", signature: "GEO ELEM TYPE | GEO ELEM n|LISTENTI | GEO ELEM 'APPU' ('STRI'|'LARG') GEO2", doc: "Elements of a mesh by type, by number, or resting on another mesh.", example: "q = s elem qua4 ;", f: elem },
     OpDef { name: "COTE", signature: "COTE n SURFACE", doc: "Side n of a structured (DALL/TRAN) surface.", example: "b = cote 1 s ;", f: cote },
+    OpDef { name: "FACE", signature: "FACE n VOLUME", doc: "Face n of a volume made by VOLU, TRAN or ROTA: 1 the base, 2 the opposite face, 3 the lateral surface.", example: "haut = face 2 v ;", f: face },
     OpDef { name: "CONT", signature: "CONT GEO", doc: "Contour: boundary edges of a surface, end points of a line.", example: "c = cont s ;", f: cont },
     OpDef { name: "ELIM", signature: "ELIM (crit) GEO", doc: "Merge nodes closer than crit, in every object.", example: "elim 1.e-5 l ;", f: elim },
     OpDef { name: "INTE", signature: "GEO1 INTE GEO2", doc: "Elements common to two meshes.", example: "c = s1 inte s2 ;", f: inte },
@@ -225,11 +226,52 @@ fn rota(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     Ok(mesh_val(mg::rota(&mut it.nodes, &geo, &sp, angle, c, axis)?))
 }
 
+/// `VOLU (n) S1 S2`, or the sweeps of volu.notice written with VOLU:
+/// `VOLU (n) S 'TRAN' VEC` and `VOLU (n) S 'ROTA' angle P1 (P2)`, the
+/// count and the surface on either side of the keyword.
 fn volu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let sp = spacing(a)?;
-    let s1 = a.req::<Rc<Mesh>>()?;
-    let s2 = a.req::<Rc<Mesh>>()?;
-    Ok(mesh_val(mg::volu(&mut it.nodes, &s1, &s2, &sp)?))
+    let mut sp = spacing(a)?;
+    let mut s1 = a.opt::<Rc<Mesh>>();
+    merge(&mut sp, spacing(a)?);
+    match a.keyword(&["TRAN", "ROTA"]) {
+        Some("TRAN") => {
+            merge(&mut sp, spacing(a)?);
+            let v = vector(it, a).ok_or_else(|| a.missing("a vector (POINT)"))?;
+            merge(&mut sp, spacing(a)?);
+            let s = match s1.take() {
+                Some(s) => s,
+                None => a.req::<Rc<Mesh>>()?,
+            };
+            Ok(mesh_val(mg::tran(&mut it.nodes, &s, &sp, v)?))
+        }
+        Some(_) => {
+            merge(&mut sp, spacing(a)?);
+            let angle = a.req_num()?;
+            let c = vector(it, a).ok_or_else(|| a.missing("the centre (POINT)"))?;
+            let axis = vector(it, a);
+            merge(&mut sp, spacing(a)?);
+            let s = match s1.take() {
+                Some(s) => s,
+                None => a.req::<Rc<Mesh>>()?,
+            };
+            Ok(mesh_val(mg::rota(&mut it.nodes, &s, &sp, angle, c, axis)?))
+        }
+        None => {
+            let s1 = match s1 {
+                Some(s) => s,
+                None => a.req::<Rc<Mesh>>()?,
+            };
+            let s2 = a.req::<Rc<Mesh>>()?;
+            merge(&mut sp, spacing(a)?);
+            Ok(mesh_val(mg::volu(&mut it.nodes, &s1, &s2, &sp)?))
+        }
+    }
+}
+
+fn face(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let n = a.req::<i64>()?;
+    let v = a.req::<Rc<Mesh>>()?;
+    Ok(mesh_val(mg::face(&v, n)?))
 }
 
 fn elem(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {

@@ -35,7 +35,7 @@ pub use dall::dall;
 pub use edit::{
     change_to_linear, change_to_poi1, change_to_quadratic, diff, elim, inte, inve, manu, translate_copy, NodeMap,
 };
-pub use extract::{cont, cote, elem_appui, elem_numbers, elem_type};
+pub use extract::{cont, cote, elem_appui, elem_numbers, elem_type, face};
 pub use grading::Spacing;
 pub use line::{cerc, droi, droi_extend, line_type};
 pub use query::{
