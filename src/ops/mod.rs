@@ -12,6 +12,7 @@ mod evol;
 mod export;
 mod fieldfn;
 mod fields;
+mod integrate;
 mod io;
 mod lists;
 mod manu;
@@ -173,6 +174,7 @@ impl Registry {
             fields::OPS,
             reso::OPS,
             post::OPS,
+            integrate::OPS,
             superele::OPS,
             export::OPS,
             evol::OPS,
