@@ -48,13 +48,6 @@ pub(crate) const OPS: &[OpDef] = &[
         example: "u2 = enle u 'LX' ;",
         f: enle,
     },
-    OpDef {
-        name: "REDU",
-        signature: "REDU CHPOINT GEO",
-        doc: "Restrict a field to the nodes of a mesh or point.",
-        example: "u2 = redu u l ;",
-        f: redu,
-    },
     OpDef { name: "XTX", signature: "XTX CHPOINT", doc: "Squared norm of a field.", example: "n = xtx r ;", f: xtx },
     OpDef {
         name: "SOMT",
@@ -211,14 +204,6 @@ fn enle(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let ch = a.req_find::<Rc<Chpoint>>()?;
     let comps = comp_list(a).ok_or_else(|| a.missing("components to remove"))?;
     let out = Chpoint::from_entries(ch.nature, ch.entries().filter(|(_, c, _)| !comps.iter().any(|x| x == c)));
-    Ok(vec![Value::Chpo(Rc::new(out))])
-}
-
-fn redu(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let ch = a.req::<Rc<Chpoint>>()?;
-    let geo = req_geo(a)?;
-    let keep: std::collections::HashSet<usize> = geo.node_list().into_iter().collect();
-    let out = Chpoint::from_entries(ch.nature, ch.entries().filter(|(n, _, _)| keep.contains(n)));
     Ok(vec![Value::Chpo(Rc::new(out))])
 }
 

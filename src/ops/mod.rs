@@ -22,6 +22,7 @@ mod model;
 mod objects;
 mod post;
 mod reso;
+mod restrict;
 pub mod solver_cache;
 mod superele;
 pub mod unimplemented;
@@ -172,6 +173,7 @@ impl Registry {
             model::OPS,
             manu::OPS,
             fields::OPS,
+            restrict::OPS,
             reso::OPS,
             post::OPS,
             integrate::OPS,
