@@ -119,13 +119,22 @@ impl Nodes {
 
 /// Elements of one geometry and one colour, connectivity stored flat
 /// (`conn[e * ty.nodes() + k]` is node k of element e).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct Part {
     pub ty: ElemType,
     pub conn: Vec<usize>,
     /// The colour of these elements (COUL); operators that build new
     /// elements give the default colour, those that copy elements keep it.
     pub colour: Colour,
+}
+
+/// The same elements are the same part whatever their colour: a model
+/// finds its material by its mesh, and colouring a mesh for a picture
+/// must not change the mechanics.
+impl PartialEq for Part {
+    fn eq(&self, other: &Part) -> bool {
+        self.ty == other.ty && self.conn == other.conn
+    }
 }
 
 impl Part {
