@@ -306,9 +306,11 @@ fn cont(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 /// ELIM works in place in Cast3M: every object holding a merged node sees
 /// the kept one. We rewrite every mesh and point in the store.
 fn elim(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    // The tolerance may come before or after the mesh (`ELIM 1.e-3 s`,
+    // `ELIM s 1.e-3`).
     let tol = a.opt_num();
     let m = req_geo(a)?;
-    let tol = tol.unwrap_or(1e-6);
+    let tol = tol.or_else(|| a.opt_num()).unwrap_or(1e-6);
     let (merged, map) = mg::elim(&it.nodes, &m, tol)?;
     if !map.is_empty() {
         for f in it.store.frames.iter_mut() {
