@@ -166,7 +166,8 @@ fn mchaml_to_model(a: &Args, m: &Mchaml, mo: &Model) -> Result<Mchaml> {
                     if z.comps != src.comps || z.at_nodes != src.at_nodes {
                         return Err(a.err("the field's zones under one zone of the model have different components"));
                     }
-                    z.values.push(src.values[ze].clone());
+                    let v = src.values.get(ze).ok_or_else(|| a.err("the field has fewer values than elements"))?;
+                    z.values.push(v.clone());
                     covered[e] = true;
                 } else if !valued.is_empty() {
                     return Err(a.err(format!(
