@@ -125,3 +125,14 @@ fn dess_of_curves_joined_with_et() {
     let svg = assert_svg(&dir.join("gibi_trac_1.svg"));
     assert!(svg.contains("first") && svg.contains("second"), "both legends are drawn");
 }
+
+#[test]
+fn trac_draws_elements_in_their_colour() {
+    let dir = scratch("coul");
+    let mut gibi = session(&dir);
+    run(&mut gibi, "trac ((s coul roug) et ((s plus (3. 0.)) coul vert)) ;");
+    let svg = assert_svg(&dir.join("gibi_trac_1.svg"));
+    // ROUG and VERT as fem::colour draws them, one stroke per element.
+    assert_eq!(svg.matches("stroke=\"#DC0000\"").count(), 32, "red elements");
+    assert_eq!(svg.matches("stroke=\"#00A000\"").count(), 32, "green elements");
+}

@@ -90,3 +90,14 @@ pub fn stress(mode: Mode, x: &[[f64; 3]], m: &Material, u: &[f64]) -> Result<Gau
     let n = ea * epss(mode, x, u)?;
     Ok(GaussField { comps: vec!["EFFX"], values: vec![vec![n]; 2] })
 }
+
+/// Nodal forces of the normal force EFFX at both ends: `-N e` and `+N e`.
+pub fn internal_forces(mode: Mode, x: &[[f64; 3]], sig: &GaussField) -> Result<Vec<f64>, FemError> {
+    let (nc, e, _) = axis(mode, x)?;
+    if sig.values.len() != 2 {
+        return Err(FemError::WrongPointCount { elem: "BARR", expected: 2, got: sig.values.len() });
+    }
+    let n = |k: usize| sig.get("EFFX", k).ok_or(FemError::MissingComponent { comp: "EFFX", elem: "BARR" });
+    let (n0, n1) = (n(0)?, n(1)?);
+    Ok((0..nc).map(|i| -n0 * e[i]).chain((0..nc).map(|i| n1 * e[i])).collect())
+}

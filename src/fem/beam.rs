@@ -347,3 +347,35 @@ pub fn strain(timo: bool, mode: Mode, x: &[[f64; 3]], m: &Material, u: &[f64]) -
         }
     })
 }
+
+/// Nodal forces of the section resultants at both ends (the inverse of
+/// [`stress`]): in local axes −R at node 1 and +R at node 2, then turned
+/// to global axes.
+pub fn internal_forces(
+    timo: bool,
+    mode: Mode,
+    x: &[[f64; 3]],
+    m: &Material,
+    sig: &GaussField,
+) -> Result<Vec<f64>, FemError> {
+    let names = dofs(mode)?;
+    let elem = elem_name(timo);
+    let d3 = mode == Mode::Trid;
+    if sig.values.len() != 2 {
+        return Err(FemError::WrongPointCount { elem, expected: 2, got: sig.values.len() });
+    }
+    let f = frame(elem, mode, x, m, d3)?;
+    const COMPS: [&str; 6] = ["EFFX", "EFFY", "EFFZ", "MOMX", "MOMY", "MOMZ"];
+    let nb = names.len();
+    let n = 2 * nb;
+    let mut fl = vec![0.0; n];
+    for (c, slot) in layout(d3).iter().enumerate() {
+        if let Some(s) = slot {
+            let r = |k: usize| sig.get(COMPS[c], k).ok_or(FemError::MissingComponent { comp: COMPS[c], elem });
+            fl[*s] = -r(0)?;
+            fl[nb + *s] = r(1)?;
+        }
+    }
+    let t = transform(n, &f, d3);
+    Ok((0..n).map(|j| (0..n).map(|i| t[i * n + j] * fl[i]).sum()).collect())
+}

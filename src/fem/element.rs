@@ -76,6 +76,10 @@ pub enum FemError {
     WrongNodeCount { elem: &'static str, expected: usize, got: usize },
     #[error("{elem} element has {expected} dofs, got {got} values")]
     WrongDofCount { elem: &'static str, expected: usize, got: usize },
+    #[error("{elem} element: the field has values at {got} points, the element's stresses at {expected}")]
+    WrongPointCount { elem: &'static str, expected: usize, got: usize },
+    #[error("{elem} element: the field has no component {comp}")]
+    MissingComponent { comp: &'static str, elem: &'static str },
 }
 
 /// An elementary matrix over the element's dofs, row-major.
@@ -220,6 +224,25 @@ pub fn strain(
         Formulation::Pout => beam::strain(false, mode, x, m, u),
         Formulation::Timo => beam::strain(true, mode, x, m, u),
         Formulation::Solid | Formulation::Q4ri => solid::field(f, ty, mode, x, m, u, false),
+    }
+}
+
+/// Nodal forces equivalent to a stress field given at the points of
+/// [`gauss_points`] (BSIG), in [`ElemMatrix`] dof order: the internal
+/// forces, K u for the stresses of a displacement u.
+pub fn internal_forces(
+    f: Formulation,
+    ty: ElemType,
+    mode: Mode,
+    x: &[[f64; 3]],
+    m: &Material,
+    sig: &GaussField,
+) -> Result<Vec<f64>, FemError> {
+    check(f, ty, mode)?;
+    match f {
+        Formulation::Barr => bar::internal_forces(mode, x, sig),
+        Formulation::Pout | Formulation::Timo => beam::internal_forces(f == Formulation::Timo, mode, x, m, sig),
+        Formulation::Solid | Formulation::Q4ri => solid::internal_forces(f, ty, mode, x, m, sig),
     }
 }
 

@@ -6,6 +6,9 @@
 //! unknowns of a structure. We keep the same model: [`Nodes`] is the table
 //! (owned by the interpreter's store), [`Mesh`] holds connectivity only.
 
+pub use super::colour::Colour;
+use std::collections::HashSet;
+
 /// Element geometries known to the mesher and the element library.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum ElemType {
@@ -114,17 +117,34 @@ impl Nodes {
     }
 }
 
-/// Elements of one geometry, connectivity stored flat
+/// Elements of one geometry and one colour, connectivity stored flat
 /// (`conn[e * ty.nodes() + k]` is node k of element e).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct Part {
     pub ty: ElemType,
     pub conn: Vec<usize>,
+    /// The colour of these elements (COUL); operators that build new
+    /// elements give the default colour, those that copy elements keep it.
+    pub colour: Colour,
+}
+
+/// The same elements are the same part whatever their colour: a model
+/// finds its material by its mesh, and colouring a mesh for a picture
+/// must not change the mechanics.
+impl PartialEq for Part {
+    fn eq(&self, other: &Part) -> bool {
+        self.ty == other.ty && self.conn == other.conn
+    }
 }
 
 impl Part {
     pub fn new(ty: ElemType) -> Self {
-        Part { ty, conn: Vec::new() }
+        Part::with(ty, Vec::new())
+    }
+
+    /// A part of the default colour.
+    pub fn with(ty: ElemType, conn: Vec<usize>) -> Self {
+        Part { ty, conn, colour: Colour::default() }
     }
 
     pub fn len(&self) -> usize {
@@ -160,7 +180,7 @@ impl Mesh {
 
     /// A POI1 mesh of the given nodes.
     pub fn points(nodes: &[usize]) -> Self {
-        Mesh::single(Part { ty: ElemType::Poi1, conn: nodes.to_vec() })
+        Mesh::single(Part::with(ElemType::Poi1, nodes.to_vec()))
     }
 
     pub fn n_elements(&self) -> usize {
@@ -169,7 +189,7 @@ impl Mesh {
 
     /// Distinct nodes in order of first appearance.
     pub fn node_list(&self) -> Vec<usize> {
-        let mut seen = std::collections::HashSet::new();
+        let mut seen = HashSet::new();
         let mut out = Vec::new();
         for p in &self.parts {
             for &n in &p.conn {
@@ -181,25 +201,38 @@ impl Mesh {
         out
     }
 
-    /// Union (Cast3M `ET`): parts of the same type are concatenated and
-    /// elements already present (same type, same nodes in the same order)
-    /// are not repeated.
+    /// Union (Cast3M `ET`): elements of the same type and colour are
+    /// concatenated and elements already present (same type, same nodes
+    /// in the same order, whatever their colour) are not repeated. A new
+    /// colour of an existing type starts a part right after that type's
+    /// last part, so elements are numbered as in Cast3M, where colours are
+    /// kept per element.
     pub fn union(&self, other: &Mesh) -> Mesh {
         let mut out = self.clone();
         for p in &other.parts {
-            match out.parts.iter_mut().find(|q| q.ty == p.ty) {
-                Some(q) => {
-                    let n = p.ty.nodes();
-                    let existing: std::collections::HashSet<Vec<usize>> =
-                        q.conn.chunks(n).map(|c| c.to_vec()).collect();
-                    for e in p.conn.chunks(n) {
-                        if !existing.contains(e) {
-                            q.conn.extend_from_slice(e);
-                        }
-                    }
-                }
-                None => out.parts.push(p.clone()),
+            let n = p.ty.nodes();
+            let last = out.parts.iter().rposition(|q| q.ty == p.ty);
+            let Some(last) = last else {
+                out.parts.push(p.clone());
+                continue;
+            };
+            let existing: HashSet<&[usize]> =
+                out.parts.iter().filter(|q| q.ty == p.ty).flat_map(|q| q.conn.chunks(n)).collect();
+            let new: Vec<usize> = p.conn.chunks(n).filter(|e| !existing.contains(e)).flatten().copied().collect();
+            match out.parts.iter_mut().find(|q| q.ty == p.ty && q.colour == p.colour) {
+                Some(q) => q.conn.extend(new),
+                None if !new.is_empty() => out.parts.insert(last + 1, Part { ty: p.ty, conn: new, colour: p.colour }),
+                None => {}
             }
+        }
+        out
+    }
+
+    /// The same elements in one colour (COUL).
+    pub fn coloured(&self, colour: Colour) -> Mesh {
+        let mut out = Mesh::default();
+        for p in &self.parts {
+            out = out.union(&Mesh::single(Part { colour, ..p.clone() }));
         }
         out
     }
@@ -211,10 +244,30 @@ mod tests {
 
     #[test]
     fn union_keeps_shared_nodes_and_drops_repeated_elements() {
-        let a = Mesh::single(Part { ty: ElemType::Seg2, conn: vec![0, 1] });
-        let b = Mesh::single(Part { ty: ElemType::Seg2, conn: vec![1, 2, 0, 1] });
+        let a = Mesh::single(Part::with(ElemType::Seg2, vec![0, 1]));
+        let b = Mesh::single(Part::with(ElemType::Seg2, vec![1, 2, 0, 1]));
         let u = a.union(&b);
         assert_eq!(u.n_elements(), 2);
         assert_eq!(u.node_list(), vec![0, 1, 2]);
+    }
+
+    #[test]
+    fn union_keeps_colours_apart_in_element_order() {
+        let red = Colour::from_name("ROUG").unwrap();
+        let a = Mesh::single(Part::with(ElemType::Seg2, vec![0, 1]));
+        let b = Mesh::single(Part::with(ElemType::Poi1, vec![5]));
+        let c = Mesh::single(Part::with(ElemType::Seg2, vec![1, 2, 0, 1])).coloured(red);
+        let u = a.union(&b).union(&c);
+        let tys: Vec<_> = u.parts.iter().map(|p| (p.ty, p.colour.name(), p.conn.clone())).collect();
+        assert_eq!(
+            tys,
+            vec![
+                (ElemType::Seg2, "DEFA", vec![0, 1]),
+                (ElemType::Seg2, "ROUG", vec![1, 2]),
+                (ElemType::Poi1, "DEFA", vec![5])
+            ]
+        );
+        // Colouring merges the parts of one type again.
+        assert_eq!(u.coloured(red).parts.len(), 2);
     }
 }

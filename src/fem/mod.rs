@@ -7,7 +7,9 @@
 //! documented at the top of [`element`] and [`quadrature`].
 pub mod bar;
 pub mod beam;
+pub mod colour;
 pub mod element;
+pub mod integrate;
 pub mod loads;
 pub mod material;
 pub mod quadrature;
@@ -19,6 +21,8 @@ pub mod stress;
 mod test_support;
 #[cfg(test)]
 mod tests_beam;
+#[cfg(test)]
+mod tests_integrate;
 #[cfg(test)]
 mod tests_patch;
 #[cfg(test)]

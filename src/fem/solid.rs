@@ -369,3 +369,60 @@ pub fn field(
     let comps = if stress { stress_comps(mode) } else { strain_comps(mode) };
     Ok(GaussField { comps, values })
 }
+
+/// Integration weights (w·|J|·thickness, ·r in AXIS) of the points of
+/// [`rule`], where [`field`] gives stresses and strains.
+pub fn point_weights(
+    f: Formulation,
+    ty: ElemType,
+    mode: Mode,
+    x: &[[f64; 3]],
+    m: &Material,
+) -> Result<Vec<f64>, FemError> {
+    let t = m.thickness(mode, ty.name())?;
+    Ok(points(ty, mode, x, &rule(f, ty), t)?.into_iter().map(|p| p.w).collect())
+}
+
+/// `∫ N_i` over the element for each node (with thickness, ·r in AXIS).
+pub fn node_weights(ty: ElemType, mode: Mode, x: &[[f64; 3]], m: &Material) -> Result<Vec<f64>, FemError> {
+    let t = m.thickness(mode, ty.name())?;
+    let mut w = vec![0.0; ty.nodes()];
+    for p in points(ty, mode, x, &mass_rule(ty), t)? {
+        for (wi, ni) in w.iter_mut().zip(&p.n) {
+            *wi += ni * p.w;
+        }
+    }
+    Ok(w)
+}
+
+/// Nodal forces of a stress field (BSIG): `Σ_k B_kᵀ σ_k w_k` over the
+/// points of [`rule`], in [`ElemMatrix`] dof order. For the stresses of a
+/// displacement u this is K u.
+pub fn internal_forces(
+    f: Formulation,
+    ty: ElemType,
+    mode: Mode,
+    x: &[[f64; 3]],
+    m: &Material,
+    sig: &GaussField,
+) -> Result<Vec<f64>, FemError> {
+    let t = m.thickness(mode, ty.name())?;
+    let pts = points(ty, mode, x, &rule(f, ty), t)?;
+    if sig.values.len() != pts.len() {
+        return Err(FemError::WrongPointCount { elem: ty.name(), expected: pts.len(), got: sig.values.len() });
+    }
+    let comps = stress_comps(mode);
+    if let Some(c) = comps.iter().find(|c| !sig.comps.contains(c)) {
+        return Err(FemError::MissingComponent { comp: c, elem: ty.name() });
+    }
+    let mut out = vec![0.0; ty.nodes() * dofs(mode).len()];
+    for (k, p) in pts.iter().enumerate() {
+        let s: Vec<f64> = comps.iter().map(|c| sig.get(c, k).unwrap_or(0.0)).collect();
+        for (row, sv) in bmat(mode, p).iter().zip(&s) {
+            for (o, b) in out.iter_mut().zip(row) {
+                *o += b * sv * p.w;
+            }
+        }
+    }
+    Ok(out)
+}

@@ -60,7 +60,7 @@ fn to_mesh<'a>(elems: impl Iterator<Item = &'a Element>) -> Mesh {
     for e in elems {
         match m.parts.iter_mut().find(|p| p.ty == e.ty) {
             Some(p) => p.conn.extend_from_slice(&e.nodes),
-            None => m.parts.push(Part { ty: e.ty, conn: e.nodes.clone() }),
+            None => m.parts.push(Part::with(e.ty, e.nodes.clone())),
         }
     }
     m

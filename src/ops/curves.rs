@@ -1,6 +1,7 @@
 //! Calculus on sampled curves: IPOL (linear interpolation, from an
 //! EVOLUTIO or from two lists) and INTG of an EVOLUTIO (trapezoidal
-//! integral, exact for the piecewise linear curve IPOL reads).
+//! integral, exact for the piecewise linear curve IPOL reads; the INTG
+//! entry itself is in `integrate.rs`, with the field integrals).
 
 use super::{pointwise, Args, FromArg, OpDef};
 use crate::error::Result;
@@ -16,13 +17,6 @@ pub(crate) const OPS: &[OpDef] = &[
         doc: "Linear interpolation of a curve at X (value by value for lists and fields); the abscissae must be monotonic and X within them.",
         example: "y = ipol 1.5 (prog 0. 1. 2.) (prog 0. 10. 40.) ;",
         f: ipol,
-    },
-    OpDef {
-        name: "INTG",
-        signature: "INTG EVOLUTIO (N)",
-        doc: "Integral of curve N (1 by default) of an EVOLUTIO over its abscissae, by the trapezoidal rule.",
-        example: "s = intg (evol 'MANU' (prog 0. 1.) (prog 0. 2.)) ;",
-        f: intg,
     },
 ];
 
@@ -137,10 +131,8 @@ fn interpolate(xs: &[f64], ys: &[f64], t: f64) -> Option<f64> {
     Some(y0 + (y1 - y0) * (t - x0) / (x1 - x0))
 }
 
-fn intg(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let Some(e) = a.opt::<Rc<Evolution>>() else {
-        return Err(a.missing("EVOLUTIO (INTG of an element field over a model is not implemented)"));
-    };
+/// INTG of a curve (the INTG entry, in `integrate.rs`, dispatches here).
+pub(crate) fn intg_curve(a: &mut Args, e: Rc<Evolution>) -> Result<Vec<Value>> {
     let n = a.opt::<i64>().unwrap_or(1);
     let c = usize::try_from(n)
         .ok()

@@ -22,8 +22,8 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "MOME",
-        signature: "MOME ('MZ' v …) | VECTOR  GEO",
-        doc: "Nodal moments.",
+        signature: "MOME ('MZ' v …) | VECTOR | FLOTTANT (2D: MZ)  GEO",
+        doc: "Nodal moments (in 2D a plain number is the moment MZ).",
         example: "m = mome 'MZ' 2. p1 ;",
         f: mome,
     },
@@ -49,13 +49,6 @@ pub(crate) const OPS: &[OpDef] = &[
         example: "u2 = enle u 'LX' ;",
         f: enle,
     },
-    OpDef {
-        name: "REDU",
-        signature: "REDU CHPOINT GEO",
-        doc: "Restrict a field to the nodes of a mesh or point.",
-        example: "u2 = redu u l ;",
-        f: redu,
-    },
     OpDef { name: "XTX", signature: "XTX CHPOINT", doc: "Squared norm of a field.", example: "n = xtx r ;", f: xtx },
     OpDef {
         name: "SOMT",
@@ -67,7 +60,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef {
         name: "DEFO",
         signature: "DEFO GEO CHPOINT (SCALE) (COLOUR)",
-        doc: "The deformed mesh: nodes moved by SCALE times the displacement field (for TRAC).",
+        doc: "The deformed mesh: nodes moved by SCALE times the displacement field (for TRAC), in COLOUR if given.",
         example: "d = defo s u 100. ;",
         f: defo,
     },
@@ -84,6 +77,12 @@ fn loads(it: &mut Interp, a: &mut Args, vec_names: &[&'static str]) -> Result<Ve
     let mut comps: Vec<(String, f64)> = Vec::new();
     while let Some(w) = a.word_not_operator() {
         comps.push((w, a.req_num()?));
+    }
+    // In 2D a moment has one component: `MOME 5. p` is MZ = 5 (mome.notice).
+    if let ([single], true) = (vec_names, comps.is_empty()) {
+        if let Some(v) = a.opt_num() {
+            comps.push((single.to_string(), v));
+        }
     }
     let geo = if comps.is_empty() {
         let v = a.req::<PointId>()?;
@@ -217,14 +216,6 @@ fn enle(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     Ok(vec![Value::Chpo(Rc::new(out))])
 }
 
-fn redu(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let ch = a.req::<Rc<Chpoint>>()?;
-    let geo = req_geo(a)?;
-    let keep: std::collections::HashSet<usize> = geo.node_list().into_iter().collect();
-    let out = Chpoint::from_entries(ch.nature, ch.entries().filter(|(n, _, _)| keep.contains(n)));
-    Ok(vec![Value::Chpo(Rc::new(out))])
-}
-
 fn xtx(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let ch = a.req::<Rc<Chpoint>>()?;
     Ok(vec![Value::Float(ch.entries().map(|(_, _, v)| v * v).sum())])
@@ -243,9 +234,15 @@ fn defo(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let geo = req_geo(a)?;
     let u = a.req::<Rc<Chpoint>>()?;
     let scale = a.opt_num().unwrap_or(1.0);
-    // Colour words (ROUG, BLEU, …) only matter to plots.
-    a.word_not_operator();
-    Ok(vec![Value::Mesh(Rc::new(super::mesh::moved_by_field(it, &geo, &u, scale)))])
+    let moved = super::mesh::moved_by_field(it, &geo, &u, scale);
+    // A colour word colours the deformed mesh for TRAC; other words are
+    // options of Cast3M's graphics.
+    let colour = a.word_not_operator().and_then(|w| crate::fem::mesh::Colour::from_name(&w));
+    let moved = match colour {
+        Some(c) => moved.coloured(c),
+        None => moved,
+    };
+    Ok(vec![Value::Mesh(Rc::new(moved))])
 }
 
 fn resu(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {

@@ -23,15 +23,17 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "DALL", signature: "DALL LINE1 LINE2 LINE3 LINE4 ('PLAN')", doc: "A structured surface (OPTI ELEM QUA4, TRI3, QUA8, TRI6) from four sides forming a closed contour.", example: "s = dall bas dro hau gau ;", f: dall },
     OpDef { name: "TRAN", signature: "GEO TRAN (n) ('DINI' d1) ('DFIN' d2) VECTOR", doc: "Sweep a line into a surface or a surface into a volume along a vector.", example: "s = l tran 4 (0. 1.) ;", f: tran },
     OpDef { name: "ROTA", signature: "GEO ROTA (n) ANGLE CENTRE (AXIS_POINT)", doc: "Sweep by rotation (angle in degrees) about a point (2D) or an axis (3D).", example: "s = l rota 8 90. o ;", f: rota },
-    OpDef { name: "VOLU", signature: "VOLU (n) SURF1 SURF2", doc: "Volume between two compatible surfaces.", example: "v = volu 3 s1 s2 ;", f: volu },
+    OpDef { name: "VOLU", signature: "VOLU (n) SURF1 SURF2 | VOLU (n) SURF 'TRAN' VECTOR | VOLU (n) SURF 'ROTA' ANGLE P1 (P2)", doc: "Volume between two compatible surfaces, or swept from a surface by a translation or a rotation (as TRAN and ROTA).", example: "v = volu 3 s1 s2 ;", f: volu },
     OpDef { name: "ELEM", signature: "GEO ELEM TYPE | GEO ELEM n|LISTENTI | GEO ELEM 'APPU' ('STRI'|'LARG') GEO2", doc: "Elements of a mesh by type, by number, or resting on another mesh.", example: "q = s elem qua4 ;", f: elem },
     OpDef { name: "COTE", signature: "COTE n SURFACE", doc: "Side n of a structured (DALL/TRAN) surface.", example: "b = cote 1 s ;", f: cote },
+    OpDef { name: "FACE", signature: "FACE n VOLUME", doc: "Face n of a volume made by VOLU, TRAN or ROTA: 1 the base, 2 the opposite face, 3 the lateral surface.", example: "haut = face 2 v ;", f: face },
     OpDef { name: "CONT", signature: "CONT GEO", doc: "Contour: boundary edges of a surface, end points of a line.", example: "c = cont s ;", f: cont },
     OpDef { name: "ELIM", signature: "ELIM (crit) GEO", doc: "Merge nodes closer than crit, in every object.", example: "elim 1.e-5 l ;", f: elim },
     OpDef { name: "INTE", signature: "GEO1 INTE GEO2", doc: "Elements common to two meshes.", example: "c = s1 inte s2 ;", f: inte },
     OpDef { name: "DIFF", signature: "DIFF GEO1 GEO2", doc: "Symmetric difference of two meshes.", example: "d = diff s1 s2 ;", f: diff },
     OpDef { name: "PLUS", signature: "OBJ PLUS VECTOR | GEO PLUS CHPOINT", doc: "A translated copy (geometric, not arithmetic), or the mesh moved by a displacement field.", example: "l2 = l plus (0. 1.) ;", f: plus },
     OpDef { name: "MOIN", signature: "OBJ MOIN VECTOR", doc: "A copy translated by minus the vector.", example: "l2 = l moin (0. 1.) ;", f: moin },
+    OpDef { name: "SYME", signature: "POINT|MAILLAGE SYME ('DROIT' P1 P2 | 'PLAN' P1 P2 P3 | 'POINT' P)", doc: "Mirror image on new nodes: about a line (2D; in 3D the half-turn about it), a plane (3D) or a point. Surfaces and volumes keep their orientation.", example: "s2 = s1 syme 'DROIT' p1 p2 ;", f: syme },
     OpDef { name: "INVE", signature: "INVE GEO", doc: "Reverse the orientation of a mesh.", example: "l2 = inve l ;", f: inve },
     OpDef { name: "SURF", signature: "SURF LINE ('PLAN')", doc: "Free meshing — not available in gibi: use DALL, TRAN or ROTA, or import a Gmsh mesh.", example: "s = dall bas dro hau gau ;", f: surf },
 ];
@@ -224,11 +226,52 @@ fn rota(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     Ok(mesh_val(mg::rota(&mut it.nodes, &geo, &sp, angle, c, axis)?))
 }
 
+/// `VOLU (n) S1 S2`, or the sweeps of volu.notice written with VOLU:
+/// `VOLU (n) S 'TRAN' VEC` and `VOLU (n) S 'ROTA' angle P1 (P2)`, the
+/// count and the surface on either side of the keyword.
 fn volu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let sp = spacing(a)?;
-    let s1 = a.req::<Rc<Mesh>>()?;
-    let s2 = a.req::<Rc<Mesh>>()?;
-    Ok(mesh_val(mg::volu(&mut it.nodes, &s1, &s2, &sp)?))
+    let mut sp = spacing(a)?;
+    let mut s1 = a.opt::<Rc<Mesh>>();
+    merge(&mut sp, spacing(a)?);
+    match a.keyword(&["TRAN", "ROTA"]) {
+        Some("TRAN") => {
+            merge(&mut sp, spacing(a)?);
+            let v = vector(it, a).ok_or_else(|| a.missing("a vector (POINT)"))?;
+            merge(&mut sp, spacing(a)?);
+            let s = match s1.take() {
+                Some(s) => s,
+                None => a.req::<Rc<Mesh>>()?,
+            };
+            Ok(mesh_val(mg::tran(&mut it.nodes, &s, &sp, v)?))
+        }
+        Some(_) => {
+            merge(&mut sp, spacing(a)?);
+            let angle = a.req_num()?;
+            let c = vector(it, a).ok_or_else(|| a.missing("the centre (POINT)"))?;
+            let axis = vector(it, a);
+            merge(&mut sp, spacing(a)?);
+            let s = match s1.take() {
+                Some(s) => s,
+                None => a.req::<Rc<Mesh>>()?,
+            };
+            Ok(mesh_val(mg::rota(&mut it.nodes, &s, &sp, angle, c, axis)?))
+        }
+        None => {
+            let s1 = match s1 {
+                Some(s) => s,
+                None => a.req::<Rc<Mesh>>()?,
+            };
+            let s2 = a.req::<Rc<Mesh>>()?;
+            merge(&mut sp, spacing(a)?);
+            Ok(mesh_val(mg::volu(&mut it.nodes, &s1, &s2, &sp)?))
+        }
+    }
+}
+
+fn face(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let n = a.req::<i64>()?;
+    let v = a.req::<Rc<Mesh>>()?;
+    Ok(mesh_val(mg::face(&v, n)?))
 }
 
 fn elem(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
@@ -263,9 +306,11 @@ fn cont(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 /// ELIM works in place in Cast3M: every object holding a merged node sees
 /// the kept one. We rewrite every mesh and point in the store.
 fn elim(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    // The tolerance may come before or after the mesh (`ELIM 1.e-3 s`,
+    // `ELIM s 1.e-3`).
     let tol = a.opt_num();
     let m = req_geo(a)?;
-    let tol = tol.unwrap_or(1e-6);
+    let tol = tol.or_else(|| a.opt_num()).unwrap_or(1e-6);
     let (merged, map) = mg::elim(&it.nodes, &m, tol)?;
     if !map.is_empty() {
         for f in it.store.frames.iter_mut() {
@@ -339,6 +384,42 @@ fn plus(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 
 fn moin(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     translate(it, a, -1.0)
+}
+
+fn syme(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    // The object is the operand before SYME (`s2 = s1 syme …`), else the
+    // first value after it, else what follows the symmetry element.
+    let mut obj = a.left_value();
+    if obj.is_none() && a.peek_right().is_some_and(|v| matches!(v, Value::Point(_) | Value::Mesh(_))) {
+        obj = a.right_any();
+    }
+    let mirror = match a.req_keyword(&["DROIT", "PLAN", "POINT"])? {
+        "DROIT" => {
+            let p1 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
+            mg::Mirror::Line(p1, vector(it, a).ok_or_else(|| a.missing("POINT"))?)
+        }
+        "PLAN" => {
+            let p1 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
+            let p2 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
+            mg::Mirror::Plane(p1, p2, vector(it, a).ok_or_else(|| a.missing("POINT"))?)
+        }
+        _ => mg::Mirror::Point(vector(it, a).ok_or_else(|| a.missing("POINT"))?),
+    };
+    let obj = match obj {
+        Some(v) => v,
+        None => a.right_any().ok_or_else(|| a.missing("POINT or MAILLAGE"))?,
+    };
+    let dim = it.opts.dime.max(2);
+    match obj {
+        Value::Point(p) => {
+            mirror.check(dim)?;
+            let x = mirror.image(it.nodes.get(p));
+            let d = it.nodes.density[p];
+            Ok(vec![Value::Point(it.nodes.push(x, d))])
+        }
+        Value::Mesh(m) => Ok(mesh_val(mg::syme(&mut it.nodes, &m, mirror, dim)?)),
+        other => Err(a.err(format!("cannot take the symmetric of a {}", other.type_name()))),
+    }
 }
 
 fn inve(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {

@@ -6,6 +6,7 @@ mod args;
 mod arith;
 mod assemble;
 mod bc;
+mod colour;
 mod curves;
 mod dofs;
 mod evol;
@@ -13,6 +14,7 @@ mod export;
 mod fieldfn;
 mod fields;
 mod format;
+mod integrate;
 mod io;
 mod limits;
 mod lists;
@@ -24,9 +26,11 @@ mod objects;
 mod pointwise;
 mod post;
 mod reso;
+mod restrict;
 pub mod solver_cache;
 mod superele;
 mod tables;
+pub mod unimplemented;
 mod union;
 
 pub use args::{Args, FromArg, PointId};
@@ -152,6 +156,9 @@ pub fn op_key(word: &str) -> &str {
 #[derive(Debug, Clone, Default)]
 pub struct Registry {
     ops: HashMap<String, Rc<OpSpec>>,
+    /// Cast3M names gibi lacks: found like operators (so a deck that calls
+    /// one stops there, named), but not part of the manual.
+    missing: HashMap<String, Rc<OpSpec>>,
 }
 
 impl Registry {
@@ -166,12 +173,15 @@ impl Registry {
             io::OPS,
             union::OPS,
             mesh::OPS,
+            colour::OPS,
             bc::OPS,
             model::OPS,
             manu::OPS,
             fields::OPS,
+            restrict::OPS,
             reso::OPS,
             post::OPS,
+            integrate::OPS,
             superele::OPS,
             export::OPS,
             evol::OPS,
@@ -180,6 +190,13 @@ impl Registry {
         ] {
             for d in table {
                 r.insert(OpSpec::from(d));
+            }
+        }
+        // After every family, so that a stub never hides an operator.
+        for d in unimplemented::ops() {
+            let key = op_key(d.name).to_string();
+            if !r.ops.contains_key(&key) {
+                r.missing.insert(key, Rc::new(OpSpec::from(&d)));
             }
         }
         r
@@ -191,7 +208,8 @@ impl Registry {
 
     /// The operator a word names, by its first 4 letters.
     pub fn find(&self, word: &str) -> Option<Rc<OpSpec>> {
-        self.ops.get(op_key(word)).cloned()
+        let key = op_key(word);
+        self.ops.get(key).or_else(|| self.missing.get(key)).cloned()
     }
 
     /// Every operator, sorted by name.

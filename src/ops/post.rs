@@ -125,12 +125,12 @@ fn intern(c: &str) -> &'static str {
     NAMES.iter().find(|n| **n == c).copied().unwrap_or("?")
 }
 
-fn to_gauss(z: &MchamlZone, e: usize) -> GaussField {
+pub(crate) fn to_gauss(z: &MchamlZone, e: usize) -> GaussField {
     let comps: Vec<&'static str> = z.comps.iter().map(|c| intern(c)).collect();
     GaussField { comps, values: z.values[e].clone() }
 }
 
-fn zone_of<'a>(model: &'a Model, z: &MchamlZone) -> Option<&'a ModelZone> {
+pub(crate) fn zone_of<'a>(model: &'a Model, z: &MchamlZone) -> Option<&'a ModelZone> {
     model.zones.iter().find(|m| m.mesh.parts.iter().any(|p| z.mesh.parts.first() == Some(p)) || m.mesh == z.mesh)
 }
 
@@ -229,6 +229,7 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                     mesh: z.mesh.clone(),
                     element: z.element.clone(),
                     comps: z.comps.clone(),
+                    at_nodes: true,
                     ..Default::default()
                 };
                 for (e, nodes) in part.elems().enumerate() {

@@ -10,7 +10,14 @@ const MAX_LINES: usize = 20;
 pub fn describe(it: &Interp, v: &Value) -> String {
     match v {
         Value::Mesh(m) => {
-            let parts: Vec<String> = m.parts.iter().map(|p| format!("{} {}", p.len(), p.ty.name())).collect();
+            let parts: Vec<String> = m
+                .parts
+                .iter()
+                .map(|p| match p.colour.is_default() {
+                    true => format!("{} {}", p.len(), p.ty.name()),
+                    false => format!("{} {} {}", p.len(), p.ty.name(), p.colour.name()),
+                })
+                .collect();
             format!("{} element(s) ({}), {} node(s)", m.n_elements(), parts.join(", "), m.node_list().len())
         }
         Value::Chpo(c) => chpoint(c),

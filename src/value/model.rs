@@ -42,6 +42,9 @@ pub struct MchamlZone {
     /// Point values: component names, then values[element][point][component].
     pub comps: Vec<String>,
     pub values: Vec<Vec<Vec<f64>>>,
+    /// The points are the element's nodes (CHAN 'NOEUD'), not the points
+    /// where the element gives its stresses.
+    pub at_nodes: bool,
 }
 
 /// EVOLUTIO: curves y(x).

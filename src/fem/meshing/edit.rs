@@ -38,7 +38,7 @@ impl NodeMap {
             parts: mesh
                 .parts
                 .iter()
-                .map(|p| Part { ty: p.ty, conn: p.conn.iter().map(|&n| self.get(n)).collect() })
+                .map(|p| Part { ty: p.ty, conn: p.conn.iter().map(|&n| self.get(n)).collect(), colour: p.colour })
                 .collect(),
         }
     }

@@ -1,8 +1,10 @@
-//! Extraction: ELEM (by type, by number, by support), CONT (boundary) and
-//! COTE (side n of a DALL/TRAN surface).
+//! Extraction: ELEM (by type, by number, by support), CONT (boundary),
+//! COTE (side n of a DALL/TRAN surface) and FACE (face n of a volume made
+//! by VOLU, TRAN or ROTA).
 
 use super::{fail, mesh_of, MeshError};
 use crate::fem::mesh::{ElemType, Mesh, Part};
+use crate::fem::shape;
 use std::collections::{HashMap, HashSet};
 
 /// Local edges of a surface element, each as `(end, end)` or
@@ -159,6 +161,81 @@ pub fn cote(mesh: &Mesh, n: i64) -> Result<Mesh, MeshError> {
         push_edge(&mut out, &bnd[i]);
     }
     Ok(mesh_of(out))
+}
+
+/// `FACE n VOL`: face `n` of a volume swept by VOLU, TRAN or ROTA:
+/// 1 the base, 2 the opposite face, 3 the lateral surface (face.notice).
+///
+/// As for COTE, the faces are recovered from the structure the sweeps give
+/// (see [`super::sweep`]): elements come layer after layer, each listing its
+/// bottom face then the face above it, so the layer size is the element
+/// whose bottom is element 1's top. Face 1 is the bottom of the first
+/// layer and face 2 the top of the last, both in the elements' order with
+/// the node order of the bottom faces, so face 2 corresponds to face 1
+/// node for node (for TRAN it is face 1 translated). Face 3 is every other
+/// boundary face of the volume, in element order, its normal outward.
+pub fn face(mesh: &Mesh, n: i64) -> Result<Mesh, MeshError> {
+    const OP: &str = "FACE";
+    if !(1..=3).contains(&n) {
+        return fail(OP, format!("the face number must be 1, 2 or 3 (got {n})"));
+    }
+    let parts: Vec<&Part> = mesh.parts.iter().filter(|p| !p.is_empty()).collect();
+    if parts.is_empty() || parts.iter().any(|p| !matches!(p.ty, ElemType::Cub8 | ElemType::Pri6)) {
+        return fail(OP, "needs a volume of CUB8 or PRI6 elements, as VOLU, TRAN or ROTA make");
+    }
+    let sorted = |mut k: Vec<usize>| {
+        k.sort_unstable();
+        k
+    };
+    let key = |e: &[usize], idx: &[usize]| sorted(idx.iter().map(|&i| e[i]).collect());
+    let mut ends: [Vec<(ElemType, Vec<usize>)>; 2] = [Vec::new(), Vec::new()];
+    for p in &parts {
+        let (bottom, top, face_ty): (&[usize], &[usize], _) = match p.ty {
+            ElemType::Cub8 => (&[0, 1, 2, 3], &[4, 5, 6, 7], ElemType::Qua4),
+            _ => (&[0, 1, 2], &[3, 4, 5], ElemType::Tri3),
+        };
+        let count = p.len();
+        let top0 = key(p.elem(0), top);
+        let layer = (1..count).find(|&j| key(p.elem(j), bottom) == top0).unwrap_or(count);
+        let stacked =
+            count % layer == 0 && (0..count - layer).all(|i| key(p.elem(i + layer), bottom) == key(p.elem(i), top));
+        if !stacked {
+            return fail(OP, "the volume does not have the layered structure of a VOLU, TRAN or ROTA volume");
+        }
+        let base: Vec<usize> = (0..layer).flat_map(|e| bottom.iter().map(move |&i| p.elem(e)[i])).collect();
+        let opposite: Vec<usize> =
+            (count - layer..count).flat_map(|e| top.iter().map(move |&i| p.elem(e)[i])).collect();
+        ends[0].push((face_ty, base));
+        ends[1].push((face_ty, opposite));
+    }
+    if n <= 2 {
+        return Ok(mesh_of(std::mem::take(&mut ends[n as usize - 1])));
+    }
+    let ends_keys: HashSet<Vec<usize>> =
+        ends.iter().flatten().flat_map(|(ty, conn)| conn.chunks(ty.nodes()).map(|f| sorted(f.to_vec()))).collect();
+    let all: Vec<(ElemType, Vec<usize>)> = parts
+        .iter()
+        .flat_map(|p| {
+            p.elems().flat_map(move |e| {
+                shape::faces(p.ty).into_iter().map(move |(t, l)| (t, l.iter().map(|&i| e[i]).collect()))
+            })
+        })
+        .collect();
+    let mut uses: HashMap<Vec<usize>, usize> = HashMap::new();
+    for (_, f) in &all {
+        *uses.entry(sorted(f.clone())).or_default() += 1;
+    }
+    let mut lateral: Vec<(ElemType, Vec<usize>)> = Vec::new();
+    for (ty, f) in all {
+        let k = sorted(f.clone());
+        if uses[&k] == 1 && !ends_keys.contains(&k) {
+            match lateral.iter_mut().find(|(t, _)| *t == ty) {
+                Some((_, c)) => c.extend(f),
+                None => lateral.push((ty, f)),
+            }
+        }
+    }
+    Ok(mesh_of(lateral))
 }
 
 fn push_edge(out: &mut Vec<(ElemType, Vec<usize>)>, e: &[usize]) {

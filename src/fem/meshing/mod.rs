@@ -25,6 +25,7 @@ pub mod grading;
 pub mod line;
 pub mod query;
 pub mod sweep;
+pub mod symmetry;
 mod vec3;
 
 #[cfg(test)]
@@ -34,13 +35,14 @@ pub use dall::dall;
 pub use edit::{
     change_to_linear, change_to_poi1, change_to_quadratic, diff, elim, inte, inve, manu, translate_copy, NodeMap,
 };
-pub use extract::{cont, cote, elem_appui, elem_numbers, elem_type};
+pub use extract::{cont, cote, elem_appui, elem_numbers, elem_type, face};
 pub use grading::Spacing;
 pub use line::{cerc, droi, droi_extend, line_type};
 pub use query::{
     line_chain, nbel, nbel_of_type, nbno, poin_droit, poin_final, poin_init, poin_nth, poin_plan, poin_proc,
 };
 pub use sweep::{rota, tran, volu};
+pub use symmetry::{syme, Mirror};
 
 use crate::fem::mesh::{ElemType, Mesh, Nodes, Part};
 
@@ -89,5 +91,5 @@ pub(crate) fn check_node(op: &'static str, nodes: &Nodes, n: usize) -> Result<()
 /// Build a mesh from `(type, connectivity)` pairs, dropping empty parts and
 /// keeping the order given.
 pub(crate) fn mesh_of(parts: Vec<(ElemType, Vec<usize>)>) -> Mesh {
-    Mesh { parts: parts.into_iter().filter(|(_, c)| !c.is_empty()).map(|(ty, conn)| Part { ty, conn }).collect() }
+    Mesh { parts: parts.into_iter().filter(|(_, c)| !c.is_empty()).map(|(ty, conn)| Part::with(ty, conn)).collect() }
 }

@@ -8,7 +8,7 @@
 //! sub-triangles, with a colour bar on the right.
 
 use super::{colormap, range, render, Format, Paint, PALETTE};
-use crate::fem::mesh::{ElemType, Mesh, Nodes};
+use crate::fem::mesh::{Colour, ElemType, Mesh, Nodes};
 use crate::io::{err, Result};
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -26,7 +26,8 @@ pub struct NodalField {
 #[derive(Debug, Clone)]
 pub struct MeshPicture<'a> {
     pub nodes: &'a Nodes,
-    /// Drawn as element edges, one colour per mesh.
+    /// Drawn as element edges, one colour per mesh unless its elements
+    /// have their own (COUL).
     pub meshes: Vec<Mesh>,
     pub field: Option<NodalField>,
     pub title: String,
@@ -89,6 +90,18 @@ fn outline(m: &Mesh) -> Outline {
     skin.sort();
     o.polys.extend(skin);
     o
+}
+
+/// The parts of a mesh grouped by colour, in order of first appearance.
+fn by_colour(m: &Mesh) -> Vec<(Colour, Mesh)> {
+    let mut out: Vec<(Colour, Mesh)> = Vec::new();
+    for p in &m.parts {
+        match out.iter_mut().find(|(c, _)| *c == p.colour) {
+            Some((_, sub)) => sub.parts.push(p.clone()),
+            None => out.push((p.colour, Mesh::single(p.clone()))),
+        }
+    }
+    out
 }
 
 /// Screen coordinates and depth (larger is nearer).
@@ -170,8 +183,14 @@ impl MeshPicture<'_> {
                 }
             }
         }
-        for (i, m) in self.meshes.iter().enumerate() {
-            let color = PALETTE[i % PALETTE.len()];
+        // One colour per mesh, unless its elements have their own (COUL).
+        let coloured = self.meshes.iter().enumerate().flat_map(|(i, m)| {
+            by_colour(m)
+                .into_iter()
+                .map(move |(c, sub)| (c.rgb().map_or(PALETTE[i % PALETTE.len()], |[r, g, b]| RGBColor(r, g, b)), sub))
+        });
+        for (color, m) in coloured {
+            let m = &m;
             let o = outline(m);
             for poly in &o.polys {
                 let depth = poly.iter().map(|&n| at(n).2).sum::<f64>() / poly.len() as f64;

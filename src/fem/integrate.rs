@@ -1,0 +1,137 @@
+//! Integrals over elements: the measure of an element (MESU), and the
+//! weights that turn values at an element's points into its integral
+//! (INTG). Internal forces (BSIG) are per element family, in
+//! [`super::element::internal_forces`].
+//!
+//! The measure is geometric: length, area or volume by the element's own
+//! dimension, whatever the analysis mode. Integration weights follow the
+//! element library instead (see [`super::element`]): thickness DIM3 in
+//! PLAN CONT, r (per radian) in AXIS, the length along bars and beams.
+
+use super::element::{FemError, Formulation, Mode};
+use super::material::Material;
+use super::mesh::ElemType;
+use super::quadrature::{hexa, prism, quad, seg, tet, tri, QPoint};
+use super::shape::eval;
+use super::solid;
+
+/// The Jacobian of the map from the reference element at `p`, measured in
+/// the element's own dimension (|dx/dξ| on a line, the area ratio on a
+/// surface, even one in 3D space, |det J| in a volume).
+pub fn jacobian(ty: ElemType, x: &[[f64; 3]], p: [f64; 3]) -> f64 {
+    let s = eval(ty, p);
+    let dim = ty.dim();
+    let mut t = [[0.0; 3]; 3];
+    for (d, xi) in s.dn.iter().zip(x) {
+        for (a, ta) in t.iter_mut().enumerate().take(dim) {
+            for c in 0..3 {
+                ta[c] += d[a] * xi[c];
+            }
+        }
+    }
+    let cross =
+        |a: [f64; 3], b: [f64; 3]| [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+    let norm = |a: [f64; 3]| (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt();
+    match dim {
+        0 => 1.0,
+        1 => norm(t[0]),
+        2 => norm(cross(t[0], t[1])),
+        _ => {
+            let c = cross(t[1], t[2]);
+            (t[0][0] * c[0] + t[0][1] * c[1] + t[0][2] * c[2]).abs()
+        }
+    }
+}
+
+/// A rule exact for the measure of straight-sided elements and accurate
+/// for curved quadratic ones.
+fn measure_rule(ty: ElemType) -> Vec<QPoint> {
+    match ty {
+        ElemType::Poi1 => vec![],
+        ElemType::Seg2 => seg(3),
+        // |dx/dξ| of a curved SEG3 is a square root, not a polynomial:
+        // 3 Gauss points on each quarter keep the length to about 1e-6.
+        ElemType::Seg3 => (0..4)
+            .flat_map(|q| {
+                let c = -0.75 + 0.5 * q as f64;
+                seg(3).into_iter().map(move |([x, _, _], w)| ([c + 0.25 * x, 0.0, 0.0], 0.25 * w))
+            })
+            .collect(),
+        ElemType::Tri3 | ElemType::Tri6 => tri(7),
+        ElemType::Qua4 | ElemType::Qua8 => quad(3),
+        ElemType::Cub8 => hexa(3),
+        ElemType::Tet4 => tet(4),
+        ElemType::Pri6 => prism(7, 3),
+    }
+}
+
+/// Length, area or volume of one element (0 for a point).
+pub fn measure(ty: ElemType, x: &[[f64; 3]]) -> f64 {
+    measure_rule(ty).into_iter().map(|(p, w)| w * jacobian(ty, x, p)).sum()
+}
+
+/// Weights of the points where [`super::element::stress`] gives values: the
+/// integral of a field over the element is `Σ w_k v_k`.
+pub fn point_weights(
+    f: Formulation,
+    ty: ElemType,
+    mode: Mode,
+    x: &[[f64; 3]],
+    m: &Material,
+) -> Result<Vec<f64>, FemError> {
+    match f {
+        Formulation::Barr | Formulation::Pout | Formulation::Timo => {
+            // Values at both ends: the trapezoidal rule along the length.
+            let l = line_length(x)?;
+            Ok(vec![0.5 * l; 2])
+        }
+        Formulation::Solid | Formulation::Q4ri => solid::point_weights(f, ty, mode, x, m),
+    }
+}
+
+/// Weights of the nodes for a field given at the nodes and interpolated
+/// by the shape functions: `∫ Σ N_i v_i = Σ_i v_i ∫ N_i`.
+pub fn node_weights(
+    f: Formulation,
+    ty: ElemType,
+    mode: Mode,
+    x: &[[f64; 3]],
+    m: &Material,
+) -> Result<Vec<f64>, FemError> {
+    match f {
+        Formulation::Barr | Formulation::Pout | Formulation::Timo => {
+            let l = line_length(x)?;
+            Ok(vec![0.5 * l; 2])
+        }
+        Formulation::Solid | Formulation::Q4ri => solid::node_weights(ty, mode, x, m),
+    }
+}
+
+fn line_length(x: &[[f64; 3]]) -> Result<f64, FemError> {
+    if x.len() != 2 {
+        return Err(FemError::WrongNodeCount { elem: "SEG2", expected: 2, got: x.len() });
+    }
+    Ok(measure(ElemType::Seg2, x))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn measures_of_unit_shapes_and_a_curved_edge() {
+        let sq = [[0., 0., 0.], [2., 0., 0.], [2., 1., 0.], [0., 1., 0.]];
+        assert!((measure(ElemType::Qua4, &sq) - 2.0).abs() < 1e-14);
+        let tri = [[0., 0., 5.], [1., 0., 5.], [0., 1., 6.]];
+        assert!((measure(ElemType::Tri3, &tri) - 0.5 * 2f64.sqrt()).abs() < 1e-14);
+        let mut cube: Vec<[f64; 3]> = sq.to_vec();
+        cube.extend(sq.iter().map(|p| [p[0], p[1], 3.0]));
+        assert!((measure(ElemType::Cub8, &cube) - 6.0).abs() < 1e-13);
+        let tet = [[0., 0., 0.], [1., 0., 0.], [0., 1., 0.], [0., 0., 1.]];
+        assert!((measure(ElemType::Tet4, &tet) - 1.0 / 6.0).abs() < 1e-15);
+        // A parabolic SEG3 y = x² - 1 on [-1, 1]: length 2.9578857...
+        let arc = [[-1., 0., 0.], [0., -1., 0.], [1., 0., 0.]];
+        let exact = 5f64.sqrt() + 0.5 * (2.0 + 5f64.sqrt()).ln();
+        assert!((measure(ElemType::Seg3, &arc) - exact).abs() < 1e-5, "{}", measure(ElemType::Seg3, &arc) - exact);
+    }
+}

@@ -1,0 +1,251 @@
+//! Integrals over meshes and models: MESU (length, area, volume), INTG
+//! (integral of a field over a model) and BSIG (nodal forces of a stress
+//! field). The quadrature lives in `fem::integrate` and the element files.
+
+use super::mesh::req_geo;
+use super::model::{formulation, material_for, zone_mode};
+use super::post::{to_gauss, zone_of};
+use super::{Args, OpDef};
+use crate::error::{Error, Result};
+use crate::eval::Interp;
+use crate::fem::element::{self, FemError};
+use crate::fem::integrate;
+use crate::fem::mesh::Mesh;
+use crate::value::model::MchamlZone;
+use crate::value::{Chpoint, Mchaml, Model, Nature, Value};
+use std::rc::Rc;
+
+pub(crate) const OPS: &[OpDef] = &[
+    OpDef {
+        name: "MESU",
+        signature: "MESU GEO",
+        doc: "Measure of a mesh: the length of a line, the area of a surface, the volume of a volume (of its elements of highest dimension, geometric in every mode).",
+        example: "a = mesu s ;",
+        f: mesu,
+    },
+    OpDef {
+        name: "INTG",
+        signature: "INTG ('ELEM') MMODEL MCHAML|CHPOINT (COMP) (MCHAML_CARA) | INTG EVOLUTIO (N)",
+        doc: "Integral of one component of a field over a model (thickness DIM3 in PLAN CONT, per radian in AXIS, along the length of bars and beams); 'ELEM' gives one value per element. Of an EVOLUTIO: the integral of its curve N (1 by default) by the trapezoidal rule.",
+        example: "f = intg mo sig 'SMXX' ;",
+        f: intg,
+    },
+    OpDef {
+        name: "BSIG",
+        signature: "BSIG MMODEL MCHAML_STRESS (MCHAML)",
+        doc: "Nodal forces equivalent to a stress field (∫ Bᵀσ): the internal forces, K u for the stresses of u.",
+        example: "fi = bsig mo sig ma ;",
+        f: bsig,
+    },
+];
+
+fn fem_err(a: &Args, e: FemError) -> Error {
+    a.err(e.to_string())
+}
+
+fn coords(it: &Interp, nodes: &[usize]) -> Vec<[f64; 3]> {
+    nodes.iter().map(|n| it.nodes.get(*n)).collect()
+}
+
+fn mesu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let m = req_geo(a)?;
+    let dim = m.parts.iter().filter(|p| !p.is_empty()).map(|p| p.ty.dim()).max().unwrap_or(0);
+    let mut total = 0.0;
+    for p in m.parts.iter().filter(|p| p.ty.dim() == dim) {
+        for e in p.elems() {
+            total += integrate::measure(p.ty, &coords(it, e));
+        }
+    }
+    Ok(vec![Value::Float(total)])
+}
+
+/// The component to integrate: the one named, else the field's only one.
+fn component(a: &mut Args, available: Vec<String>) -> Result<String> {
+    if let Some(c) = a.word_not_operator() {
+        if !available.contains(&c) {
+            return Err(a.err(format!("the field has no component {} (it has {})", c, available.join(" "))));
+        }
+        return Ok(c);
+    }
+    match available.as_slice() {
+        [only] => Ok(only.clone()),
+        _ => Err(a.err(format!("the field has components {}: name the one to integrate", available.join(" ")))),
+    }
+}
+
+/// Component names of an element field, point values and constants alike.
+fn mchaml_comps(m: &Mchaml) -> Vec<String> {
+    let mut out: Vec<String> = Vec::new();
+    for z in &m.zones {
+        for c in z.comps.iter().chain(z.constants.keys()) {
+            if !out.contains(c) {
+                out.push(c.clone());
+            }
+        }
+    }
+    out
+}
+
+/// Integrals per element, zone by zone (the meshes of the zones).
+type PerElement = Vec<(Mesh, String, Vec<f64>)>;
+
+fn intg(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    if let Some(e) = a.opt::<Rc<crate::value::Evolution>>() {
+        return super::curves::intg_curve(a, e);
+    }
+    let per_elem = a.keyword(&["ELEM"]).is_some();
+    let model = a.req::<Rc<Model>>()?;
+    let field = a.find::<Rc<Mchaml>>();
+    let chpo = if field.is_none() { Some(a.req_find::<Rc<Chpoint>>()?) } else { None };
+    let comp = match (&field, &chpo) {
+        (Some(f), _) => component(a, mchaml_comps(f))?,
+        (_, Some(c)) => component(a, c.components())?,
+        _ => unreachable!("one of them was read"),
+    };
+    let mut mats: Vec<Rc<Mchaml>> = field.iter().cloned().collect();
+    while let Some(f) = a.opt::<Rc<Mchaml>>() {
+        mats.push(f);
+    }
+    let parts = match (&field, &chpo) {
+        (Some(f), _) => intg_mchaml(it, a, &model, f, &comp, &mats)?,
+        (_, Some(c)) => intg_chpoint(it, a, &model, c, &comp, &mats)?,
+        _ => unreachable!("one of them was read"),
+    };
+    if !per_elem {
+        return Ok(vec![Value::Float(parts.iter().flat_map(|(_, _, v)| v.iter()).sum())]);
+    }
+    let zones = parts
+        .into_iter()
+        .map(|(mesh, element, v)| MchamlZone {
+            mesh,
+            element,
+            comps: vec![comp.clone()],
+            values: v.into_iter().map(|x| vec![vec![x]]).collect(),
+            ..Default::default()
+        })
+        .collect();
+    Ok(vec![Value::Mchaml(Rc::new(Mchaml { subtype: "SCALAIRE".into(), zones }))])
+}
+
+fn intg_mchaml(
+    it: &Interp,
+    a: &Args,
+    model: &Model,
+    field: &Mchaml,
+    comp: &str,
+    mats: &[Rc<Mchaml>],
+) -> Result<PerElement> {
+    let mut out = Vec::new();
+    for z in field.zones.iter().filter(|z| z.comps.iter().any(|c| c == comp) || z.constants.contains_key(comp)) {
+        let Some(mz) = zone_of(model, z) else { continue };
+        let (form, mode) = (formulation(mz), zone_mode(mz)?);
+        let mat = material_for(mz, mats);
+        let c = z.comps.iter().position(|x| x == comp);
+        let mut vals = Vec::new();
+        for p in &z.mesh.parts {
+            for nodes in p.elems() {
+                let e = vals.len();
+                let x = coords(it, nodes);
+                let w = if z.at_nodes && c.is_some() {
+                    integrate::node_weights(form, p.ty, mode, &x, &mat)
+                } else {
+                    integrate::point_weights(form, p.ty, mode, &x, &mat)
+                }
+                .map_err(|err| fem_err(a, err))?;
+                let v = match c {
+                    Some(c) => {
+                        let pts = z
+                            .values
+                            .get(e)
+                            .ok_or_else(|| a.err(format!("the field has no values on element {}", e + 1)))?;
+                        if pts.len() != w.len() {
+                            return Err(a.err(format!(
+                                "element {}: the field has values at {} points, the model's elements at {}",
+                                e + 1,
+                                pts.len(),
+                                w.len()
+                            )));
+                        }
+                        pts.iter().zip(&w).map(|(p, w)| p[c] * w).sum()
+                    }
+                    None => z.constants[comp] * w.iter().sum::<f64>(),
+                };
+                vals.push(v);
+            }
+        }
+        out.push((z.mesh.clone(), z.element.clone(), vals));
+    }
+    if out.is_empty() {
+        return Err(a.err(format!("the field has no zone of this model carrying {}", comp)));
+    }
+    Ok(out)
+}
+
+fn intg_chpoint(
+    it: &Interp,
+    a: &Args,
+    model: &Model,
+    field: &Chpoint,
+    comp: &str,
+    mats: &[Rc<Mchaml>],
+) -> Result<PerElement> {
+    let mut out = Vec::new();
+    for mz in &model.zones {
+        let (form, mode) = (formulation(mz), zone_mode(mz)?);
+        let mat = material_for(mz, mats);
+        for p in &mz.mesh.parts {
+            let mut vals = Vec::new();
+            for nodes in p.elems() {
+                let w = integrate::node_weights(form, p.ty, mode, &coords(it, nodes), &mat)
+                    .map_err(|err| fem_err(a, err))?;
+                let mut v = 0.0;
+                for (n, w) in nodes.iter().zip(w) {
+                    let f = field
+                        .get(*n, comp)
+                        .ok_or_else(|| a.err(format!("the CHPOINT has no {} at node {}", comp, n + 1)))?;
+                    v += f * w;
+                }
+                vals.push(v);
+            }
+            out.push((Mesh::single(p.clone()), mz.element.clone(), vals));
+        }
+    }
+    Ok(out)
+}
+
+fn bsig(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let model = a.req::<Rc<Model>>()?;
+    let mut fields = Vec::new();
+    while let Some(f) = a.opt::<Rc<Mchaml>>() {
+        fields.push(f);
+    }
+    let sig = fields
+        .iter()
+        .find(|f| f.zones.iter().any(|z| !z.values.is_empty()))
+        .cloned()
+        .ok_or_else(|| a.missing("MCHAML of stresses (from SIGM)"))?;
+    let mut out = Chpoint::new(Nature::Discret);
+    for z in &sig.zones {
+        let mz = zone_of(&model, z).ok_or_else(|| a.err("the stress field does not belong to this model"))?;
+        let (form, mode) = (formulation(mz), zone_mode(mz)?);
+        let mat = material_for(mz, &fields);
+        let duals = element::node_duals(form, mode).map_err(|e| fem_err(a, e))?;
+        let mut e = 0;
+        for p in &z.mesh.parts {
+            for nodes in p.elems() {
+                if e >= z.values.len() {
+                    return Err(a.err(format!("the stress field has no values on element {}", e + 1)));
+                }
+                let f = element::internal_forces(form, p.ty, mode, &coords(it, nodes), &mat, &to_gauss(z, e))
+                    .map_err(|err| a.err(format!("element {}: {}", e + 1, err)))?;
+                for (k, n) in nodes.iter().enumerate() {
+                    for (c, d) in duals.iter().enumerate() {
+                        out.add(*n, d, f[k * duals.len() + c], true);
+                    }
+                }
+                e += 1;
+            }
+        }
+    }
+    Ok(vec![Value::Chpo(Rc::new(out))])
+}

@@ -1,0 +1,189 @@
+//! REDU: restrict a node field to a mesh, an element field to a model,
+//! a rigidity or a model to a mesh (redu.notice).
+
+use super::{Args, OpDef};
+use crate::error::Result;
+use crate::eval::Interp;
+use crate::fem::mesh::{ElemType, Mesh};
+use crate::value::model::{MchamlZone, ModelZone};
+use crate::value::rigidity::Block;
+use crate::value::{Chpoint, Mchaml, Model, Rigidite, Value};
+use std::collections::{HashMap, HashSet};
+use std::rc::Rc;
+
+pub(crate) const OPS: &[OpDef] = &[OpDef {
+    name: "REDU",
+    signature: "REDU CHPOINT GEO | REDU MCHAML MMODEL | REDU RIGIDITE GEO | REDU MMODEL GEO",
+    doc: "Restrict a node field to the nodes of a mesh or point, an element field (material, stresses) to the elements of a model, a rigidity or a model to the elements lying on a mesh.",
+    example: "u2 = redu u l ;",
+    f: redu,
+}];
+
+fn redu(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    // Two objects, by type, in either order.
+    let x = a.req::<Value>()?;
+    let y = a.req::<Value>()?;
+    let geo_of = |v: &Value| matches!(v, Value::Mesh(_) | Value::Point(_));
+    let (obj, other) =
+        if geo_of(&x) || matches!(x, Value::Model(_)) && matches!(y, Value::Mchaml(_)) { (y, x) } else { (x, y) };
+    let geo = |a: &mut Args, v: Value| -> Result<Mesh> {
+        match v {
+            Value::Mesh(m) => Ok((*m).clone()),
+            Value::Point(p) => Ok(Mesh::points(&[p])),
+            _ => Err(a.err(format!("restricts to a MAILLAGE or a POINT, not a {}", v.type_name()))),
+        }
+    };
+    Ok(vec![match obj {
+        Value::Chpo(c) => {
+            let keep: HashSet<usize> = geo(a, other)?.node_list().into_iter().collect();
+            Value::Chpo(Rc::new(Chpoint::from_entries(c.nature, c.entries().filter(|(n, _, _)| keep.contains(n)))))
+        }
+        Value::Mchaml(m) => match other {
+            Value::Model(mo) => Value::Mchaml(Rc::new(mchaml_to_model(a, &m, &mo)?)),
+            v => return Err(a.err(format!("restricts an MCHAML to an MMODEL, not to a {}", v.type_name()))),
+        },
+        Value::Rigi(r) => {
+            let keep: HashSet<usize> = geo(a, other)?.node_list().into_iter().collect();
+            Value::Rigi(Rc::new(rigidity_on(&r, &keep)))
+        }
+        Value::Model(mo) => {
+            let keep: HashSet<usize> = geo(a, other)?.node_list().into_iter().collect();
+            let zones: Vec<ModelZone> = mo
+                .zones
+                .iter()
+                .map(|z| ModelZone { mesh: elements_on(&z.mesh, &keep), ..z.clone() })
+                .filter(|z| z.mesh.n_elements() > 0)
+                .collect();
+            if zones.is_empty() {
+                return Err(a.err("no element of the model lies on the mesh"));
+            }
+            Value::Model(Rc::new(Model { zones }))
+        }
+        v => return Err(a.missing(&format!("CHPOINT, MCHAML, RIGIDITE or MMODEL (found a {})", v.type_name()))),
+    }])
+}
+
+/// The elements of `mesh` whose nodes all lie in `keep`, in their order.
+fn elements_on(mesh: &Mesh, keep: &HashSet<usize>) -> Mesh {
+    let parts = mesh
+        .parts
+        .iter()
+        .map(|p| {
+            let conn = p.elems().filter(|e| e.iter().all(|n| keep.contains(n))).flatten().copied().collect();
+            crate::fem::mesh::Part { conn, ..p.clone() }
+        })
+        .filter(|p| !p.is_empty())
+        .collect();
+    Mesh { parts }
+}
+
+/// The elementary matrices and conditions whose nodes all lie in `keep`.
+fn rigidity_on(r: &Rigidite, keep: &HashSet<usize>) -> Rigidite {
+    let mut out = Rigidite::new(r.subtype);
+    for b in &r.blocks {
+        let nd2 = b.ndof() * b.ndof();
+        let mut nb = Block { conn: Vec::new(), mats: Vec::new(), ..b.clone() };
+        for e in 0..b.n_elem() {
+            let conn = &b.conn[e * b.nodes_per_elem..(e + 1) * b.nodes_per_elem];
+            if conn.iter().all(|n| keep.contains(n)) {
+                nb.conn.extend_from_slice(conn);
+                nb.mats.extend_from_slice(&b.mats[e * nd2..(e + 1) * nd2]);
+            }
+        }
+        if !nb.conn.is_empty() {
+            out.blocks.push(nb);
+        }
+    }
+    out.conds = r.conds.iter().filter(|c| c.terms.iter().all(|(n, _, _)| keep.contains(n))).cloned().collect();
+    out
+}
+
+/// An element's identity: its type and its set of nodes.
+fn key(ty: ElemType, e: &[usize]) -> (ElemType, Vec<usize>) {
+    let mut k = e.to_vec();
+    k.sort_unstable();
+    (ty, k)
+}
+
+/// `REDU MCHAML MMODEL`: the field on the elements of the model, zone by
+/// zone in the model's order, so that the result pairs with the model
+/// (RIGI, SIGM …) as a field made on it would. Constant zones (MATE,
+/// CARA) become one zone per model zone; zones of point values one per
+/// part, element by element.
+fn mchaml_to_model(a: &Args, m: &Mchaml, mo: &Model) -> Result<Mchaml> {
+    let constant: Vec<&MchamlZone> = m.zones.iter().filter(|z| z.values.is_empty()).collect();
+    let valued: Vec<&MchamlZone> = m.zones.iter().filter(|z| !z.values.is_empty()).collect();
+    // Where each element of the field is: (zone, element number in it).
+    let mut at: HashMap<(ElemType, Vec<usize>), (usize, usize)> = HashMap::new();
+    for (zi, z) in valued.iter().enumerate() {
+        let mut e = 0;
+        for p in &z.mesh.parts {
+            for el in p.elems() {
+                at.entry(key(p.ty, el)).or_insert((zi, e));
+                e += 1;
+            }
+        }
+    }
+    let mut out = Mchaml { subtype: m.subtype.clone(), zones: Vec::new() };
+    for mz in &mo.zones {
+        let elems: Vec<(ElemType, Vec<usize>)> =
+            mz.mesh.parts.iter().flat_map(|p| p.elems().map(move |e| key(p.ty, e))).collect();
+        let mut covered = vec![false; elems.len()];
+        for z in &constant {
+            let own: HashSet<(ElemType, Vec<usize>)> =
+                z.mesh.parts.iter().flat_map(|p| p.elems().map(move |e| key(p.ty, e))).collect();
+            let hit: Vec<bool> = elems.iter().map(|k| own.contains(k)).collect();
+            if hit.iter().any(|h| *h) {
+                covered.iter_mut().zip(&hit).for_each(|(c, h)| *c |= *h);
+                match out.zones.iter_mut().find(|x| x.values.is_empty() && x.mesh == mz.mesh) {
+                    Some(x) => {
+                        x.constants.extend(z.constants.clone());
+                        x.vectors.extend(z.vectors.clone());
+                    }
+                    None => out.zones.push(MchamlZone {
+                        mesh: mz.mesh.clone(),
+                        element: mz.element.clone(),
+                        constants: z.constants.clone(),
+                        vectors: z.vectors.clone(),
+                        ..Default::default()
+                    }),
+                }
+            }
+        }
+        let mut e = 0;
+        for p in &mz.mesh.parts {
+            let mut nz: Option<MchamlZone> = None;
+            for el in p.elems() {
+                if let Some(&(zi, ze)) = at.get(&key(p.ty, el)) {
+                    let src = valued[zi];
+                    let z = nz.get_or_insert_with(|| MchamlZone {
+                        mesh: Mesh::single(p.clone()),
+                        element: mz.element.clone(),
+                        comps: src.comps.clone(),
+                        at_nodes: src.at_nodes,
+                        ..Default::default()
+                    });
+                    if z.comps != src.comps || z.at_nodes != src.at_nodes {
+                        return Err(a.err("the field's zones under one zone of the model have different components"));
+                    }
+                    let v = src.values.get(ze).ok_or_else(|| a.err("the field has fewer values than elements"))?;
+                    z.values.push(v.clone());
+                    covered[e] = true;
+                } else if !valued.is_empty() {
+                    return Err(a.err(format!(
+                        "element {} of the model (a {} on node {}) has no value in the field",
+                        e + 1,
+                        p.ty.name(),
+                        el[0] + 1
+                    )));
+                }
+                e += 1;
+            }
+            out.zones.extend(nz);
+        }
+        if let Some(i) = covered.iter().position(|c| !c) {
+            return Err(a.err(format!("element {} of the model is not in the field", i + 1)));
+        }
+    }
+    Ok(out)
+}
