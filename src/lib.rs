@@ -177,12 +177,12 @@ impl Interpreter {
         Ok(if fin { Outcome::Finished } else { Outcome::EndOfInput })
     }
 
-    /// Read and run a file (named as given in error locations).
+    /// Read and run a file (named as given in error locations). Bytes that
+    /// are not UTF-8 are read as Latin-1 ([`source::decode`]).
     pub fn run_file(&mut self, path: impl AsRef<Path>) -> Result<Outcome> {
         let path = path.as_ref();
-        let text =
-            std::fs::read_to_string(path).map_err(|e| Error::io(format!("cannot read {}: {}", path.display(), e)))?;
-        self.run_str(&path.display().to_string(), &text)
+        let bytes = std::fs::read(path).map_err(|e| Error::io(format!("cannot read {}: {}", path.display(), e)))?;
+        self.run_str(&path.display().to_string(), &source::decode(&bytes))
     }
 
     /// The object bound to a name (names are upper-cased as in Gibiane).
