@@ -155,14 +155,22 @@ impl Interpreter {
         &self.interp.registry
     }
 
-    /// Parse and run a text. `name` is used in error locations.
+    /// Read and run a text, one statement at a time as Cast3M does: the
+    /// statements before a syntax error run, and nothing after a top-level
+    /// `FIN ;` is read. `name` is used in error locations.
     pub fn run_str(&mut self, name: &str, text: &str) -> Result<Outcome> {
         let src = Source::new(name, text);
-        let prog = syntax::parse(text).map_err(|mut e| {
-            e.source = Some(src.clone());
-            e
-        })?;
-        self.run_parsed(&prog, src)
+        for stmt in syntax::Reader::new(text) {
+            let stmt = stmt.map_err(|mut e| {
+                e.source = Some(src.clone());
+                e
+            })?;
+            let prog = syntax::ast::Program { stmts: vec![stmt] };
+            if self.run_parsed(&prog, src.clone())? == Outcome::Finished {
+                return Ok(Outcome::Finished);
+            }
+        }
+        Ok(Outcome::EndOfInput)
     }
 
     /// Run an already parsed program (the REPL parses to know whether the

@@ -212,3 +212,41 @@ fn errors_point_at_the_operator_with_usage() {
     // Objects defined before the error survive.
     assert_eq!(g.get_f64("a"), Some(1.0));
 }
+
+#[test]
+fn statements_before_a_syntax_error_run() {
+    let mut g = Interpreter::new();
+    let e = g.run_str("t", "a = 1 ;\nb = 'open ;\nc = 3 ;").unwrap_err();
+    assert_eq!(e.kind, gibi::ErrorKind::Syntax);
+    assert_eq!(g.get_f64("a"), Some(1.0));
+    assert!(g.get("c").is_none());
+    // Nothing after a top-level FIN is read.
+    let mut g = Interpreter::new();
+    assert_eq!(g.run_str("t", "a = 2 ; fin ; ceci n'est pas ( du Gibiane").unwrap(), gibi::Outcome::Finished);
+    assert_eq!(g.get_f64("a"), Some(2.0));
+}
+
+/// Deep nesting is an error at the offending line, never a stack overflow
+/// (this runs on a test thread's 2 MB stack).
+#[test]
+fn deep_nesting_is_an_error_not_a_crash() {
+    let mut g = Interpreter::new();
+    let si = "si vrai ;\n".repeat(16_000) + &"finsi ;\n".repeat(16_000);
+    let e = g.run_str("t", &si).unwrap_err();
+    assert_eq!(e.kind, gibi::ErrorKind::Syntax);
+    assert_eq!(e.location().unwrap().1, gibi::syntax::MAX_BLOCK_DEPTH + 1);
+    let rep: String = (0..20_000).map(|i| format!("repeter b{} 1 ;\n", i)).collect();
+    assert!(g.run_str("t", &rep).unwrap_err().message.contains("nested more than"));
+    let parens = format!("x = {}1{} ;", "(".repeat(50_000), ")".repeat(50_000));
+    assert!(g.run_str("t", &parens).unwrap_err().message.contains("nested more than"));
+    // Nesting that piles up through a recursive procedure stops at the
+    // runtime limit, at the line that goes one level too deep.
+    let src = format!(
+        "debproc f k*entier ;\n{}\nsi (k > 0) ; r = f (k - 1) ; sinon ; r = 0 ; finsi ;\n{}\nfinproc r ;\ny = f 1000 ;",
+        "si vrai ; ".repeat(90),
+        "finsi ; ".repeat(90)
+    );
+    let e = g.run_str("t", &src).unwrap_err();
+    assert!(e.message.contains("nested more than 1000 deep"), "{}", e.render());
+    assert_eq!(e.location().unwrap().1, 2);
+}

@@ -29,18 +29,18 @@ impl Interp {
                 self.exec_instr(ins)?;
                 Ok(Flow::Next)
             }
-            Stmt::If { cond, then, otherwise, .. } => {
+            Stmt::If { cond, then, otherwise, span } => {
                 self.echo(cond);
                 let c = self.condition(cond)?;
                 if c {
-                    self.exec_block(then)
+                    self.nested(*span, |it| it.exec_block(then))
                 } else if let Some(o) = otherwise {
-                    self.exec_block(o)
+                    self.nested(*span, |it| it.exec_block(o))
                 } else {
                     Ok(Flow::Next)
                 }
             }
-            Stmt::Loop { name, count, body, .. } => self.exec_loop(name, count.as_ref(), body),
+            Stmt::Loop { name, count, body, span } => self.nested(*span, |it| it.exec_loop(name, count.as_ref(), body)),
             Stmt::Quit { name, .. } => Ok(Flow::Quit(name.clone())),
             Stmt::Iter { name, .. } => Ok(Flow::Iter(name.clone())),
             Stmt::End { .. } => Ok(Flow::End),

@@ -112,7 +112,7 @@ impl Interp {
                     continue;
                 }
                 ItemKind::Group(g) => {
-                    for v in self.eval_items(g)? {
+                    for v in self.nested(span, |it| it.eval_items(g))? {
                         out.push(Tok { kind: TokKind::Val(v), span, named: false });
                     }
                 }
@@ -155,7 +155,7 @@ impl Interp {
             ItemKind::Word(w) => Ok(self.store.get(w).cloned().unwrap_or_else(|| Value::mot(w))),
             ItemKind::Str(s) => Ok(Value::mot(s)),
             ItemKind::Group(g) => {
-                let mut v = self.eval_items(g)?;
+                let mut v = self.nested(it.span, |me| me.eval_items(g))?;
                 if v.len() != 1 {
                     return Err(Error::runtime("a table key must be one value").at(it.span));
                 }

@@ -13,7 +13,7 @@ pub use options::{FilePolicy, Options, Timers};
 use crate::error::{Error, ErrorKind, Result};
 use crate::fem::mesh::Nodes;
 use crate::ops::Registry;
-use crate::source::Source;
+use crate::source::{Source, Span};
 use crate::syntax::ast::Program;
 use env::Store;
 use std::io::Write;
@@ -42,9 +42,21 @@ pub struct Interp {
     /// sandbox against runaway `REPETER` loops).
     pub steps: u64,
     pub step_limit: Option<u64>,
+    /// Blocks, parenthesised groups and procedure calls being run inside
+    /// one another (see [`MAX_NESTING`]).
+    pub depth: usize,
     /// The last direct factorisations, reused by RESO (see ops::solver_cache).
     pub factors: crate::ops::solver_cache::FactorPool,
 }
+
+/// How deep blocks, parenthesised groups and procedure calls may run
+/// inside one another. The evaluator recurses on each, so the limit keeps
+/// the Rust stack bounded (about 1 MB in a release build, with the
+/// 200-deep limit on procedure calls): a deck nested too deep gets an
+/// error at the offending line, never a stack overflow. The parser already
+/// bounds the nesting inside one procedure body or one instruction; this
+/// catches nesting that piles up through recursive procedures.
+pub const MAX_NESTING: usize = 1000;
 
 /// How a statement ended.
 #[derive(Debug, Clone, PartialEq)]
@@ -71,6 +83,7 @@ impl Interp {
             called_proc: false,
             steps: 0,
             step_limit: None,
+            depth: 0,
             factors: Default::default(),
         }
     }
@@ -81,11 +94,31 @@ impl Interp {
         let _ = writeln!(self.out, "{}", s);
     }
 
+    /// Run `f` one nesting level deeper (a block body, a group, a
+    /// procedure call written at `span`), or refuse past [`MAX_NESTING`].
+    pub fn nested<T>(&mut self, span: Span, f: impl FnOnce(&mut Self) -> Result<T>) -> Result<T> {
+        if self.depth >= MAX_NESTING {
+            return Err(Error::runtime(format!(
+                "blocks, parentheses and procedure calls are nested more than {} deep",
+                MAX_NESTING
+            ))
+            .at(span));
+        }
+        self.depth += 1;
+        let r = f(self);
+        self.depth -= 1;
+        r
+    }
+
     /// Run a parsed program from `source`. Returns Ok(true) when `FIN ;`
     /// ended it.
     pub fn run_program(&mut self, prog: &Program, source: Rc<Source>) -> Result<bool> {
         let saved = std::mem::replace(&mut self.source, source);
+        let depth = self.depth;
         let r = self.exec_block(&prog.stmts);
+        // An operator that panicked inside a nested call may have skipped
+        // a decrement: the run always ends at the depth it started from.
+        self.depth = depth;
         self.source = saved;
         let _ = self.out.flush();
         let r = match r {

@@ -27,7 +27,7 @@ impl Interp {
         }
         frame.pending = std::mem::take(st);
         self.store.frames.push(frame);
-        let flow = self.exec_block(&p.body);
+        let flow = self.nested(span, |it| it.exec_block(&p.body));
         let flow = flow.and_then(|f| {
             let mut results = std::mem::take(&mut self.store.top_mut().results);
             if f == Flow::Next || f == Flow::Quit(p.name.clone()) {

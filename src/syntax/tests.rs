@@ -117,3 +117,35 @@ fn completeness_for_the_repl() {
     assert!(matches!(check_complete("x = 1) ;"), Completeness::Invalid(_)));
     assert!(matches!(check_complete("finsi ;"), Completeness::Invalid(_)));
 }
+
+#[test]
+fn reading_stops_at_a_top_level_fin() {
+    // Anything may follow a top-level FIN; a FIN inside a block is read on.
+    let p = parse("a = 1 ;\nfin ;\nnotes ' ( without ) si ;\n").unwrap();
+    assert_eq!(p.stmts.len(), 2);
+    let p = parse("si (a) ; fin ; finsi ; b = 2 ; fin ; ' garbage").unwrap();
+    assert_eq!(p.stmts.len(), 3);
+    assert!(parse("si (a) ; fin ; ' garbage").is_err());
+}
+
+#[test]
+fn statements_come_one_at_a_time_before_an_error() {
+    let mut r = Reader::new("a = 1 ;\nrepeter b 2 ; x = 1 ; fin b ;\nc = (2 ;\nd = 3 ;");
+    assert!(matches!(r.next(), Some(Ok(Stmt::Instr(_)))));
+    assert!(matches!(r.next(), Some(Ok(Stmt::Loop { .. }))));
+    let e = r.next().unwrap().unwrap_err();
+    assert_eq!(e.span.unwrap().start as usize, "a = 1 ;\nrepeter b 2 ; x = 1 ; fin b ;\nc = (2 ".len());
+    assert!(r.next().is_none());
+}
+
+#[test]
+fn deep_nesting_is_a_syntax_error() {
+    let parens = format!("x = {}1{} ;", "(".repeat(MAX_PAREN_DEPTH + 1), ")".repeat(MAX_PAREN_DEPTH + 1));
+    assert!(parse(&parens).unwrap_err().message.contains("nested"));
+    let ok = format!("x = {}1{} ;", "(".repeat(MAX_PAREN_DEPTH), ")".repeat(MAX_PAREN_DEPTH));
+    assert!(parse(&ok).is_ok());
+    let blocks = "si vrai ;\n".repeat(MAX_BLOCK_DEPTH + 1) + &"finsi ;\n".repeat(MAX_BLOCK_DEPTH + 1);
+    let e = parse(&blocks).unwrap_err();
+    assert!(e.message.contains("nested more than"), "{}", e.message);
+    assert_eq!(e.span.unwrap().start as usize, "si vrai ;\n".len() * MAX_BLOCK_DEPTH);
+}
