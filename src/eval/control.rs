@@ -29,15 +29,16 @@ impl Interp {
                 self.exec_instr(ins)?;
                 Ok(Flow::Next)
             }
-            Stmt::If { cond, then, otherwise, span } => {
-                self.echo(cond);
-                let c = self.condition(cond)?;
-                if c {
-                    self.nested(*span, |it| it.exec_block(then))
-                } else if let Some(o) = otherwise {
-                    self.nested(*span, |it| it.exec_block(o))
-                } else {
-                    Ok(Flow::Next)
+            Stmt::If { branches, otherwise, span } => {
+                for b in branches {
+                    self.echo(&b.cond);
+                    if self.condition(&b.cond)? {
+                        return self.nested(*span, |it| it.exec_block(&b.body));
+                    }
+                }
+                match otherwise {
+                    Some(o) => self.nested(*span, |it| it.exec_block(o)),
+                    None => Ok(Flow::Next),
                 }
             }
             Stmt::Loop { name, count, body, span } => self.nested(*span, |it| it.exec_loop(name, count.as_ref(), body)),

@@ -52,7 +52,7 @@ fn directive(ins: &Instr) -> Option<Directive> {
 }
 
 enum Open {
-    If { cond: Instr, then: Vec<Stmt>, otherwise: Option<Vec<Stmt>>, span: Span },
+    If { branches: Vec<Branch>, otherwise: Option<Vec<Stmt>>, span: Span },
     Loop { name: String, count: Option<Instr>, body: Vec<Stmt>, span: Span },
     Proc { name: String, params: Vec<Param>, body: Vec<Stmt>, span: Span },
 }
@@ -60,7 +60,10 @@ enum Open {
 impl Open {
     fn body(&mut self) -> &mut Vec<Stmt> {
         match self {
-            Open::If { then, otherwise, .. } => otherwise.as_mut().unwrap_or(then),
+            Open::If { branches, otherwise, .. } => match otherwise {
+                Some(o) => o,
+                None => &mut branches.last_mut().expect("an SI has its first branch").body,
+            },
             Open::Loop { body, .. } | Open::Proc { body, .. } => body,
         }
     }
@@ -130,21 +133,35 @@ impl Builder {
         let stmt = match directive(&ins) {
             None => Some(Stmt::Instr(ins)),
             Some(Directive::Si) => {
-                self.open(Open::If { cond: rest(&ins), then: vec![], otherwise: None, span })?;
+                let first = Branch { cond: rest(&ins), body: vec![] };
+                self.open(Open::If { branches: vec![first], otherwise: None, span })?;
                 None
             }
+            // `SINON ;` opens the last branch; `SINON cond ;` is an else-if
+            // (newer Cast3M), tried only when every condition before failed.
             Some(Directive::Sinon) => match self.stack.last_mut() {
-                Some(Open::If { otherwise, .. }) if otherwise.is_none() => {
-                    *otherwise = Some(vec![]);
+                Some(Open::If { otherwise: Some(_), .. }) => {
+                    return Err(Error::syntax("SINON after the SINON ; that opened the last branch", span))
+                }
+                Some(Open::If { branches, otherwise, .. }) => {
+                    let cond = rest(&ins);
+                    if cond.items.is_empty() {
+                        *otherwise = Some(vec![]);
+                    } else {
+                        branches.push(Branch { cond, body: vec![] });
+                    }
                     None
                 }
                 _ => return Err(Error::syntax("SINON without an open SI", span)),
             },
-            Some(Directive::Finsi) => match self.stack.pop() {
-                Some(Open::If { cond, then, otherwise, span: s }) => Some(Stmt::If { cond, then, otherwise, span: s }),
-                Some(o) => return Err(mismatch("FINSI", &o, span)),
-                None => return Err(Error::syntax("FINSI without an open SI", span)),
-            },
+            Some(Directive::Finsi) => {
+                nothing_after("FINSI", &ins)?;
+                match self.stack.pop() {
+                    Some(Open::If { branches, otherwise, span: s }) => Some(Stmt::If { branches, otherwise, span: s }),
+                    Some(o) => return Err(mismatch("FINSI", &o, span)),
+                    None => return Err(Error::syntax("FINSI without an open SI", span)),
+                }
+            }
             Some(Directive::Repeter) => {
                 let r = rest(&ins);
                 let (name, count) = loop_header(&r)
@@ -157,6 +174,12 @@ impl Builder {
                 match r.items.first().and_then(word_of) {
                     None if r.items.is_empty() => Some(Stmt::End { span }),
                     None => return Err(Error::syntax("FIN takes a block name or nothing", span)),
+                    Some(_) if r.items.len() > 1 => {
+                        return Err(Error::syntax(
+                            "FIN takes a block name or nothing",
+                            r.items[1..].iter().map(|i| i.span).reduce(Span::join).unwrap_or(span),
+                        ))
+                    }
                     Some(n) => match self.stack.pop() {
                         Some(Open::Loop { name, count, body, span: s }) if name == n => {
                             Some(Stmt::Loop { name, count, body, span: s })
@@ -207,6 +230,14 @@ impl Builder {
             Some(o) => Err(Error::syntax(format!("{} is never closed", o.describe()), o.span())),
             None => Ok(()),
         }
+    }
+}
+
+/// A closing directive written with something after it (`FINSI x ;`).
+fn nothing_after(directive: &str, ins: &Instr) -> Result<()> {
+    match ins.items.get(1..).and_then(|r| r.iter().map(|i| i.span).reduce(Span::join)) {
+        Some(extra) => Err(Error::syntax(format!("{} takes nothing after it", directive), extra)),
+        None => Ok(()),
     }
 }
 

@@ -149,3 +149,20 @@ fn deep_nesting_is_a_syntax_error() {
     assert!(e.message.contains("nested more than"), "{}", e.message);
     assert_eq!(e.span.unwrap().start as usize, "si vrai ;\n".len() * MAX_BLOCK_DEPTH);
 }
+
+#[test]
+fn else_if_and_closers_with_garbage() {
+    let p = parse("si a ; x = 1 ; sinon b ; x = 2 ; sinon c ; x = 3 ; sinon ; x = 4 ; finsi ;").unwrap();
+    match &p.stmts[0] {
+        Stmt::If { branches, otherwise: Some(o), .. } => {
+            assert_eq!(branches.len(), 3);
+            assert!(branches.iter().all(|b| b.body.len() == 1) && o.len() == 1);
+        }
+        s => panic!("{:?}", s),
+    }
+    assert!(parse("si a ; sinon ; sinon b ; finsi ;").is_err());
+    let e = parse("si a ; finsi garbage ;").unwrap_err();
+    assert_eq!((e.message.as_str(), e.span.unwrap().start), ("FINSI takes nothing after it", 13));
+    let e = parse("repeter b ; fin b garbage ;").unwrap_err();
+    assert_eq!((e.message.as_str(), e.span.unwrap().start), ("FIN takes a block name or nothing", 18));
+}
