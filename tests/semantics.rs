@@ -250,3 +250,14 @@ fn deep_nesting_is_an_error_not_a_crash() {
     assert!(e.message.contains("nested more than 1000 deep"), "{}", e.render());
     assert_eq!(e.location().unwrap().1, 2);
 }
+
+#[test]
+fn loop_counter_outlives_its_loop() {
+    let g = run("repeter b1 10 ; si (&b1 ega 4) ; quitter b1 ; finsi ; fin b1 ; n = &b1 ;\n\
+         debproc p ; finproc (&o * 2) ; repeter o 3 ; r = p ; fin o ;");
+    assert_eq!(num(&g, "n"), 4.0);
+    assert_eq!(num(&g, "r"), 6.0);
+    let mut g = Interpreter::new();
+    let e = g.run_str("t", "x = &zz ;").unwrap_err();
+    assert!(e.message.contains("no REPETER ZZ has run"), "{}", e.message);
+}

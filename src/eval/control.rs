@@ -117,7 +117,9 @@ impl Interp {
                 Ok(other) => break Ok(other),
             }
         };
-        self.store.top_mut().loops.pop();
+        let frame = self.store.top_mut();
+        frame.loops.pop();
+        frame.ended.insert(name.to_string(), pass);
         result
     }
 

@@ -141,7 +141,7 @@ impl Interp {
             ItemKind::Counter(n) => match self.store.counter(n) {
                 Some(c) => TokKind::Val(Value::Int(c)),
                 None => {
-                    return Err(Error::runtime(format!("&{}: no REPETER {} is running", n, n)).at(span));
+                    return Err(Error::runtime(format!("&{}: no REPETER {} has run", n, n)).at(span));
                 }
             },
             ItemKind::Sym(s) => TokKind::Sym(s),
