@@ -261,3 +261,13 @@ fn loop_counter_outlives_its_loop() {
     let e = g.run_str("t", "x = &zz ;").unwrap_err();
     assert!(e.message.contains("no REPETER ZZ has run"), "{}", e.message);
 }
+
+#[test]
+fn quitter_without_its_loop_is_located() {
+    let mut g = Interpreter::new();
+    let e = g.run_str("t", "a = 1 ;\nquitter zz ;").unwrap_err();
+    assert_eq!(e.location().map(|l| (l.1, l.2)), Some((2, 1)));
+    let e = g.run_str("t", "debproc p ;\n  iterer b ;\nfinproc ;\nrepeter b 2 ; x = p ; fin b ;").unwrap_err();
+    assert_eq!(e.location().map(|l| (l.1, l.2)), Some((2, 3)));
+    assert!(e.message.contains("inside procedure P"), "{}", e.message);
+}

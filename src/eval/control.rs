@@ -42,8 +42,8 @@ impl Interp {
                 }
             }
             Stmt::Loop { name, count, body, span } => self.nested(*span, |it| it.exec_loop(name, count.as_ref(), body)),
-            Stmt::Quit { name, .. } => Ok(Flow::Quit(name.clone())),
-            Stmt::Iter { name, .. } => Ok(Flow::Iter(name.clone())),
+            Stmt::Quit { name, span } => Ok(Flow::Quit(name.clone(), *span)),
+            Stmt::Iter { name, span } => Ok(Flow::Iter(name.clone(), *span)),
             Stmt::End { .. } => Ok(Flow::End),
             Stmt::Proc(p) => {
                 self.store.set(&p.name, Value::Proc(p.clone()));
@@ -112,8 +112,8 @@ impl Interp {
             match self.exec_block(body) {
                 Err(e) => break Err(e),
                 Ok(Flow::Next) => {}
-                Ok(Flow::Iter(q)) if q == name || q.is_empty() => {}
-                Ok(Flow::Quit(q)) if q == name || q.is_empty() => break Ok(Flow::Next),
+                Ok(Flow::Iter(q, _)) if q == name || q.is_empty() => {}
+                Ok(Flow::Quit(q, _)) if q == name || q.is_empty() => break Ok(Flow::Next),
                 Ok(other) => break Ok(other),
             }
         };

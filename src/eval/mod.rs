@@ -62,9 +62,32 @@ pub const MAX_NESTING: usize = 1000;
 #[derive(Debug, Clone, PartialEq)]
 pub enum Flow {
     Next,
-    Quit(String),
-    Iter(String),
+    /// `QUITTER name ;` written at the span, on its way to its block.
+    Quit(String, Span),
+    /// `ITERER name ;` written at the span.
+    Iter(String, Span),
     End,
+}
+
+impl Flow {
+    /// The error for a QUITTER/ITERER that reached no block of its name
+    /// (`within` names the procedure it could not leave, if any).
+    pub(crate) fn stray(&self, within: &str) -> Error {
+        let (directive, name, span) = match self {
+            Flow::Quit(n, s) => ("QUITTER", n, *s),
+            Flow::Iter(n, s) => ("ITERER", n, *s),
+            _ => unreachable!("only QUITTER and ITERER travel up"),
+        };
+        let (head, what) = match name.as_str() {
+            "" => (directive.to_string(), "no REPETER".to_string()),
+            n => (format!("{} {}", directive, n), format!("no REPETER {}", n)),
+        };
+        let msg = match within {
+            "" => format!("{}: {} is running", head, what),
+            p => format!("{}: {} is running inside procedure {}", head, what, p),
+        };
+        Error::runtime(msg).at(span)
+    }
 }
 
 impl Interp {
@@ -131,9 +154,7 @@ impl Interp {
                 Ok(true)
             }
             Flow::Next => Ok(false),
-            Flow::Quit(n) | Flow::Iter(n) => {
-                Err(Error::new(ErrorKind::Runtime, format!("QUITTER/ITERER {}: no such block is running", n)))
-            }
+            f @ (Flow::Quit(..) | Flow::Iter(..)) => Err(f.stray("")),
         }
     }
 }

@@ -28,9 +28,15 @@ impl Interp {
         frame.pending = std::mem::take(st);
         self.store.frames.push(frame);
         let flow = self.nested(span, |it| it.exec_block(&p.body));
+        // `QUITTER procname ;` (or a bare `QUITTER ;`) returns normally.
+        let returns = |f: &Flow| match f {
+            Flow::Next => true,
+            Flow::Quit(n, _) => *n == p.name || n.is_empty(),
+            _ => false,
+        };
         let flow = flow.and_then(|f| {
             let mut results = std::mem::take(&mut self.store.top_mut().results);
-            if f == Flow::Next || f == Flow::Quit(p.name.clone()) {
+            if returns(&f) {
                 results.extend(self.eval_items_raw(&p.results.items)?);
             }
             Ok((f, results))
@@ -39,17 +45,14 @@ impl Interp {
         *st = frame.pending;
         let (f, results) = flow?;
         match f {
-            Flow::Next => Ok(results),
-            Flow::Quit(n) if n == p.name || n.is_empty() => Ok(results),
+            f if returns(&f) => Ok(results),
             Flow::End => {
                 // `FIN ;` inside a procedure ends the whole run: carried up as
                 // an error of its own kind that run_program turns into Ok.
                 self.finished = true;
                 Err(Error::new(crate::error::ErrorKind::Finished, "FIN"))
             }
-            Flow::Quit(n) | Flow::Iter(n) => {
-                Err(Error::runtime(format!("{}: QUITTER/ITERER {} leaves no running block", p.name, n)).at(span))
-            }
+            f => Err(f.stray(&p.name)),
         }
     }
 
