@@ -271,3 +271,17 @@ fn quitter_without_its_loop_is_located() {
     assert_eq!(e.location().map(|l| (l.1, l.2)), Some((2, 3)));
     assert!(e.message.contains("inside procedure P"), "{}", e.message);
 }
+
+/// An error in a procedure body points into the text that defined it,
+/// even when the call comes from another file (a procedure library).
+#[test]
+fn procedure_errors_point_into_their_own_file() {
+    let mut g = Interpreter::new();
+    g.run_str("lib.dgibi", "debproc g x*flottant ;\n  y = x + 'a' ;\nfinproc y ;\n").unwrap();
+    let e = g.run_str("deck.dgibi", "* deck\nr = g 2. ;\n").unwrap_err();
+    let r = e.render();
+    assert!(r.starts_with("lib.dgibi:2:9: error: +"), "{}", r);
+    assert!(r.contains("2 |   y = x + 'a' ;"), "{}", r);
+    assert!(r.contains("= in procedure G called at deck.dgibi:2:5"), "{}", r);
+    assert_eq!(r.matches("objects:").count(), 1, "{}", r);
+}

@@ -46,6 +46,7 @@ impl Interp {
             Stmt::Iter { name, span } => Ok(Flow::Iter(name.clone(), *span)),
             Stmt::End { .. } => Ok(Flow::End),
             Stmt::Proc(p) => {
+                self.proc_sources.insert(super::proc::proc_key(p), self.source.clone());
                 self.store.set(&p.name, Value::Proc(p.clone()));
                 Ok(Flow::Next)
             }
@@ -183,7 +184,9 @@ impl Interp {
                 }
             }
         }
-        if e.kind != crate::error::ErrorKind::Runtime {
+        // An error from inside a procedure already lists the objects of
+        // the instruction that failed there; the call is in its trace.
+        if e.kind != crate::error::ErrorKind::Runtime || !e.trace.is_empty() {
             return e;
         }
         let mut names = Vec::new();

@@ -45,6 +45,9 @@ pub struct Interp {
     /// Blocks, parenthesised groups and procedure calls being run inside
     /// one another (see [`MAX_NESTING`]).
     pub depth: usize,
+    /// The text each procedure was defined in (by definition identity),
+    /// so errors in its body point into the right file.
+    pub proc_sources: rustc_hash::FxHashMap<usize, Rc<Source>>,
     /// The last direct factorisations, reused by RESO (see ops::solver_cache).
     pub factors: crate::ops::solver_cache::FactorPool,
 }
@@ -107,6 +110,7 @@ impl Interp {
             steps: 0,
             step_limit: None,
             depth: 0,
+            proc_sources: Default::default(),
             factors: Default::default(),
         }
     }
