@@ -285,3 +285,20 @@ fn procedure_errors_point_into_their_own_file() {
     assert!(r.contains("= in procedure G called at deck.dgibi:2:5"), "{}", r);
     assert_eq!(r.matches("objects:").count(), 1, "{}", r);
 }
+
+/// Any operator that takes no argument is evaluated where it is met: a
+/// value for an operand, still a word where an operator reads a keyword.
+#[test]
+fn operators_without_arguments_are_operands() {
+    let mut g = Interpreter::new();
+    g.register(gibi::OpSpec::host("UN", "UN", "One.", |_| Ok(vec![Value::Int(1)])));
+    g.register(gibi::OpSpec::host("SUPE", "SUPE", "A name that is also a keyword of ENTI.", |_| {
+        Ok(vec![Value::Int(99)])
+    }));
+    g.run_str("t", "x = 2 + un ; y = un + un ; i = enti 2.5 supe ; j = supe ; l = lect un 2 ;").unwrap();
+    assert_eq!(num(&g, "x"), 3.0);
+    assert_eq!(num(&g, "y"), 2.0);
+    assert_eq!(num(&g, "i"), 3.0);
+    assert_eq!(num(&g, "j"), 99.0);
+    assert!(matches!(g.get("l"), Some(Value::ListEnti(l)) if *l == vec![1, 2]));
+}

@@ -148,6 +148,7 @@ fn take_param(st: &mut GroupState, p: &Param, registry: &crate::ops::Registry) -
     }
     let next = match st.right.front().map(|t| &t.kind) {
         Some(TokKind::Val(v)) if !matches!(v, Value::Proc(_)) => Some(v.clone()),
+        Some(TokKind::Nullary { value, .. }) => Some(value.clone()),
         Some(TokKind::Quoted(s)) => Some(Value::Mot(s.clone())),
         Some(TokKind::Word(w)) if registry.find(w).is_none() => Some(Value::mot(w)),
         _ => None,

@@ -109,7 +109,9 @@ impl<'a> Args<'a> {
     pub fn describe_next(&self) -> String {
         match self.st.right.front().map(|t| &t.kind) {
             None => "nothing".into(),
-            Some(TokKind::Val(v)) => format!("{} {}", article(&v.type_name()), v.type_name()),
+            Some(TokKind::Val(v) | TokKind::Nullary { value: v, .. }) => {
+                format!("{} {}", article(&v.type_name()), v.type_name())
+            }
             Some(TokKind::Quoted(s)) => format!("the word '{}'", s),
             Some(TokKind::Word(w)) if self.registry.find(w).is_some() => {
                 format!("the operator {}", w)
@@ -126,7 +128,7 @@ impl<'a> Args<'a> {
     fn right_value(&self) -> Option<Value> {
         match self.st.right.front().map(|t| &t.kind)? {
             TokKind::Val(Value::Proc(_)) => None,
-            TokKind::Val(v) => Some(v.clone()),
+            TokKind::Val(v) | TokKind::Nullary { value: v, .. } => Some(v.clone()),
             TokKind::Quoted(s) => Some(Value::Mot(s.clone())),
             TokKind::Word(w) if self.registry.find(w).is_none() => Some(Value::mot(w)),
             _ => None,
@@ -235,7 +237,7 @@ impl<'a> Args<'a> {
     fn right_word(&self) -> Option<String> {
         match self.st.right.front().map(|t| &t.kind)? {
             TokKind::Quoted(s) => Some(s.to_string()),
-            TokKind::Word(w) => Some(w.clone()),
+            TokKind::Word(w) | TokKind::Nullary { word: w, .. } => Some(w.clone()),
             TokKind::Val(Value::Mot(s)) => Some(s.to_string()),
             TokKind::Sym(s) => Some(s.to_string()),
             _ => None,
@@ -288,6 +290,13 @@ impl<'a> Args<'a> {
     pub fn opt_mot(&mut self) -> Option<String> {
         self.opt::<String>()
     }
+}
+
+/// Whether an operator takes no argument at all (its signature is its
+/// name alone, like `PI`): such an operator is evaluated wherever it is
+/// met, so it can stand where a value is expected.
+pub fn takes_no_argument(op: &OpSpec) -> bool {
+    op.signature.split_whitespace().nth(1).is_none_or(|t| t == "->")
 }
 
 fn article(ty: &str) -> &'static str {
@@ -356,6 +365,7 @@ impl Args<'_> {
         for i in 0..self.st.right.len() {
             let v = match &self.st.right[i].kind {
                 TokKind::Val(v) if !matches!(v, Value::Proc(_)) => v.clone(),
+                TokKind::Nullary { value, .. } => value.clone(),
                 TokKind::Quoted(_) => continue,
                 TokKind::Word(w) if self.registry.find(w).is_none() => continue,
                 _ => return None,
