@@ -302,3 +302,17 @@ fn operators_without_arguments_are_operands() {
     assert_eq!(num(&g, "j"), 99.0);
     assert!(matches!(g.get("l"), Some(Value::ListEnti(l)) if *l == vec![1, 2]));
 }
+
+#[test]
+fn a_mot_object_naming_an_operator_calls_it() {
+    let out = Capture::default();
+    let mut g = Interpreter::builder().output(out.clone()).build();
+    g.run_str(
+        "t",
+        "ope = mot 'MESS' ; ope 'BONJOUR' ; op2 = mot 'MAXI' ; x = op2 (prog 1. 5.) ; w = mot 'UX' ; y = w ;",
+    )
+    .unwrap();
+    assert_eq!(out.text(), "BONJOUR\n");
+    assert_eq!(g.get_f64("x"), Some(5.0));
+    assert_eq!(g.get("y").unwrap().as_mot(), Some("UX"));
+}

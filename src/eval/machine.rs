@@ -202,6 +202,19 @@ impl Interp {
         let mut st = GroupState { left: Vec::new(), right: toks.into() };
         let mut ran = false;
         while let Some(t) = st.right.pop_front() {
+            // A MOT object written by its name in operator position calls
+            // the operator it names (`OPE = MOT 'MESS' ; OPE 'BONJOUR' ;`,
+            // mot.notice). An operator reading its arguments takes it
+            // before this point, as a word.
+            if let TokKind::Val(Value::Mot(s)) = &t.kind {
+                if t.named && wordlike(s) {
+                    if let Some(op) = self.registry.find(s) {
+                        self.invoke(op, &mut st, t.span)?;
+                        ran = true;
+                        continue;
+                    }
+                }
+            }
             ran |= !matches!(t.kind, TokKind::Val(ref v) if !matches!(v, Value::Proc(_)))
                 && !matches!(t.kind, TokKind::Nullary { .. });
             match t.kind {
