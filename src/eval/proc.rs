@@ -10,7 +10,7 @@ use crate::value::{Ty, Value};
 use std::rc::Rc;
 
 use super::env::Frame;
-use super::machine::{GroupState, TokKind};
+use super::machine::GroupState;
 
 impl Interp {
     pub fn call_proc(&mut self, p: Rc<ProcDef>, st: &mut GroupState, span: Span) -> Result<Vec<Value>> {
@@ -130,8 +130,8 @@ fn missing(proc_name: &str, p: &Param) -> Error {
     ))
 }
 
-/// One argument of a given type: among the pushed operands first (oldest
-/// first), else the next token on the right.
+/// One argument of a given type, read like an operator's: among the
+/// pushed operands first (oldest first), else in the right window.
 fn take_param(st: &mut GroupState, p: &Param, registry: &crate::ops::Registry) -> Result<Option<Value>> {
     let want = match &p.ty {
         Some(t) => Some(Ty::from_name(t).ok_or_else(|| Error::runtime(format!("unknown type {} for {}", t, p.name)))?),
@@ -142,24 +142,7 @@ fn take_param(st: &mut GroupState, p: &Param, registry: &crate::ops::Registry) -
         Some(Ty::Flottant) => v.is_number(),
         Some(t) => v.ty() == t,
     };
-    if let Some(i) = st.left.iter().position(fits) {
-        let v = st.left.remove(i);
-        return Ok(Some(coerce(v, want)));
-    }
-    let next = match st.right.front().map(|t| &t.kind) {
-        Some(TokKind::Val(v)) if !matches!(v, Value::Proc(_)) => Some(v.clone()),
-        Some(TokKind::Nullary { value, .. }) => Some(value.clone()),
-        Some(TokKind::Quoted(s)) => Some(Value::Mot(s.clone())),
-        Some(TokKind::Word(w)) if registry.find(w).is_none() => Some(Value::mot(w)),
-        _ => None,
-    };
-    match next {
-        Some(v) if fits(&v) => {
-            st.right.pop_front();
-            Ok(Some(coerce(v, want)))
-        }
-        _ => Ok(None),
-    }
+    Ok(crate::ops::take_typed(st, registry, |v| fits(v).then(|| v.clone())).map(|v| coerce(v, want)))
 }
 
 fn coerce(v: Value, want: Option<Ty>) -> Value {

@@ -64,7 +64,8 @@ pub(crate) const OPS: &[OpDef] = &[
     },
 ];
 
-/// The one numeric operand of a unary function: left (newest) or right.
+/// The one numeric operand of a unary function: left (newest), else the
+/// first number of the window (`ENTI 'PROC' 2.5`).
 fn num_arg(a: &mut Args) -> Result<f64> {
     if let Some(v) = a.left_top::<crate::ops::args::Num>() {
         return Ok(v.0);
@@ -72,7 +73,7 @@ fn num_arg(a: &mut Args) -> Result<f64> {
     if let Some(i) = a.left_top::<i64>() {
         return Ok(i as f64);
     }
-    a.opt_num_right().ok_or_else(|| a.missing("FLOTTANT"))
+    a.req_num()
 }
 
 fn unary(a: &mut Args, f: fn(f64) -> f64) -> Result<Vec<Value>> {
