@@ -97,7 +97,13 @@ fn push_item(items: &mut Vec<Item>, p: Pair<Rule>, base: usize) -> Result<()> {
                     span: Span::new(span.start as usize, span.start as usize + 1),
                 });
                 let rest = Span::new(span.start as usize + 1, span.end as usize);
-                items.push(Item { kind: number(&text[1..], rest)?, span: rest });
+                // `A-E2` subtracts the object E2: without its sign, a bare
+                // exponent is a name.
+                let kind = match text[1..].starts_with(|c: char| c.is_ascii_alphabetic()) {
+                    true => ItemKind::Word(text[1..].to_uppercase()),
+                    false => number(&text[1..], rest)?,
+                };
+                items.push(Item { kind, span: rest });
                 return Ok(());
             }
             match number(&text[1..], span)? {
@@ -151,6 +157,10 @@ fn symbol(s: &str) -> &'static str {
 /// significant digits, more turns it into a FLOTTANT); otherwise FLOTTANT.
 /// `D` and `Q` exponents are Fortran spellings of `E`.
 fn number(text: &str, span: Span) -> Result<ItemKind> {
+    // `E2` alone (from `-E2`): an exponent without mantissa, whose mantissa is 0.
+    if text.starts_with(|c: char| c.is_ascii_alphabetic()) {
+        return number(&format!("0{}", text), span);
+    }
     let is_float = text.contains(['.', 'e', 'E', 'd', 'D', 'q', 'Q']);
     let digits = text.trim_start_matches('0').len();
     if !is_float && digits <= 9 {

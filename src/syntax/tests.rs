@@ -24,6 +24,16 @@ fn sign_rule() {
 }
 
 #[test]
+fn a_sign_glued_to_an_exponent_is_a_number() {
+    // language.md §1: `-D5` or `-E2` lexes as a number (mantissa 0), since
+    // E and D are exponent letters; glued to a value, the sign subtracts.
+    assert_eq!(items("1 -e2 ;"), vec![Int(1), Float(-0.0)]);
+    assert_eq!(items("2 * +D5 ;"), vec![Int(2), Sym("*"), Float(0.0)]);
+    assert_eq!(items("A-E2 ;"), vec![Word("A".into()), Sym("-"), Word("E2".into())]);
+    assert_eq!(items("A -E2X ;"), vec![Word("A".into()), Sym("-"), Word("E2X".into())]);
+}
+
+#[test]
 fn numbers() {
     assert_eq!(
         items("1. .5 1.e-5 1D-13 2.1E11 1E-5 12 ;"),
