@@ -98,3 +98,20 @@ fn latin1_decks_are_accepted() {
         assert_eq!(String::from_utf8_lossy(&out.stdout), "à bientôt\n");
     }
 }
+
+/// A deck is read one instruction at a time: what precedes a syntax error
+/// runs (the error still exits 65 at its line), and notes after a
+/// top-level FIN are never read, by --check either.
+#[test]
+fn reading_is_incremental() {
+    let d = deck("partial.dgibi", "mess 'first' ;\nx = (1 ;\nmess 'never' ;\n");
+    let out = gibi().current_dir(d.parent().unwrap()).arg("partial.dgibi").output().unwrap();
+    assert_eq!(out.status.code(), Some(65));
+    assert_eq!(String::from_utf8_lossy(&out.stdout), "first\n");
+    assert!(String::from_utf8_lossy(&out.stderr).starts_with("partial.dgibi:2:8: syntax error"));
+    let notes = deck("notes.dgibi", "mess 'done' ;\nfin ;\nRemarques : l'auteur (2019\n");
+    let out = gibi().arg(&notes).output().unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    assert_eq!(String::from_utf8_lossy(&out.stdout), "done\n");
+    assert_eq!(gibi().arg("--check").arg(&notes).output().unwrap().status.code(), Some(0));
+}

@@ -316,3 +316,16 @@ fn a_mot_object_naming_an_operator_calls_it() {
     assert_eq!(g.get_f64("x"), Some(5.0));
     assert_eq!(g.get("y").unwrap().as_mot(), Some("UX"));
 }
+
+/// A procedure may return more results than the caller names: the extra
+/// ones are dropped (the acceptance deck 01_language relies on it:
+/// `z3 = carre 2. 2 ;` with FINPROC y y2). An operator's extra result is
+/// error 11 (language.md §4).
+#[test]
+fn extra_procedure_results_are_dropped_operator_results_are_not() {
+    let g = run("debproc two2 ; finproc 1 2 ; x = two2 ;");
+    assert_eq!(num(&g, "x"), 1.0);
+    let mut g = Interpreter::new();
+    let e = g.run_str("t", "x = 1 'a' ;").unwrap_err();
+    assert!(e.message.contains("error 11"), "{}", e.message);
+}
