@@ -51,7 +51,9 @@ pub(crate) const OPS: &[OpDef] = &[
     },
 ];
 
-/// Sequence builder shared by PROG and LECT.
+/// Sequence builder shared by PROG and LECT. Everything is read in the
+/// order written, from the next token (`PAS` belongs to the value just
+/// before it, not to one further on).
 fn sequence(a: &mut Args, int: bool) -> Result<Vec<f64>> {
     let mut out = Vec::new();
     loop {
@@ -62,9 +64,9 @@ fn sequence(a: &mut Args, int: bool) -> Result<Vec<f64>> {
                     return Err(a.err(format!("a repeat count must be a non-negative ENTIER, found {}", x)));
                 }
                 out.extend(std::iter::repeat_n(v, x as usize));
-            } else if a.keyword(&["PAS"]).is_some() {
+            } else if a.keyword_next(&["PAS"]).is_some() {
                 let step = a.opt_num_right().ok_or_else(|| a.missing("the step after PAS"))?;
-                if a.keyword(&["NPAS"]).is_some() {
+                if a.keyword_next(&["NPAS"]).is_some() {
                     let n = a.opt_num_right().ok_or_else(|| a.missing("the count after NPAS"))?;
                     for k in 0..=(n.max(0.0) as usize) {
                         out.push(x + k as f64 * step);
