@@ -1,7 +1,8 @@
-//! Text -> [`ast::Program`]. The only module that names pest: the grammar in
-//! `grammar/gibiane.pest` gives a flat list of instructions, [`lower`] turns
-//! pest pairs into our AST with byte spans, and [`structure`] rebuilds
-//! SI/REPETER/DEBPROC blocks.
+//! Text -> statements. The only module that names pest: [`Reader`] cuts the
+//! text into instructions and hands them one at a time to the grammar in
+//! `grammar/gibiane.pest`, `lower` turns pest pairs into our AST with
+//! byte spans, and `structure` rebuilds SI/REPETER/DEBPROC blocks as the
+//! instructions arrive. [`parse`] collects them into a [`ast::Program`].
 
 pub mod ast;
 mod errors;
