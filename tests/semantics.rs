@@ -329,3 +329,12 @@ fn extra_procedure_results_are_dropped_operator_results_are_not() {
     let e = g.run_str("t", "x = 1 'a' ;").unwrap_err();
     assert!(e.message.contains("error 11"), "{}", e.message);
 }
+
+/// A MOT that names an operator, followed by an operator or by nothing,
+/// is an operand: comparing a type name must not run the operator.
+#[test]
+fn a_mot_naming_an_operator_without_arguments_is_an_operand() {
+    let g = run("opti dime 2 ; p = 0. 0. ; k = bloq 'UX' p ; ty = type k ; b = ty ega 'RIGIDITE' ; c = ty ;");
+    assert!(matches!(g.get("b"), Some(Value::Bool(true))));
+    assert_eq!(g.get("c").unwrap().as_mot(), Some("RIGIDITE"));
+}

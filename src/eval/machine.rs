@@ -202,12 +202,15 @@ impl Interp {
         let mut st = GroupState { left: Vec::new(), right: toks.into() };
         let mut ran = false;
         while let Some(t) = st.right.pop_front() {
-            // A MOT object written by its name in operator position calls
-            // the operator it names (`OPE = MOT 'MESS' ; OPE 'BONJOUR' ;`,
-            // mot.notice). An operator reading its arguments takes it
-            // before this point, as a word.
+            // A MOT object written by its name in operator position, with
+            // an argument after it, calls the operator it names (`OPE =
+            // MOT 'MESS' ; OPE 'BONJOUR' ;`, mot.notice). An operator
+            // reading its arguments takes it before this point, as a word.
+            // Followed by an operator or by nothing, it stays an operand:
+            // `TY = TYPE K ; SI (TY EGA 'RIGIDITE')` must not run RIGI.
             if let TokKind::Val(Value::Mot(s)) = &t.kind {
-                if t.named && wordlike(s) {
+                let has_argument = st.right.front().is_some_and(|n| !crate::ops::ends_window(n, &self.registry));
+                if t.named && has_argument && wordlike(s) {
                     if let Some(op) = self.registry.find(s) {
                         self.invoke(op, &mut st, t.span)?;
                         ran = true;

@@ -289,7 +289,7 @@ impl<'a> Args<'a> {
         let (i, c) = found?;
         let right = &mut self.st.right;
         right.remove(i);
-        let end = (i..right.len()).find(|&j| is_boundary(&right[j], self.registry)).unwrap_or(right.len());
+        let end = (i..right.len()).find(|&j| ends_window(&right[j], self.registry)).unwrap_or(right.len());
         right.make_contiguous()[..end].rotate_left(i);
         Some(c)
     }
@@ -344,7 +344,7 @@ impl<'a> Args<'a> {
 
 /// Whether a right token ends an operator's window: a symbol, an operator
 /// word or a procedure, which run on their own when they are reached.
-fn is_boundary(t: &Tok, registry: &Registry) -> bool {
+pub fn ends_window(t: &Tok, registry: &Registry) -> bool {
     match &t.kind {
         TokKind::Sym(_) | TokKind::Val(Value::Proc(_)) => true,
         TokKind::Word(w) => registry.find(w).is_some(),
@@ -378,7 +378,7 @@ pub fn take_typed<T>(st: &mut GroupState, registry: &Registry, conv: impl Fn(&Va
     let reach = if st.left.is_empty() { st.right.len() } else { st.right.len().min(1) };
     for i in 0..reach {
         let t = &st.right[i];
-        if is_boundary(t, registry) {
+        if ends_window(t, registry) {
             return None;
         }
         if let Some(x) = with_value(t, &conv) {

@@ -24,7 +24,7 @@ pub mod solver_cache;
 mod superele;
 mod union;
 
-pub use args::{take_typed, takes_no_argument, Args, FromArg, PointId};
+pub use args::{ends_window, take_typed, takes_no_argument, Args, FromArg, PointId};
 
 use crate::error::Result;
 use crate::eval::Interp;
