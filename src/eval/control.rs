@@ -120,7 +120,13 @@ impl Interp {
         };
         let frame = self.store.top_mut();
         frame.loops.pop();
-        frame.ended.insert(name.to_string(), pass);
+        // An inner loop ends once per outer pass: reuse its entry.
+        match frame.ended.get_mut(name) {
+            Some(last) => *last = pass,
+            None => {
+                frame.ended.insert(name.to_string(), pass);
+            }
+        }
         result
     }
 
