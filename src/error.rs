@@ -34,11 +34,18 @@ pub struct Error {
     pub source: Option<Rc<Source>>,
     /// Extra lines printed after the excerpt (`usage: …`, objects involved).
     pub notes: Vec<String>,
+    /// The procedure calls the error crossed, innermost first
+    /// (`in procedure F called at deck.dgibi:12:5`).
+    pub trace: Vec<String>,
 }
+
+/// Calls shown at each end of a long trace (a runaway recursion crosses
+/// 200 calls; the middle of it says nothing more).
+const TRACE_ENDS: usize = 3;
 
 impl Error {
     pub fn new(kind: ErrorKind, message: impl Into<String>) -> Self {
-        Error { kind, message: message.into(), span: None, source: None, notes: Vec::new() }
+        Error { kind, message: message.into(), span: None, source: None, notes: Vec::new(), trace: Vec::new() }
     }
     pub fn runtime(message: impl Into<String>) -> Self {
         Error::new(ErrorKind::Runtime, message)
@@ -101,6 +108,20 @@ impl Error {
         }
         for n in &self.notes {
             out.push_str(&format!("  = {}\n", n));
+        }
+        let t = &self.trace;
+        if t.len() > 2 * TRACE_ENDS + 1 {
+            for c in &t[..TRACE_ENDS] {
+                out.push_str(&format!("  = {}\n", c));
+            }
+            out.push_str(&format!("  = … {} more procedure calls …\n", t.len() - 2 * TRACE_ENDS));
+            for c in &t[t.len() - TRACE_ENDS..] {
+                out.push_str(&format!("  = {}\n", c));
+            }
+        } else {
+            for c in t {
+                out.push_str(&format!("  = {}\n", c));
+            }
         }
         out
     }

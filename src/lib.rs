@@ -155,14 +155,22 @@ impl Interpreter {
         &self.interp.registry
     }
 
-    /// Parse and run a text. `name` is used in error locations.
+    /// Read and run a text, one statement at a time as Cast3M does: the
+    /// statements before a syntax error run, and nothing after a top-level
+    /// `FIN ;` is read. `name` is used in error locations.
     pub fn run_str(&mut self, name: &str, text: &str) -> Result<Outcome> {
         let src = Source::new(name, text);
-        let prog = syntax::parse(text).map_err(|mut e| {
-            e.source = Some(src.clone());
-            e
-        })?;
-        self.run_parsed(&prog, src)
+        for stmt in syntax::Reader::new(text) {
+            let stmt = stmt.map_err(|mut e| {
+                e.source = Some(src.clone());
+                e
+            })?;
+            let prog = syntax::ast::Program { stmts: vec![stmt] };
+            if self.run_parsed(&prog, src.clone())? == Outcome::Finished {
+                return Ok(Outcome::Finished);
+            }
+        }
+        Ok(Outcome::EndOfInput)
     }
 
     /// Run an already parsed program (the REPL parses to know whether the
@@ -177,12 +185,12 @@ impl Interpreter {
         Ok(if fin { Outcome::Finished } else { Outcome::EndOfInput })
     }
 
-    /// Read and run a file (named as given in error locations).
+    /// Read and run a file (named as given in error locations). Bytes that
+    /// are not UTF-8 are read as Latin-1 ([`source::decode`]).
     pub fn run_file(&mut self, path: impl AsRef<Path>) -> Result<Outcome> {
         let path = path.as_ref();
-        let text =
-            std::fs::read_to_string(path).map_err(|e| Error::io(format!("cannot read {}: {}", path.display(), e)))?;
-        self.run_str(&path.display().to_string(), &text)
+        let bytes = std::fs::read(path).map_err(|e| Error::io(format!("cannot read {}: {}", path.display(), e)))?;
+        self.run_str(&path.display().to_string(), &source::decode(&bytes))
     }
 
     /// The object bound to a name (names are upper-cased as in Gibiane).

@@ -59,3 +59,26 @@ impl Source {
         self.text.get(span.start as usize..span.end as usize).unwrap_or("")
     }
 }
+
+/// Deck bytes -> text. French Cast3M decks are often ISO-8859-1 (accents
+/// in comments and strings): valid UTF-8 is kept, and every byte that is
+/// not part of a valid UTF-8 sequence is read as Latin-1 (U+00XX), so no
+/// deck is refused for its encoding.
+pub fn decode(bytes: &[u8]) -> String {
+    let mut out = String::with_capacity(bytes.len());
+    for chunk in bytes.utf8_chunks() {
+        out.push_str(chunk.valid());
+        out.extend(chunk.invalid().iter().map(|&b| char::from(b)));
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn latin1_bytes_become_their_code_points() {
+        // "é" in UTF-8, then "é" and "à" in Latin-1.
+        let s = super::decode(b"caf\xc3\xa9 \xe9t\xe9 \xe0");
+        assert_eq!(s, "café été à");
+    }
+}

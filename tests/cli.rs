@@ -69,3 +69,49 @@ fn every_operator_is_documented() {
         }
     }
 }
+
+/// French decks in ISO-8859-1 run: bytes that are not UTF-8 are read as
+/// Latin-1, in files, on stdin and in -e.
+#[test]
+fn latin1_decks_are_accepted() {
+    let text: &[u8] = b"* D\xe9formation de la poutre\nmess 'r\xe9sultat' ;\nfin ;\n";
+    let dir = std::env::temp_dir().join(format!("gibi-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let p = dir.join("latin1.dgibi");
+    std::fs::write(&p, text).unwrap();
+    let out = gibi().arg(&p).output().unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(String::from_utf8_lossy(&out.stdout), "résultat\n");
+
+    let mut child = gibi().arg("-").stdin(Stdio::piped()).stdout(Stdio::piped()).spawn().unwrap();
+    child.stdin.take().unwrap().write_all(text).unwrap();
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    assert_eq!(String::from_utf8_lossy(&out.stdout), "résultat\n");
+
+    #[cfg(unix)]
+    {
+        use std::os::unix::ffi::OsStrExt;
+        let arg = std::ffi::OsStr::from_bytes(b"mess '\xe0 bient\xf4t' ;");
+        let out = gibi().arg("-e").arg(arg).output().unwrap();
+        assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+        assert_eq!(String::from_utf8_lossy(&out.stdout), "à bientôt\n");
+    }
+}
+
+/// A deck is read one instruction at a time: what precedes a syntax error
+/// runs (the error still exits 65 at its line), and notes after a
+/// top-level FIN are never read, by --check either.
+#[test]
+fn reading_is_incremental() {
+    let d = deck("partial.dgibi", "mess 'first' ;\nx = (1 ;\nmess 'never' ;\n");
+    let out = gibi().current_dir(d.parent().unwrap()).arg("partial.dgibi").output().unwrap();
+    assert_eq!(out.status.code(), Some(65));
+    assert_eq!(String::from_utf8_lossy(&out.stdout), "first\n");
+    assert!(String::from_utf8_lossy(&out.stderr).starts_with("partial.dgibi:2:8: syntax error"));
+    let notes = deck("notes.dgibi", "mess 'done' ;\nfin ;\nRemarques : l'auteur (2019\n");
+    let out = gibi().arg(&notes).output().unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    assert_eq!(String::from_utf8_lossy(&out.stdout), "done\n");
+    assert_eq!(gibi().arg("--check").arg(&notes).output().unwrap().status.code(), Some(0));
+}

@@ -11,7 +11,7 @@ fn run_deck(path: &Path) -> String {
     let dir = path.parent().unwrap().canonicalize().unwrap();
     let mut gibi = Interpreter::builder().output(out.clone()).files(FilePolicy::Under(dir)).build();
     let name = path.file_name().unwrap().to_string_lossy().to_string();
-    let text = std::fs::read_to_string(path).unwrap();
+    let text = gibi::source::decode(&std::fs::read(path).unwrap());
     let result = gibi.run_str(&name, &text);
     let expect_error = name.starts_with("err_");
     let mut transcript = out.text();

@@ -212,3 +212,129 @@ fn errors_point_at_the_operator_with_usage() {
     // Objects defined before the error survive.
     assert_eq!(g.get_f64("a"), Some(1.0));
 }
+
+#[test]
+fn statements_before_a_syntax_error_run() {
+    let mut g = Interpreter::new();
+    let e = g.run_str("t", "a = 1 ;\nb = 'open ;\nc = 3 ;").unwrap_err();
+    assert_eq!(e.kind, gibi::ErrorKind::Syntax);
+    assert_eq!(g.get_f64("a"), Some(1.0));
+    assert!(g.get("c").is_none());
+    // Nothing after a top-level FIN is read.
+    let mut g = Interpreter::new();
+    assert_eq!(g.run_str("t", "a = 2 ; fin ; ceci n'est pas ( du Gibiane").unwrap(), gibi::Outcome::Finished);
+    assert_eq!(g.get_f64("a"), Some(2.0));
+}
+
+/// Deep nesting is an error at the offending line, never a stack overflow
+/// (this runs on a test thread's 2 MB stack).
+#[test]
+fn deep_nesting_is_an_error_not_a_crash() {
+    let mut g = Interpreter::new();
+    let si = "si vrai ;\n".repeat(16_000) + &"finsi ;\n".repeat(16_000);
+    let e = g.run_str("t", &si).unwrap_err();
+    assert_eq!(e.kind, gibi::ErrorKind::Syntax);
+    assert_eq!(e.location().unwrap().1, gibi::syntax::MAX_BLOCK_DEPTH + 1);
+    let rep: String = (0..20_000).map(|i| format!("repeter b{} 1 ;\n", i)).collect();
+    assert!(g.run_str("t", &rep).unwrap_err().message.contains("nested more than"));
+    let parens = format!("x = {}1{} ;", "(".repeat(50_000), ")".repeat(50_000));
+    assert!(g.run_str("t", &parens).unwrap_err().message.contains("nested more than"));
+    // Nesting that piles up through a recursive procedure stops at the
+    // runtime limit, at the line that goes one level too deep.
+    let src = format!(
+        "debproc f k*entier ;\n{}\nsi (k > 0) ; r = f (k - 1) ; sinon ; r = 0 ; finsi ;\n{}\nfinproc r ;\ny = f 1000 ;",
+        "si vrai ; ".repeat(90),
+        "finsi ; ".repeat(90)
+    );
+    let e = g.run_str("t", &src).unwrap_err();
+    assert!(e.message.contains("nested more than 1000 deep"), "{}", e.render());
+    assert_eq!(e.location().unwrap().1, 2);
+}
+
+#[test]
+fn loop_counter_outlives_its_loop() {
+    let g = run("repeter b1 10 ; si (&b1 ega 4) ; quitter b1 ; finsi ; fin b1 ; n = &b1 ;\n\
+         debproc p ; finproc (&o * 2) ; repeter o 3 ; r = p ; fin o ;");
+    assert_eq!(num(&g, "n"), 4.0);
+    assert_eq!(num(&g, "r"), 6.0);
+    let mut g = Interpreter::new();
+    let e = g.run_str("t", "x = &zz ;").unwrap_err();
+    assert!(e.message.contains("no REPETER ZZ has run"), "{}", e.message);
+}
+
+#[test]
+fn quitter_without_its_loop_is_located() {
+    let mut g = Interpreter::new();
+    let e = g.run_str("t", "a = 1 ;\nquitter zz ;").unwrap_err();
+    assert_eq!(e.location().map(|l| (l.1, l.2)), Some((2, 1)));
+    let e = g.run_str("t", "debproc p ;\n  iterer b ;\nfinproc ;\nrepeter b 2 ; x = p ; fin b ;").unwrap_err();
+    assert_eq!(e.location().map(|l| (l.1, l.2)), Some((2, 3)));
+    assert!(e.message.contains("inside procedure P"), "{}", e.message);
+}
+
+/// An error in a procedure body points into the text that defined it,
+/// even when the call comes from another file (a procedure library).
+#[test]
+fn procedure_errors_point_into_their_own_file() {
+    let mut g = Interpreter::new();
+    g.run_str("lib.dgibi", "debproc g x*flottant ;\n  y = x + 'a' ;\nfinproc y ;\n").unwrap();
+    let e = g.run_str("deck.dgibi", "* deck\nr = g 2. ;\n").unwrap_err();
+    let r = e.render();
+    assert!(r.starts_with("lib.dgibi:2:9: error: +"), "{}", r);
+    assert!(r.contains("2 |   y = x + 'a' ;"), "{}", r);
+    assert!(r.contains("= in procedure G called at deck.dgibi:2:5"), "{}", r);
+    assert_eq!(r.matches("objects:").count(), 1, "{}", r);
+}
+
+/// Any operator that takes no argument is evaluated where it is met: a
+/// value for an operand, still a word where an operator reads a keyword.
+#[test]
+fn operators_without_arguments_are_operands() {
+    let mut g = Interpreter::new();
+    g.register(gibi::OpSpec::host("UN", "UN", "One.", |_| Ok(vec![Value::Int(1)])));
+    g.register(gibi::OpSpec::host("SUPE", "SUPE", "A name that is also a keyword of ENTI.", |_| {
+        Ok(vec![Value::Int(99)])
+    }));
+    g.run_str("t", "x = 2 + un ; y = un + un ; i = enti 2.5 supe ; j = supe ; l = lect un 2 ;").unwrap();
+    assert_eq!(num(&g, "x"), 3.0);
+    assert_eq!(num(&g, "y"), 2.0);
+    assert_eq!(num(&g, "i"), 3.0);
+    assert_eq!(num(&g, "j"), 99.0);
+    assert!(matches!(g.get("l"), Some(Value::ListEnti(l)) if *l == vec![1, 2]));
+}
+
+#[test]
+fn a_mot_object_naming_an_operator_calls_it() {
+    let out = Capture::default();
+    let mut g = Interpreter::builder().output(out.clone()).build();
+    g.run_str(
+        "t",
+        "ope = mot 'MESS' ; ope 'BONJOUR' ; op2 = mot 'MAXI' ; x = op2 (prog 1. 5.) ; w = mot 'UX' ; y = w ;",
+    )
+    .unwrap();
+    assert_eq!(out.text(), "BONJOUR\n");
+    assert_eq!(g.get_f64("x"), Some(5.0));
+    assert_eq!(g.get("y").unwrap().as_mot(), Some("UX"));
+}
+
+/// A procedure may return more results than the caller names: the extra
+/// ones are dropped (the acceptance deck 01_language relies on it:
+/// `z3 = carre 2. 2 ;` with FINPROC y y2). An operator's extra result is
+/// error 11 (language.md §4).
+#[test]
+fn extra_procedure_results_are_dropped_operator_results_are_not() {
+    let g = run("debproc two2 ; finproc 1 2 ; x = two2 ;");
+    assert_eq!(num(&g, "x"), 1.0);
+    let mut g = Interpreter::new();
+    let e = g.run_str("t", "x = 1 'a' ;").unwrap_err();
+    assert!(e.message.contains("error 11"), "{}", e.message);
+}
+
+/// A MOT that names an operator, followed by an operator or by nothing,
+/// is an operand: comparing a type name must not run the operator.
+#[test]
+fn a_mot_naming_an_operator_without_arguments_is_an_operand() {
+    let g = run("opti dime 2 ; p = 0. 0. ; k = bloq 'UX' p ; ty = type k ; b = ty ega 'RIGIDITE' ; c = ty ;");
+    assert!(matches!(g.get("b"), Some(Value::Bool(true))));
+    assert_eq!(g.get("c").unwrap().as_mot(), Some("RIGIDITE"));
+}

@@ -29,22 +29,24 @@ impl Interp {
                 self.exec_instr(ins)?;
                 Ok(Flow::Next)
             }
-            Stmt::If { cond, then, otherwise, .. } => {
-                self.echo(cond);
-                let c = self.condition(cond)?;
-                if c {
-                    self.exec_block(then)
-                } else if let Some(o) = otherwise {
-                    self.exec_block(o)
-                } else {
-                    Ok(Flow::Next)
+            Stmt::If { branches, otherwise, span } => {
+                for b in branches {
+                    self.echo(&b.cond);
+                    if self.condition(&b.cond)? {
+                        return self.nested(*span, |it| it.exec_block(&b.body));
+                    }
+                }
+                match otherwise {
+                    Some(o) => self.nested(*span, |it| it.exec_block(o)),
+                    None => Ok(Flow::Next),
                 }
             }
-            Stmt::Loop { name, count, body, .. } => self.exec_loop(name, count.as_ref(), body),
-            Stmt::Quit { name, .. } => Ok(Flow::Quit(name.clone())),
-            Stmt::Iter { name, .. } => Ok(Flow::Iter(name.clone())),
+            Stmt::Loop { name, count, body, span } => self.nested(*span, |it| it.exec_loop(name, count.as_ref(), body)),
+            Stmt::Quit { name, span } => Ok(Flow::Quit(name.clone(), *span)),
+            Stmt::Iter { name, span } => Ok(Flow::Iter(name.clone(), *span)),
             Stmt::End { .. } => Ok(Flow::End),
             Stmt::Proc(p) => {
+                self.proc_sources.insert(super::proc::proc_key(p), self.source.clone());
                 self.store.set(&p.name, Value::Proc(p.clone()));
                 Ok(Flow::Next)
             }
@@ -111,12 +113,20 @@ impl Interp {
             match self.exec_block(body) {
                 Err(e) => break Err(e),
                 Ok(Flow::Next) => {}
-                Ok(Flow::Iter(q)) if q == name || q.is_empty() => {}
-                Ok(Flow::Quit(q)) if q == name || q.is_empty() => break Ok(Flow::Next),
+                Ok(Flow::Iter(q, _)) if q == name || q.is_empty() => {}
+                Ok(Flow::Quit(q, _)) if q == name || q.is_empty() => break Ok(Flow::Next),
                 Ok(other) => break Ok(other),
             }
         };
-        self.store.top_mut().loops.pop();
+        let frame = self.store.top_mut();
+        frame.loops.pop();
+        // An inner loop ends once per outer pass: reuse its entry.
+        match frame.ended.get_mut(name) {
+            Some(last) => *last = pass,
+            None => {
+                frame.ended.insert(name.to_string(), pass);
+            }
+        }
         result
     }
 
@@ -180,7 +190,9 @@ impl Interp {
                 }
             }
         }
-        if e.kind != crate::error::ErrorKind::Runtime {
+        // An error from inside a procedure already lists the objects of
+        // the instruction that failed there; the call is in its trace.
+        if e.kind != crate::error::ErrorKind::Runtime || !e.trace.is_empty() {
             return e;
         }
         let mut names = Vec::new();

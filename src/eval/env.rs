@@ -19,6 +19,10 @@ pub struct Frame {
     pub results: Vec<Value>,
     /// Active loops of this frame: (name, pass number).
     pub loops: Vec<(String, i64)>,
+    /// Loops of this frame that have ended, with their last pass number:
+    /// in Cast3M `&name` is an ordinary ENTIER that outlives its loop
+    /// (`NITER = &BOU1 ;` after the loop or after QUITTER).
+    pub ended: HashMap<String, i64>,
 }
 
 #[derive(Debug)]
@@ -76,9 +80,15 @@ impl Store {
         self.frames.last_mut().expect("the global frame always exists")
     }
 
+    /// `&name`: the innermost running loop of that name, else the last
+    /// pass of an ended one, looked up from the current frame down to the
+    /// global one (a procedure body reads its caller's objects, loop
+    /// counters included).
     pub fn counter(&self, name: &str) -> Option<i64> {
         let name = truncate(name);
-        self.top().loops.iter().rev().find(|(n, _)| n == name).map(|(_, i)| *i)
+        self.frames.iter().rev().find_map(|f| {
+            f.loops.iter().rev().find(|(n, _)| n == name).map(|(_, i)| *i).or_else(|| f.ended.get(name).copied())
+        })
     }
 
     /// Names visible from the current frame, sorted, with their values.

@@ -23,6 +23,10 @@ pub enum TokKind {
     Quoted(Rc<str>),
     /// An unquoted word that names no object: an operator, else a MOT.
     Word(String),
+    /// An operator that takes no argument (`PI`), already evaluated: a
+    /// value for whoever reads an operand, still a word for whoever reads
+    /// a keyword.
+    Nullary { word: String, value: Value },
     /// `+ - * / ** < > <EG >EG %`.
     Sym(&'static str),
 }
@@ -112,19 +116,44 @@ impl Interp {
                     continue;
                 }
                 ItemKind::Group(g) => {
-                    for v in self.eval_items(g)? {
+                    for v in self.nested(span, |it| it.eval_items(g))? {
                         out.push(Tok { kind: TokKind::Val(v), span, named: false });
                     }
                 }
                 kind => {
                     let named = matches!(kind, ItemKind::Word(_));
-                    let kind = self.resolve(kind, span)?;
-                    out.push(Tok { kind, span, named });
+                    match self.resolve(kind, span)? {
+                        TokKind::Word(w) => self.word_token(w, span, &mut out)?,
+                        kind => out.push(Tok { kind, span, named }),
+                    }
                 }
             }
             i += 1;
         }
         Ok(out)
+    }
+
+    /// An unquoted word that names no object. An operator that takes no
+    /// argument is evaluated where it is met, as Cast3M does, so it can
+    /// stand wherever a value can: `2. * PI`, `MESS PI`, `P = PI PI`,
+    /// `PROG 0. PI`.
+    fn word_token(&mut self, w: String, span: Span, out: &mut Vec<Tok>) -> Result<()> {
+        let op = match self.registry.find(&w) {
+            Some(op) if crate::ops::takes_no_argument(&op) => op,
+            _ => {
+                out.push(Tok { kind: TokKind::Word(w), span, named: true });
+                return Ok(());
+            }
+        };
+        let mut st = GroupState::default();
+        self.invoke(op, &mut st, span)?;
+        if st.left.len() == 1 {
+            let value = st.left.pop().expect("one result");
+            out.push(Tok { kind: TokKind::Nullary { word: w, value }, span, named: true });
+        } else {
+            out.extend(st.left.into_iter().map(|v| Tok { kind: TokKind::Val(v), span, named: false }));
+        }
+        Ok(())
     }
 
     fn resolve(&self, kind: &ItemKind, span: Span) -> Result<TokKind> {
@@ -141,7 +170,7 @@ impl Interp {
             ItemKind::Counter(n) => match self.store.counter(n) {
                 Some(c) => TokKind::Val(Value::Int(c)),
                 None => {
-                    return Err(Error::runtime(format!("&{}: no REPETER {} is running", n, n)).at(span));
+                    return Err(Error::runtime(format!("&{}: no REPETER {} has run", n, n)).at(span));
                 }
             },
             ItemKind::Sym(s) => TokKind::Sym(s),
@@ -155,7 +184,7 @@ impl Interp {
             ItemKind::Word(w) => Ok(self.store.get(w).cloned().unwrap_or_else(|| Value::mot(w))),
             ItemKind::Str(s) => Ok(Value::mot(s)),
             ItemKind::Group(g) => {
-                let mut v = self.eval_items(g)?;
+                let mut v = self.nested(it.span, |me| me.eval_items(g))?;
                 if v.len() != 1 {
                     return Err(Error::runtime("a table key must be one value").at(it.span));
                 }
@@ -173,8 +202,26 @@ impl Interp {
         let mut st = GroupState { left: Vec::new(), right: toks.into() };
         let mut ran = false;
         while let Some(t) = st.right.pop_front() {
-            ran |= !matches!(t.kind, TokKind::Val(ref v) if !matches!(v, Value::Proc(_)));
+            // A MOT object written by its name in operator position, with
+            // an argument after it, calls the operator it names (`OPE =
+            // MOT 'MESS' ; OPE 'BONJOUR' ;`, mot.notice). An operator
+            // reading its arguments takes it before this point, as a word.
+            // Followed by an operator or by nothing, it stays an operand:
+            // `TY = TYPE K ; SI (TY EGA 'RIGIDITE')` must not run RIGI.
+            if let TokKind::Val(Value::Mot(s)) = &t.kind {
+                let has_argument = st.right.front().is_some_and(|n| !crate::ops::ends_window(n, &self.registry));
+                if t.named && has_argument && wordlike(s) {
+                    if let Some(op) = self.registry.find(s) {
+                        self.invoke(op, &mut st, t.span)?;
+                        ran = true;
+                        continue;
+                    }
+                }
+            }
+            ran |= !matches!(t.kind, TokKind::Val(ref v) if !matches!(v, Value::Proc(_)))
+                && !matches!(t.kind, TokKind::Nullary { .. });
             match t.kind {
+                TokKind::Nullary { value, .. } => st.left.push(value),
                 TokKind::Val(Value::Proc(p)) => {
                     let r = self.call_proc(p, &mut st, t.span)?;
                     self.called_proc = true;

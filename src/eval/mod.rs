@@ -13,7 +13,7 @@ pub use options::{FilePolicy, Options, Timers};
 use crate::error::{Error, ErrorKind, Result};
 use crate::fem::mesh::Nodes;
 use crate::ops::Registry;
-use crate::source::Source;
+use crate::source::{Source, Span};
 use crate::syntax::ast::Program;
 use env::Store;
 use std::io::Write;
@@ -42,17 +42,55 @@ pub struct Interp {
     /// sandbox against runaway `REPETER` loops).
     pub steps: u64,
     pub step_limit: Option<u64>,
+    /// Blocks, parenthesised groups and procedure calls being run inside
+    /// one another (see [`MAX_NESTING`]).
+    pub depth: usize,
+    /// The text each procedure was defined in (by definition identity),
+    /// so errors in its body point into the right file.
+    pub proc_sources: rustc_hash::FxHashMap<usize, Rc<Source>>,
     /// The last direct factorisations, reused by RESO (see ops::solver_cache).
     pub factors: crate::ops::solver_cache::FactorPool,
 }
+
+/// How deep blocks, parenthesised groups and procedure calls may run
+/// inside one another. The evaluator recurses on each, so the limit keeps
+/// the Rust stack bounded (about 1 MB in a release build, with the
+/// 200-deep limit on procedure calls): a deck nested too deep gets an
+/// error at the offending line, never a stack overflow. The parser already
+/// bounds the nesting inside one procedure body or one instruction; this
+/// catches nesting that piles up through recursive procedures.
+pub const MAX_NESTING: usize = 1000;
 
 /// How a statement ended.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Flow {
     Next,
-    Quit(String),
-    Iter(String),
+    /// `QUITTER name ;` written at the span, on its way to its block.
+    Quit(String, Span),
+    /// `ITERER name ;` written at the span.
+    Iter(String, Span),
     End,
+}
+
+impl Flow {
+    /// The error for a QUITTER/ITERER that reached no block of its name
+    /// (`within` names the procedure it could not leave, if any).
+    pub(crate) fn stray(&self, within: &str) -> Error {
+        let (directive, name, span) = match self {
+            Flow::Quit(n, s) => ("QUITTER", n, *s),
+            Flow::Iter(n, s) => ("ITERER", n, *s),
+            _ => unreachable!("only QUITTER and ITERER travel up"),
+        };
+        let (head, what) = match name.as_str() {
+            "" => (directive.to_string(), "no REPETER".to_string()),
+            n => (format!("{} {}", directive, n), format!("no REPETER {}", n)),
+        };
+        let msg = match within {
+            "" => format!("{}: {} is running", head, what),
+            p => format!("{}: {} is running inside procedure {}", head, what, p),
+        };
+        Error::runtime(msg).at(span)
+    }
 }
 
 impl Interp {
@@ -71,6 +109,8 @@ impl Interp {
             called_proc: false,
             steps: 0,
             step_limit: None,
+            depth: 0,
+            proc_sources: Default::default(),
             factors: Default::default(),
         }
     }
@@ -81,11 +121,31 @@ impl Interp {
         let _ = writeln!(self.out, "{}", s);
     }
 
+    /// Run `f` one nesting level deeper (a block body, a group, a
+    /// procedure call written at `span`), or refuse past [`MAX_NESTING`].
+    pub fn nested<T>(&mut self, span: Span, f: impl FnOnce(&mut Self) -> Result<T>) -> Result<T> {
+        if self.depth >= MAX_NESTING {
+            return Err(Error::runtime(format!(
+                "blocks, parentheses and procedure calls are nested more than {} deep",
+                MAX_NESTING
+            ))
+            .at(span));
+        }
+        self.depth += 1;
+        let r = f(self);
+        self.depth -= 1;
+        r
+    }
+
     /// Run a parsed program from `source`. Returns Ok(true) when `FIN ;`
     /// ended it.
     pub fn run_program(&mut self, prog: &Program, source: Rc<Source>) -> Result<bool> {
         let saved = std::mem::replace(&mut self.source, source);
+        let depth = self.depth;
         let r = self.exec_block(&prog.stmts);
+        // An operator that panicked inside a nested call may have skipped
+        // a decrement: the run always ends at the depth it started from.
+        self.depth = depth;
         self.source = saved;
         let _ = self.out.flush();
         let r = match r {
@@ -98,9 +158,7 @@ impl Interp {
                 Ok(true)
             }
             Flow::Next => Ok(false),
-            Flow::Quit(n) | Flow::Iter(n) => {
-                Err(Error::new(ErrorKind::Runtime, format!("QUITTER/ITERER {}: no such block is running", n)))
-            }
+            f @ (Flow::Quit(..) | Flow::Iter(..)) => Err(f.stray("")),
         }
     }
 }

@@ -10,7 +10,7 @@ use crate::value::{Ty, Value};
 use std::rc::Rc;
 
 use super::env::Frame;
-use super::machine::{GroupState, TokKind};
+use super::machine::GroupState;
 
 impl Interp {
     pub fn call_proc(&mut self, p: Rc<ProcDef>, st: &mut GroupState, span: Span) -> Result<Vec<Value>> {
@@ -26,31 +26,64 @@ impl Interp {
             }
         }
         frame.pending = std::mem::take(st);
-        self.store.frames.push(frame);
-        let flow = self.exec_block(&p.body);
-        let flow = flow.and_then(|f| {
-            let mut results = std::mem::take(&mut self.store.top_mut().results);
-            if f == Flow::Next || f == Flow::Quit(p.name.clone()) {
-                results.extend(self.eval_items_raw(&p.results.items)?);
+        // The body's spans point into the text that defined it, which may
+        // be another file or an earlier REPL entry.
+        let defined_in = self.proc_sources.get(&proc_key(&p)).cloned().unwrap_or_else(|| self.source.clone());
+        self.nested(span, |it| {
+            it.store.frames.push(frame);
+            let caller_source = std::mem::replace(&mut it.source, defined_in);
+            let r = it.run_body(&p);
+            it.source = caller_source;
+            let frame = it.store.frames.pop().expect("pushed above");
+            *st = frame.pending;
+            r.map_err(|e| it.called_from(e, &p.name, span))
+        })
+    }
+
+    /// The body of a called procedure and its results, in its own frame.
+    fn run_body(&mut self, p: &ProcDef) -> Result<Vec<Value>> {
+        // `QUITTER procname ;` (or a bare `QUITTER ;`) returns normally.
+        let returns = |f: &Flow| match f {
+            Flow::Next => true,
+            Flow::Quit(n, _) => *n == p.name || n.is_empty(),
+            _ => false,
+        };
+        let r = match self.exec_block(&p.body) {
+            Err(e) => Err(e),
+            Ok(f) if returns(&f) => {
+                let mut results = std::mem::take(&mut self.store.top_mut().results);
+                self.eval_items_raw(&p.results.items).map(|r| {
+                    results.extend(r);
+                    results
+                })
             }
-            Ok((f, results))
-        });
-        let frame = self.store.frames.pop().expect("pushed above");
-        *st = frame.pending;
-        let (f, results) = flow?;
-        match f {
-            Flow::Next => Ok(results),
-            Flow::Quit(n) if n == p.name || n.is_empty() => Ok(results),
-            Flow::End => {
+            Ok(Flow::End) => {
                 // `FIN ;` inside a procedure ends the whole run: carried up as
                 // an error of its own kind that run_program turns into Ok.
                 self.finished = true;
                 Err(Error::new(crate::error::ErrorKind::Finished, "FIN"))
             }
-            Flow::Quit(n) | Flow::Iter(n) => {
-                Err(Error::runtime(format!("{}: QUITTER/ITERER {} leaves no running block", p.name, n)).at(span))
+            Ok(f) => Err(f.stray(&p.name)),
+        };
+        // An error located in the body is located in the body's text.
+        r.map_err(|mut e| {
+            if e.span.is_some() && e.source.is_none() {
+                e.source = Some(self.source.clone());
             }
+            e
+        })
+    }
+
+    /// An error leaving procedure `name`, called at `span`: one line of
+    /// call trace (the failing instruction inside already said which
+    /// objects it used).
+    fn called_from(&self, mut e: Error, name: &str, span: Span) -> Error {
+        if e.kind != crate::error::ErrorKind::Finished {
+            let (line, col) = self.source.line_col(span.start);
+            e = e.with_span_if_missing(span, &self.source);
+            e.trace.push(format!("in procedure {} called at {}:{}:{}", name, self.source.name, line, col));
         }
+        e
     }
 
     /// ARGU: read more arguments of the current call.
@@ -82,6 +115,12 @@ impl Interp {
     }
 }
 
+/// Identity of a procedure definition (the same text defines the same
+/// procedure however many names it is bound to).
+pub(super) fn proc_key(p: &Rc<ProcDef>) -> usize {
+    Rc::as_ptr(p) as usize
+}
+
 fn missing(proc_name: &str, p: &Param) -> Error {
     Error::runtime(format!(
         "procedure {}: argument {}*{} is missing",
@@ -91,8 +130,8 @@ fn missing(proc_name: &str, p: &Param) -> Error {
     ))
 }
 
-/// One argument of a given type: among the pushed operands first (oldest
-/// first), else the next token on the right.
+/// One argument of a given type, read like an operator's: among the
+/// pushed operands first (oldest first), else in the right window.
 fn take_param(st: &mut GroupState, p: &Param, registry: &crate::ops::Registry) -> Result<Option<Value>> {
     let want = match &p.ty {
         Some(t) => Some(Ty::from_name(t).ok_or_else(|| Error::runtime(format!("unknown type {} for {}", t, p.name)))?),
@@ -103,23 +142,7 @@ fn take_param(st: &mut GroupState, p: &Param, registry: &crate::ops::Registry) -
         Some(Ty::Flottant) => v.is_number(),
         Some(t) => v.ty() == t,
     };
-    if let Some(i) = st.left.iter().position(fits) {
-        let v = st.left.remove(i);
-        return Ok(Some(coerce(v, want)));
-    }
-    let next = match st.right.front().map(|t| &t.kind) {
-        Some(TokKind::Val(v)) if !matches!(v, Value::Proc(_)) => Some(v.clone()),
-        Some(TokKind::Quoted(s)) => Some(Value::Mot(s.clone())),
-        Some(TokKind::Word(w)) if registry.find(w).is_none() => Some(Value::mot(w)),
-        _ => None,
-    };
-    match next {
-        Some(v) if fits(&v) => {
-            st.right.pop_front();
-            Ok(Some(coerce(v, want)))
-        }
-        _ => Ok(None),
-    }
+    Ok(crate::ops::take_typed(st, registry, |v| fits(v).then(|| v.clone())).map(|v| coerce(v, want)))
 }
 
 fn coerce(v: Value, want: Option<Ty>) -> Value {

@@ -1,15 +1,20 @@
 //! `Args`: how an operator reads its arguments, and the only place where
 //! argument and arity errors are worded.
 //!
-//! Cast3M's rule (language.md §2): an operator looks for an argument of the
-//! type it wants among the operands already pushed in the instruction
-//! (oldest first), then at the next token on its right. Keywords are read
-//! as words on the right, whatever they would otherwise mean
-//! (`BLOQ 'MINI' …` reads MINI as a word even though MINI is an operator).
+//! Cast3M's rule (language.md §2 rule 4): an operator looks for an argument
+//! of the type it wants among the operands already pushed in the
+//! instruction (oldest first), then further right, so arguments of
+//! different types come in almost any order (`EXTR 2 L` = `EXTR L 2`).
+//! On the right it reads its *window*: the tokens up to the next symbol,
+//! operator word or procedure, which belong to the operators that follow.
+//! Keywords are read as words in the window, whatever they would otherwise
+//! mean (`MINI L 'ABS'` reads ABS as MINI's keyword, not as the operator).
+//! The `_right` and `_next` readers look at the next token only, for
+//! operators that read a sequence in order (PROG, MOTS).
 
 use super::{OpSpec, Registry};
 use crate::error::{Error, Result};
-use crate::eval::machine::{GroupState, TokKind};
+use crate::eval::machine::{GroupState, Tok, TokKind};
 use crate::fem::mesh::Mesh;
 use crate::source::Span;
 use crate::value::{Chpoint, Evolution, Mchaml, Model, Rigidite, Table, Value};
@@ -82,10 +87,13 @@ pub struct Args<'a> {
     pub span: Span,
 }
 
-/// Compare keywords on their first 4 letters (`'MINIMUM'` = `'MINI'`).
+/// Compare keywords on their first 4 letters (`'MINIMUM'` = `'MINI'`). A
+/// choice of fewer letters is itself a short form and matches the words
+/// it begins (`'ABS'` and `'ABSOLU'` both give `ABS`).
 pub fn keyword_matches(word: &str, choice: &str) -> bool {
     let k = |s: &str| s.chars().take(4).collect::<String>();
-    k(word) == k(choice)
+    let (w, c) = (k(word), k(choice));
+    w == c || (c.chars().count() < 4 && w.starts_with(&c))
 }
 
 impl<'a> Args<'a> {
@@ -109,7 +117,9 @@ impl<'a> Args<'a> {
     pub fn describe_next(&self) -> String {
         match self.st.right.front().map(|t| &t.kind) {
             None => "nothing".into(),
-            Some(TokKind::Val(v)) => format!("{} {}", article(&v.type_name()), v.type_name()),
+            Some(TokKind::Val(v) | TokKind::Nullary { value: v, .. }) => {
+                format!("{} {}", article(&v.type_name()), v.type_name())
+            }
             Some(TokKind::Quoted(s)) => format!("the word '{}'", s),
             Some(TokKind::Word(w)) if self.registry.find(w).is_some() => {
                 format!("the operator {}", w)
@@ -126,7 +136,7 @@ impl<'a> Args<'a> {
     fn right_value(&self) -> Option<Value> {
         match self.st.right.front().map(|t| &t.kind)? {
             TokKind::Val(Value::Proc(_)) => None,
-            TokKind::Val(v) => Some(v.clone()),
+            TokKind::Val(v) | TokKind::Nullary { value: v, .. } => Some(v.clone()),
             TokKind::Quoted(s) => Some(Value::Mot(s.clone())),
             TokKind::Word(w) if self.registry.find(w).is_none() => Some(Value::mot(w)),
             _ => None,
@@ -134,10 +144,7 @@ impl<'a> Args<'a> {
     }
 
     fn take_with<T>(&mut self, conv: impl Fn(&Value) -> Option<T>) -> Option<T> {
-        if let Some(i) = self.st.left.iter().position(|v| conv(v).is_some()) {
-            return conv(&self.st.left.remove(i));
-        }
-        self.take_right_with(conv)
+        take_typed(self.st, self.registry, conv)
     }
 
     fn take_right_with<T>(&mut self, conv: impl Fn(&Value) -> Option<T>) -> Option<T> {
@@ -149,6 +156,15 @@ impl<'a> Args<'a> {
     /// An optional argument of type T: pushed operands first, then right.
     pub fn opt<T: FromArg>(&mut self) -> Option<T> {
         self.take_with(T::from_value)
+    }
+
+    /// An argument that `conv` accepts, found like [`opt`](Self::opt). An
+    /// operator that takes one of several types reads them in one go (a
+    /// POINT or a MAILLAGE: whichever comes first), never one type after
+    /// the other, which would reach past the other type to a later
+    /// argument.
+    pub fn opt_with<T>(&mut self, conv: impl Fn(&Value) -> Option<T>) -> Option<T> {
+        self.take_with(conv)
     }
 
     /// A required argument of type T.
@@ -235,16 +251,52 @@ impl<'a> Args<'a> {
     fn right_word(&self) -> Option<String> {
         match self.st.right.front().map(|t| &t.kind)? {
             TokKind::Quoted(s) => Some(s.to_string()),
-            TokKind::Word(w) => Some(w.clone()),
+            TokKind::Word(w) | TokKind::Nullary { word: w, .. } => Some(w.clone()),
             TokKind::Val(Value::Mot(s)) => Some(s.to_string()),
             TokKind::Sym(s) => Some(s.to_string()),
             _ => None,
         }
     }
 
-    /// If the next right token is one of `choices` (4-letter match),
-    /// consume it and return the choice as written in the table.
+    /// One of `choices` (4-letter match), consumed, as written in the
+    /// table: the next token, else the first word of the window past the
+    /// objects written before it (`MINI L 'ABS'`, `MAXI (LECT 1 4)
+    /// 'ABSOLU'`, `MAXI L ABS`: a matching operator word is a keyword
+    /// here). Another word there is not passed: keywords keep their place
+    /// among words. What followed a keyword found further right is brought
+    /// to the front, so that the keyword's own value is read next
+    /// (`P1 D 10 P2 'DINI' 0.1` reads 0.1 for DINI, not 10).
     pub fn keyword(&mut self, choices: &[&'static str]) -> Option<&'static str> {
+        if let Some(c) = self.keyword_next(choices) {
+            return Some(c);
+        }
+        let right = &self.st.right;
+        let mut found = None;
+        for (i, t) in right.iter().enumerate() {
+            let word = match &t.kind {
+                TokKind::Quoted(s) | TokKind::Val(Value::Mot(s)) => s.to_string(),
+                TokKind::Word(w) | TokKind::Nullary { word: w, .. } => w.clone(),
+                TokKind::Val(Value::Proc(_)) | TokKind::Sym(_) => break,
+                TokKind::Val(_) => continue,
+            };
+            if let Some(c) = choices.iter().find(|c| keyword_matches(&word, c)) {
+                found = Some((i, *c));
+            }
+            if found.is_some() || !matches!(t.kind, TokKind::Nullary { .. }) {
+                break;
+            }
+        }
+        let (i, c) = found?;
+        let right = &mut self.st.right;
+        right.remove(i);
+        let end = (i..right.len()).find(|&j| ends_window(&right[j], self.registry)).unwrap_or(right.len());
+        right.make_contiguous()[..end].rotate_left(i);
+        Some(c)
+    }
+
+    /// Like [`keyword`](Self::keyword), but only the next token (a keyword
+    /// at a fixed place of a sequence: `PROG 0. PAS 0.5 2.`).
+    pub fn keyword_next(&mut self, choices: &[&'static str]) -> Option<&'static str> {
         let w = self.right_word()?;
         let c = choices.iter().find(|c| keyword_matches(&w, c))?;
         self.st.right.pop_front();
@@ -288,6 +340,60 @@ impl<'a> Args<'a> {
     pub fn opt_mot(&mut self) -> Option<String> {
         self.opt::<String>()
     }
+}
+
+/// Whether a right token ends an operator's window: a symbol, an operator
+/// word or a procedure, which run on their own when they are reached.
+pub fn ends_window(t: &Tok, registry: &Registry) -> bool {
+    match &t.kind {
+        TokKind::Sym(_) | TokKind::Val(Value::Proc(_)) => true,
+        TokKind::Word(w) => registry.find(w).is_some(),
+        TokKind::Val(_) | TokKind::Nullary { .. } | TokKind::Quoted(_) => false,
+    }
+}
+
+/// Call `f` on the value a right token stands for as an argument.
+fn with_value<R>(t: &Tok, f: impl FnOnce(&Value) -> R) -> R {
+    match &t.kind {
+        TokKind::Val(v) | TokKind::Nullary { value: v, .. } => f(v),
+        TokKind::Quoted(s) => f(&Value::Mot(s.clone())),
+        TokKind::Word(w) => f(&Value::mot(w)),
+        TokKind::Sym(s) => f(&Value::mot(s)),
+    }
+}
+
+/// One argument that `conv` accepts: among the pushed operands first
+/// (oldest first), else the first one in the right window. Operators and
+/// procedures read their typed arguments this way.
+///
+/// While pushed operands are still waiting, only the next token is
+/// looked at on the right: the operator was written after its first
+/// arguments (`GEO ROTA 12 90. CENTRE`), and an operator that accepts one
+/// of several types (a POINT or a MAILLAGE) must find the one waiting on
+/// the left before it looks far to the right.
+pub fn take_typed<T>(st: &mut GroupState, registry: &Registry, conv: impl Fn(&Value) -> Option<T>) -> Option<T> {
+    if let Some(i) = st.left.iter().position(|v| conv(v).is_some()) {
+        return conv(&st.left.remove(i));
+    }
+    let reach = if st.left.is_empty() { st.right.len() } else { st.right.len().min(1) };
+    for i in 0..reach {
+        let t = &st.right[i];
+        if ends_window(t, registry) {
+            return None;
+        }
+        if let Some(x) = with_value(t, &conv) {
+            st.right.remove(i);
+            return Some(x);
+        }
+    }
+    None
+}
+
+/// Whether an operator takes no argument at all (its signature is its
+/// name alone, like `PI`): such an operator is evaluated wherever it is
+/// met, so it can stand where a value is expected.
+pub fn takes_no_argument(op: &OpSpec) -> bool {
+    op.signature.split_whitespace().nth(1).is_none_or(|t| t == "->")
 }
 
 fn article(ty: &str) -> &'static str {
@@ -346,25 +452,11 @@ impl Args<'_> {
 }
 
 impl Args<'_> {
-    /// Like [`opt`](Self::opt), but on the right it also looks past words
-    /// (never past an operator or a symbol): `EXCO 'UX' u` reads the field
-    /// after the component, as the notices write it.
+    /// The same as [`opt`](Self::opt), which looks through the whole
+    /// window: `EXCO 'UX' u` reads the field after the component, as the
+    /// notices write it.
     pub fn find<T: FromArg>(&mut self) -> Option<T> {
-        if let Some(t) = self.opt::<T>() {
-            return Some(t);
-        }
-        for i in 0..self.st.right.len() {
-            let v = match &self.st.right[i].kind {
-                TokKind::Val(v) if !matches!(v, Value::Proc(_)) => v.clone(),
-                TokKind::Quoted(_) => continue,
-                TokKind::Word(w) if self.registry.find(w).is_none() => continue,
-                _ => return None,
-            };
-            let t = T::from_value(&v)?;
-            self.st.right.remove(i);
-            return Some(t);
-        }
-        None
+        self.opt::<T>()
     }
 
     /// A required argument found by [`find`](Self::find).

@@ -366,10 +366,11 @@ fn picture_path(it: &mut Interp) -> Result<Option<(plot::Format, PathBuf)>> {
     Ok(Some((format, out_path(it, &name)?)))
 }
 
-/// Title from `'TITR' text`, else the deck's TITR; other words, numbers
-/// and lists are options of Cast3M's graphics and are skipped.
-fn skip_options(it: &Interp, a: &mut Args, title: &mut String) {
-    *title = it.title.clone();
+/// Title from `'TITR' text` (`title` starts as the deck's TITR); other
+/// words, numbers and lists are options of Cast3M's graphics and are
+/// skipped. Called between arguments: a 'TITR' found ahead of them sets
+/// the title once, later calls keep it.
+fn skip_options(a: &mut Args, title: &mut String) {
     while a.keyword(&["TITR"]).is_some() {
         if let Some(w) = a.word_not_operator() {
             *title = w;
@@ -378,11 +379,11 @@ fn skip_options(it: &Interp, a: &mut Args, title: &mut String) {
 }
 
 fn trac(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let mut title = String::new();
+    let mut title = it.title.clone();
     let mut meshes = Vec::new();
     let mut field: Option<(Rc<Chpoint>, Option<Mesh>)> = None;
     loop {
-        skip_options(it, a, &mut title);
+        skip_options(a, &mut title);
         let Some(v) = a.right_any() else { break };
         let mesh = match v {
             Value::Mesh(m) => (*m).clone(),
@@ -430,10 +431,10 @@ fn nodal_field(c: &Chpoint, mesh: Mesh) -> plot::NodalField {
 }
 
 fn dess(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let mut title = String::new();
+    let mut title = it.title.clone();
     let mut evols: Vec<Rc<Evolution>> = Vec::new();
     loop {
-        skip_options(it, a, &mut title);
+        skip_options(a, &mut title);
         match a.right_any() {
             Some(Value::Evol(e)) => evols.push(e),
             Some(_) => {}

@@ -154,10 +154,16 @@ fn exco_mchaml(a: &mut Args, m: &Mchaml) -> Result<Vec<Value>> {
 }
 
 fn exco(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    if let Some(m) = a.find::<Rc<Mchaml>>() {
-        return exco_mchaml(a, &m);
-    }
-    let ch = a.req_find::<Rc<Chpoint>>()?;
+    // An MCHAML or a CHPOINT, whichever comes first.
+    let ch = match a.opt_with(|v| match v {
+        Value::Mchaml(m) => Some(Err(m.clone())),
+        Value::Chpo(c) => Some(Ok(c.clone())),
+        _ => None,
+    }) {
+        Some(Ok(c)) => c,
+        Some(Err(m)) => return exco_mchaml(a, &m),
+        None => return Err(a.missing("CHPOINT or MCHAML")),
+    };
     let comps = comp_list(a).ok_or_else(|| a.missing("a component"))?;
     let noid = a.keyword(&["NOID"]).is_some();
     let new = comp_list(a);

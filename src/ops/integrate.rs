@@ -95,8 +95,16 @@ fn intg(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     }
     let per_elem = a.keyword(&["ELEM"]).is_some();
     let model = a.req::<Rc<Model>>()?;
-    let field = a.find::<Rc<Mchaml>>();
-    let chpo = if field.is_none() { Some(a.req_find::<Rc<Chpoint>>()?) } else { None };
+    // The field is an MCHAML or a CHPOINT, read in one go: looking for an
+    // MCHAML first would reach past the CHPOINT to the CARA field.
+    let (field, chpo) = match a.opt_with(|v| match v {
+        Value::Mchaml(m) => Some((Some(m.clone()), None)),
+        Value::Chpo(c) => Some((None, Some(c.clone()))),
+        _ => None,
+    }) {
+        Some(f) => f,
+        None => return Err(a.missing("MCHAML or CHPOINT (the field to integrate)")),
+    };
     let comp = match (&field, &chpo) {
         (Some(f), _) => component(a, mchaml_comps(f))?,
         (_, Some(c)) => component(a, c.components())?,

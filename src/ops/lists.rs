@@ -58,8 +58,10 @@ pub(crate) const OPS: &[OpDef] = &[
     },
 ];
 
-/// Sequence builder shared by PROG and LECT. Every count is checked
-/// before it is allocated ([`limits`]).
+/// Sequence builder shared by PROG and LECT. Everything is read in the
+/// order written, from the next token (`PAS` belongs to the value just
+/// before it, not to one further on), and every count is checked before
+/// it is allocated ([`limits`]).
 fn sequence(a: &mut Args, int: bool) -> Result<Vec<f64>> {
     let mut out = Vec::new();
     loop {
@@ -68,9 +70,9 @@ fn sequence(a: &mut Args, int: bool) -> Result<Vec<f64>> {
                 let v = a.opt_num_right().ok_or_else(|| a.missing("a value after '*'"))?;
                 let n = limits::room(a, out.len(), x)?;
                 out.extend(std::iter::repeat_n(v, n));
-            } else if a.keyword(&["PAS"]).is_some() {
+            } else if a.keyword_next(&["PAS"]).is_some() {
                 let step = a.opt_num_right().ok_or_else(|| a.missing("the step after PAS"))?;
-                if a.keyword(&["NPAS"]).is_some() {
+                if a.keyword_next(&["NPAS"]).is_some() {
                     let n = a.opt_num_right().ok_or_else(|| a.missing("the count after NPAS"))?;
                     let n = limits::room(a, out.len(), n.max(0.0) + 1.0)?;
                     out.extend((0..n).map(|k| x + k as f64 * step));

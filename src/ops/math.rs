@@ -124,7 +124,7 @@ impl FromArg for Numeric {
 /// The operand of a one-argument function: the newest pushed value when
 /// it holds numbers (`(x - 1.) abs`), else the next one on the right.
 fn operand(a: &mut Args) -> Result<Value> {
-    match a.left_top::<Numeric>().or_else(|| a.opt_right::<Numeric>()) {
+    match a.left_top::<Numeric>().or_else(|| a.opt::<Numeric>()) {
         Some(n) => Ok(n.0),
         None => Err(a.missing(Numeric::EXPECT)),
     }
@@ -228,8 +228,12 @@ fn word_number(a: &Args, s: &str) -> Result<f64> {
 }
 
 fn enti(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    // The rounding word may come before the value (`ENTI 'PROC' 2.5`):
+    // read it first there, or the MOT would be taken for the value.
+    const ROUNDING: &[&str] = &["INFE", "SUPE", "PROC"];
+    let before = a.keyword_next(ROUNDING);
     let v = numeric_or_mot(a)?;
-    let round: fn(f64) -> f64 = match a.keyword(&["INFE", "SUPE", "PROC"]) {
+    let round: fn(f64) -> f64 = match before.or_else(|| a.keyword(ROUNDING)) {
         Some("INFE") => f64::floor,
         Some("SUPE") => f64::ceil,
         Some(_) => f64::round,

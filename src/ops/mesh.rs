@@ -67,12 +67,14 @@ fn coor(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     Err(a.missing("POINT or MAILLAGE"))
 }
 
-/// A POINT (as a POI1 mesh) or a MAILLAGE.
+/// A POINT (as a POI1 mesh) or a MAILLAGE, whichever comes first
+/// (`TRAN L (0. 1.) 3` reads L, not the vector).
 pub(crate) fn opt_geo(a: &mut Args) -> Option<Mesh> {
-    if let Some(p) = a.opt::<PointId>() {
-        return Some(Mesh::points(&[p.0]));
-    }
-    a.opt::<Rc<Mesh>>().map(|m| (*m).clone())
+    a.opt_with(|v| match v {
+        Value::Point(p) => Some(Mesh::points(&[*p])),
+        Value::Mesh(m) => Some((**m).clone()),
+        _ => None,
+    })
 }
 
 pub(crate) fn req_geo(a: &mut Args) -> Result<Mesh> {

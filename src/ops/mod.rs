@@ -33,7 +33,7 @@ mod tables;
 pub mod unimplemented;
 mod union;
 
-pub use args::{Args, FromArg, PointId};
+pub use args::{ends_window, take_typed, takes_no_argument, Args, FromArg, PointId};
 
 use crate::error::Result;
 use crate::eval::Interp;

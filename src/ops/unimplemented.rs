@@ -133,7 +133,10 @@ fn stub(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 pub(crate) fn ops() -> impl Iterator<Item = OpDef> {
     MISSING.iter().map(|m| OpDef {
         name: m.key,
-        signature: m.name,
+        // Not a bare name: an operator whose signature is its name alone
+        // takes no argument and is evaluated wherever it is met (PI), which
+        // would stop `OPTI SAUV 'f'` at the key SAUV.
+        signature: "(no usage: a Cast3M name that gibi does not implement)",
         doc: "A Cast3M name that gibi does not implement.",
         example: "",
         f: stub,

@@ -58,9 +58,10 @@ pub struct Param {
 #[derive(Debug, Clone, PartialEq)]
 pub enum Stmt {
     Instr(Instr),
+    /// `SI c1 ; … (SINON c2 ; …)* (SINON ; …) FINSI ;`: the first branch
+    /// whose condition is VRAI runs, else `otherwise`.
     If {
-        cond: Instr,
-        then: Vec<Stmt>,
+        branches: Vec<Branch>,
         otherwise: Option<Vec<Stmt>>,
         span: Span,
     },
@@ -90,6 +91,13 @@ pub enum Stmt {
     End {
         span: Span,
     },
+}
+
+/// One conditional branch: `SI cond ;` or the else-if `SINON cond ;`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Branch {
+    pub cond: Instr,
+    pub body: Vec<Stmt>,
 }
 
 /// `DEBPROC name params ; body FINPROC results ;`

@@ -1,5 +1,7 @@
 //! pest pairs -> AST. One function per rule family; spans are converted to
 //! our own byte spans at every node, so no pest type escapes this module.
+//! pest sees one instruction at a time: `base` is where that instruction
+//! starts in the whole text, added to every span.
 
 use super::ast::*;
 use super::parser::Rule;
@@ -7,14 +9,14 @@ use crate::error::{Error, Result};
 use crate::source::Span;
 use pest::iterators::Pair;
 
-fn span_of(p: &Pair<Rule>) -> Span {
+fn span_of(p: &Pair<Rule>, base: usize) -> Span {
     let s = p.as_span();
-    Span::new(s.start(), s.end())
+    Span::new(base + s.start(), base + s.end())
 }
 
 /// Lower one `instruction` pair.
-pub fn instruction(p: Pair<Rule>) -> Result<Instr> {
-    let span = span_of(&p);
+pub fn instruction(p: Pair<Rule>, base: usize) -> Result<Instr> {
+    let span = span_of(&p, base);
     let mut targets = Vec::new();
     let mut items = Vec::new();
     for c in p.into_inner() {
@@ -22,19 +24,19 @@ pub fn instruction(p: Pair<Rule>) -> Result<Instr> {
             Rule::assign => {
                 for t in c.into_inner() {
                     if t.as_rule() == Rule::target {
-                        targets.push(target(t)?);
+                        targets.push(target(t, base)?);
                     }
                 }
             }
             Rule::semicolon => {}
-            _ => push_item(&mut items, c)?,
+            _ => push_item(&mut items, c, base)?,
         }
     }
     Ok(Instr { targets, items, span })
 }
 
-fn target(p: Pair<Rule>) -> Result<Target> {
-    let span = span_of(&p);
+fn target(p: Pair<Rule>, base: usize) -> Result<Target> {
+    let span = span_of(&p, base);
     let mut name = String::new();
     let mut typed = None;
     let mut keys = Vec::new();
@@ -46,7 +48,7 @@ fn target(p: Pair<Rule>) -> Result<Target> {
                 typed = n;
             }
             Rule::dot => {}
-            _ => push_item(&mut keys, c)?,
+            _ => push_item(&mut keys, c, base)?,
         }
     }
     Ok(Target { name, typed, keys, span })
@@ -69,8 +71,8 @@ fn glued_to_previous(items: &[Item], span: Span) -> bool {
     items.last().is_some_and(|prev| prev.span.end == span.start && value_like(prev))
 }
 
-fn push_item(items: &mut Vec<Item>, p: Pair<Rule>) -> Result<()> {
-    let span = span_of(&p);
+fn push_item(items: &mut Vec<Item>, p: Pair<Rule>, base: usize) -> Result<()> {
+    let span = span_of(&p, base);
     let kind = match p.as_rule() {
         Rule::number => {
             let text = p.as_str();
@@ -95,7 +97,13 @@ fn push_item(items: &mut Vec<Item>, p: Pair<Rule>) -> Result<()> {
                     span: Span::new(span.start as usize, span.start as usize + 1),
                 });
                 let rest = Span::new(span.start as usize + 1, span.end as usize);
-                items.push(Item { kind: number(&text[1..], rest)?, span: rest });
+                // `A-E2` subtracts the object E2: without its sign, a bare
+                // exponent is a name.
+                let kind = match text[1..].starts_with(|c: char| c.is_ascii_alphabetic()) {
+                    true => ItemKind::Word(text[1..].to_uppercase()),
+                    false => number(&text[1..], rest)?,
+                };
+                items.push(Item { kind, span: rest });
                 return Ok(());
             }
             match number(&text[1..], span)? {
@@ -119,7 +127,7 @@ fn push_item(items: &mut Vec<Item>, p: Pair<Rule>) -> Result<()> {
             let mut inner = Vec::new();
             for c in p.into_inner() {
                 if c.as_rule() != Rule::close {
-                    push_item(&mut inner, c)?;
+                    push_item(&mut inner, c, base)?;
                 }
             }
             ItemKind::Group(inner)
@@ -149,6 +157,10 @@ fn symbol(s: &str) -> &'static str {
 /// significant digits, more turns it into a FLOTTANT); otherwise FLOTTANT.
 /// `D` and `Q` exponents are Fortran spellings of `E`.
 fn number(text: &str, span: Span) -> Result<ItemKind> {
+    // `E2` alone (from `-E2`): an exponent without mantissa, whose mantissa is 0.
+    if text.starts_with(|c: char| c.is_ascii_alphabetic()) {
+        return number(&format!("0{}", text), span);
+    }
     let is_float = text.contains(['.', 'e', 'E', 'd', 'D', 'q', 'Q']);
     let digits = text.trim_start_matches('0').len();
     if !is_float && digits <= 9 {

@@ -1,29 +1,38 @@
-//! Text -> [`ast::Program`]. The only module that names pest: the grammar in
-//! `grammar/gibiane.pest` gives a flat list of instructions, [`lower`] turns
-//! pest pairs into our AST with byte spans, and [`structure`] rebuilds
-//! SI/REPETER/DEBPROC blocks.
+//! Text -> statements. The only module that names pest: [`Reader`] cuts the
+//! text into instructions and hands them one at a time to the grammar in
+//! `grammar/gibiane.pest`, `lower` turns pest pairs into our AST with
+//! byte spans, and `structure` rebuilds SI/REPETER/DEBPROC blocks as the
+//! instructions arrive. [`parse`] collects them into a [`ast::Program`].
 
 pub mod ast;
 mod errors;
 mod lower;
 mod parser;
 mod prepass;
+mod reader;
 mod structure;
+pub use reader::Reader;
 pub use structure::truncate_name as structure_name;
+pub use structure::MAX_BLOCK_DEPTH;
 
 use crate::error::{Error, Result};
 use crate::source::Span;
-use ast::{Instr, Program};
-use parser::{GibianeParser, Rule};
-use pest::Parser;
+use ast::Program;
+use parser::Rule;
 
 /// Longest instruction Cast3M accepts, blanks squeezed (error 3).
 pub const MAX_INSTRUCTION: usize = 500;
 
-/// Parse a whole source text.
+/// Deepest nesting of parentheses in one instruction. Parsing and
+/// evaluation recurse on groups; the 500-character limit already keeps
+/// real instructions far below this.
+pub const MAX_PAREN_DEPTH: usize = 100;
+
+/// Parse a whole source text, up to a top-level `FIN ;` (what follows it
+/// is never read, as in Cast3M).
 pub fn parse(text: &str) -> Result<Program> {
-    let instrs = parse_instructions(text)?;
-    structure::build(instrs)
+    let stmts = Reader::new(text).collect::<Result<Vec<_>>>()?;
+    Ok(Program { stmts })
 }
 
 /// Whether a REPL entry is a complete program, needs more lines, or is
@@ -39,54 +48,31 @@ pub fn check_complete(text: &str) -> Completeness {
     if text.trim().is_empty() {
         return Completeness::Incomplete;
     }
-    match parse_instructions(text) {
+    match parse(text) {
+        Ok(p) => Completeness::Complete(p),
         Err(e) => {
             let end = text.trim_end().len() as u32;
-            // A failure at the very end means the text stops mid-instruction.
-            if e.span.is_some_and(|s| s.start >= end) && e.message.starts_with("unexpected end") {
+            // A failure at the very end means the text stops mid-instruction;
+            // an open block means more lines are coming.
+            let at_end = e.span.is_some_and(|s| s.start >= end) && e.message.starts_with("unexpected end");
+            if at_end || e.message.contains("never closed") {
                 Completeness::Incomplete
             } else {
                 Completeness::Invalid(e)
             }
         }
-        Ok(instrs) => match structure::build(instrs) {
-            Ok(p) => Completeness::Complete(p),
-            Err(e) if e.message.contains("never closed") => Completeness::Incomplete,
-            Err(e) => Completeness::Invalid(e),
-        },
     }
-}
-
-fn parse_instructions(text: &str) -> Result<Vec<Instr>> {
-    let prepared = prepass::prepare(text)?;
-    let pairs = GibianeParser::parse(Rule::program, &prepared).map_err(|e| pest_error(e, &prepared))?;
-    let mut out = Vec::new();
-    for program in pairs {
-        for p in program.into_inner() {
-            if p.as_rule() != Rule::instruction {
-                continue;
-            }
-            let s = p.as_span();
-            if prepass::squeezed_len(s.as_str()) > MAX_INSTRUCTION {
-                return Err(Error::syntax(
-                    format!("an instruction cannot exceed {} characters (blanks squeezed)", MAX_INSTRUCTION),
-                    Span::new(s.start(), s.end()),
-                ));
-            }
-            out.push(lower::instruction(p)?);
-        }
-    }
-    Ok(out)
 }
 
 /// Turn a pest failure into a sentence about Gibiane.
-fn pest_error(e: pest::error::Error<Rule>, text: &str) -> Error {
+/// `text` is one instruction, starting at byte `base` of the whole text.
+fn pest_error(e: pest::error::Error<Rule>, text: &str, base: usize) -> Error {
     let pos = match e.location {
         pest::error::InputLocation::Pos(p) => p,
         pest::error::InputLocation::Span((s, _)) => s,
     };
     let at_end = text[pos.min(text.len())..].trim().is_empty();
-    let span = Span::new(pos, (pos + 1).min(text.len().max(pos)));
+    let span = Span::new(base + pos, base + (pos + 1).min(text.len().max(pos)));
     if at_end {
         let open = paren_depth(text);
         let msg = if open > 0 {
@@ -94,7 +80,8 @@ fn pest_error(e: pest::error::Error<Rule>, text: &str) -> Error {
         } else {
             "unexpected end of text: the instruction is not ended by ';'".to_string()
         };
-        return Error::syntax(msg, Span::new(text.trim_end().len(), text.trim_end().len() + 1));
+        let end = base + text.trim_end().len();
+        return Error::syntax(msg, Span::new(end, end + 1));
     }
     let found = text[pos..].chars().next().unwrap_or(' ');
     let msg = match found {

@@ -7,10 +7,10 @@
 use crate::error::{Error, Result};
 use crate::source::Span;
 
-/// Blank the column-1 comment lines and check quotes line by line.
-pub fn prepare(text: &str) -> Result<String> {
+/// Blank the column-1 comment lines (never fails: quotes are checked one
+/// instruction at a time, so that text after `FIN ;` is never judged).
+pub fn blank_comments(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
-    let mut offset = 0;
     for line in text.split_inclusive('\n') {
         if line.starts_with('*') {
             // Replace every byte but the end of line: lengths are preserved.
@@ -18,33 +18,76 @@ pub fn prepare(text: &str) -> Result<String> {
                 out.push(if b == b'\n' || b == b'\r' { b as char } else { ' ' });
             }
         } else {
-            check_quotes(line, offset)?;
             out.push_str(line);
         }
-        offset += line.len();
     }
-    Ok(out)
+    out
 }
 
-fn check_quotes(line: &str, offset: usize) -> Result<()> {
-    let mut open: Option<usize> = None;
-    for (i, c) in line.char_indices() {
-        if c == '\'' {
-            open = match open {
-                Some(_) => None,
-                None => Some(i),
-            };
+/// End (exclusive) of the instruction starting at `from`: just after the
+/// first `;` outside quotes, or None when the text ends first. A quote
+/// never spans lines, so a line break closes any open quote.
+pub fn instruction_end(text: &str, from: usize) -> Option<usize> {
+    let mut quoted = false;
+    for (i, b) in text.as_bytes()[from..].iter().enumerate() {
+        match b {
+            b'\'' => quoted = !quoted,
+            b'\n' => quoted = false,
+            b';' if !quoted => return Some(from + i + 1),
+            _ => {}
         }
     }
-    // `''` inside a string toggles twice, so only a real unclosed quote
-    // survives the scan.
-    match open {
-        Some(i) => Err(Error::syntax(
-            "this quote is not closed on its line (a quoted text must open and close on the same line)",
-            Span::new(offset + i, offset + line.trim_end().len().max(i + 1)),
-        )),
-        None => Ok(()),
+    None
+}
+
+/// Check that every quote of `chunk` (which starts at byte `offset` of the
+/// text, outside any quote) closes on its own line.
+pub fn check_quotes(chunk: &str, offset: usize) -> Result<()> {
+    let mut start = offset;
+    for line in chunk.split_inclusive('\n') {
+        let mut open: Option<usize> = None;
+        for (i, c) in line.char_indices() {
+            if c == '\'' {
+                open = match open {
+                    Some(_) => None,
+                    None => Some(i),
+                };
+            }
+        }
+        // `''` inside a string toggles twice, so only a real unclosed quote
+        // survives the scan.
+        if let Some(i) = open {
+            return Err(Error::syntax(
+                "this quote is not closed on its line (a quoted text must open and close on the same line)",
+                Span::new(start + i, start + line.trim_end().len().max(i + 1)),
+            ));
+        }
+        start += line.len();
     }
+    Ok(())
+}
+
+/// The `(` that opens a group nested deeper than `max`, if any (parsing
+/// and evaluation recurse on groups: deep nesting must be an error, not a
+/// stack overflow).
+pub fn too_deep_paren(chunk: &str, max: usize) -> Option<usize> {
+    let mut depth = 0usize;
+    let mut quoted = false;
+    for (i, b) in chunk.bytes().enumerate() {
+        match b {
+            b'\'' => quoted = !quoted,
+            b'\n' => quoted = false,
+            b'(' if !quoted => {
+                depth += 1;
+                if depth > max {
+                    return Some(i);
+                }
+            }
+            b')' if !quoted => depth = depth.saturating_sub(1),
+            _ => {}
+        }
+    }
+    None
 }
 
 /// Squeezed length of an instruction (blank runs count as one), for the

@@ -1,7 +1,8 @@
-//! Rebuild SI/SINON/FINSI, REPETER/FIN, DEBPROC/FINPROC blocks from the flat
-//! instruction list. Cast3M executes these as directives one instruction at a
-//! time; matching them up front lets us report an unclosed block at parse
-//! time and lets the REPL ask whether the input is complete.
+//! Rebuild SI/SINON/FINSI, REPETER/FIN, DEBPROC/FINPROC blocks from the
+//! instructions as they are read. Cast3M executes these as directives one
+//! instruction at a time; matching a block before running it lets us report
+//! an unclosed block and lets the REPL ask whether the input is complete,
+//! while everything before the block still runs first.
 
 use super::ast::*;
 use crate::error::{Error, Result};
@@ -51,7 +52,7 @@ fn directive(ins: &Instr) -> Option<Directive> {
 }
 
 enum Open {
-    If { cond: Instr, then: Vec<Stmt>, otherwise: Option<Vec<Stmt>>, span: Span },
+    If { branches: Vec<Branch>, otherwise: Option<Vec<Stmt>>, span: Span },
     Loop { name: String, count: Option<Instr>, body: Vec<Stmt>, span: Span },
     Proc { name: String, params: Vec<Param>, body: Vec<Stmt>, span: Span },
 }
@@ -59,7 +60,10 @@ enum Open {
 impl Open {
     fn body(&mut self) -> &mut Vec<Stmt> {
         match self {
-            Open::If { then, otherwise, .. } => otherwise.as_mut().unwrap_or(then),
+            Open::If { branches, otherwise, .. } => match otherwise {
+                Some(o) => o,
+                None => &mut branches.last_mut().expect("an SI has its first branch").body,
+            },
             Open::Loop { body, .. } | Open::Proc { body, .. } => body,
         }
     }
@@ -97,34 +101,72 @@ fn word_of(it: &Item) -> Option<String> {
     }
 }
 
-pub fn build(instrs: Vec<Instr>) -> Result<Program> {
-    let mut stack: Vec<Open> = Vec::new();
-    let mut top: Vec<Stmt> = Vec::new();
-    for ins in instrs {
+/// Blocks (SI, REPETER, DEBPROC) open at once, at most. The evaluator
+/// recurses on blocks: deeper nesting is refused here, at the line that
+/// opens one block too many, rather than overflowing the stack.
+pub const MAX_BLOCK_DEPTH: usize = 100;
+
+/// Matches blocks as instructions arrive, one at a time (Cast3M reads and
+/// runs a deck instruction by instruction): [`push`](Builder::push) hands
+/// back a statement as soon as it is complete at the top level.
+#[derive(Default)]
+pub struct Builder {
+    stack: Vec<Open>,
+}
+
+impl Builder {
+    fn open(&mut self, o: Open) -> Result<()> {
+        if self.stack.len() >= MAX_BLOCK_DEPTH {
+            return Err(Error::syntax(
+                format!("{} opens a block nested more than {} deep", o.describe(), MAX_BLOCK_DEPTH),
+                o.span(),
+            ));
+        }
+        self.stack.push(o);
+        Ok(())
+    }
+
+    /// Take one instruction. Returns a top-level statement when one is
+    /// complete (an instruction outside any block, or a block just closed).
+    pub fn push(&mut self, ins: Instr) -> Result<Option<Stmt>> {
         let span = ins.span;
         let stmt = match directive(&ins) {
             None => Some(Stmt::Instr(ins)),
             Some(Directive::Si) => {
-                stack.push(Open::If { cond: rest(&ins), then: vec![], otherwise: None, span });
+                let first = Branch { cond: rest(&ins), body: vec![] };
+                self.open(Open::If { branches: vec![first], otherwise: None, span })?;
                 None
             }
-            Some(Directive::Sinon) => match stack.last_mut() {
-                Some(Open::If { otherwise, .. }) if otherwise.is_none() => {
-                    *otherwise = Some(vec![]);
+            // `SINON ;` opens the last branch; `SINON cond ;` is an else-if
+            // (newer Cast3M), tried only when every condition before failed.
+            Some(Directive::Sinon) => match self.stack.last_mut() {
+                Some(Open::If { otherwise: Some(_), .. }) => {
+                    return Err(Error::syntax("SINON after the SINON ; that opened the last branch", span))
+                }
+                Some(Open::If { branches, otherwise, .. }) => {
+                    let cond = rest(&ins);
+                    if cond.items.is_empty() {
+                        *otherwise = Some(vec![]);
+                    } else {
+                        branches.push(Branch { cond, body: vec![] });
+                    }
                     None
                 }
                 _ => return Err(Error::syntax("SINON without an open SI", span)),
             },
-            Some(Directive::Finsi) => match stack.pop() {
-                Some(Open::If { cond, then, otherwise, span: s }) => Some(Stmt::If { cond, then, otherwise, span: s }),
-                Some(o) => return Err(mismatch("FINSI", &o, span)),
-                None => return Err(Error::syntax("FINSI without an open SI", span)),
-            },
+            Some(Directive::Finsi) => {
+                nothing_after("FINSI", &ins)?;
+                match self.stack.pop() {
+                    Some(Open::If { branches, otherwise, span: s }) => Some(Stmt::If { branches, otherwise, span: s }),
+                    Some(o) => return Err(mismatch("FINSI", &o, span)),
+                    None => return Err(Error::syntax("FINSI without an open SI", span)),
+                }
+            }
             Some(Directive::Repeter) => {
                 let r = rest(&ins);
                 let (name, count) = loop_header(&r)
                     .ok_or_else(|| Error::syntax("REPETER needs a block name (REPETER name (count) ;)", span))?;
-                stack.push(Open::Loop { name, count, body: vec![], span });
+                self.open(Open::Loop { name, count, body: vec![], span })?;
                 None
             }
             Some(Directive::Fin) => {
@@ -132,7 +174,13 @@ pub fn build(instrs: Vec<Instr>) -> Result<Program> {
                 match r.items.first().and_then(word_of) {
                     None if r.items.is_empty() => Some(Stmt::End { span }),
                     None => return Err(Error::syntax("FIN takes a block name or nothing", span)),
-                    Some(n) => match stack.pop() {
+                    Some(_) if r.items.len() > 1 => {
+                        return Err(Error::syntax(
+                            "FIN takes a block name or nothing",
+                            r.items[1..].iter().map(|i| i.span).reduce(Span::join).unwrap_or(span),
+                        ))
+                    }
+                    Some(n) => match self.stack.pop() {
                         Some(Open::Loop { name, count, body, span: s }) if name == n => {
                             Some(Stmt::Loop { name, count, body, span: s })
                         }
@@ -153,10 +201,10 @@ pub fn build(instrs: Vec<Instr>) -> Result<Program> {
                     .and_then(word_of)
                     .ok_or_else(|| Error::syntax("DEBPROC needs a procedure name", span))?;
                 let params = params(&r.items[1..])?;
-                stack.push(Open::Proc { name, params, body: vec![], span });
+                self.open(Open::Proc { name, params, body: vec![], span })?;
                 None
             }
-            Some(Directive::Finproc) => match stack.pop() {
+            Some(Directive::Finproc) => match self.stack.pop() {
                 Some(Open::Proc { name, params, body, span: s }) => {
                     let results = rest(&ins);
                     Some(Stmt::Proc(Rc::new(ProcDef { name, params, body, results, span: s.join(span) })))
@@ -167,17 +215,30 @@ pub fn build(instrs: Vec<Instr>) -> Result<Program> {
             Some(Directive::Argu) => Some(Stmt::Argu { params: params(&ins.items[1..])?, span }),
             Some(Directive::Respro) => Some(Stmt::Respro(rest(&ins))),
         };
-        if let Some(s) = stmt {
-            match stack.last_mut() {
-                Some(o) => o.body().push(s),
-                None => top.push(s),
+        Ok(match (stmt, self.stack.last_mut()) {
+            (Some(s), Some(o)) => {
+                o.body().push(s);
+                None
             }
+            (s, _) => s,
+        })
+    }
+
+    /// The text has ended: every block must be closed.
+    pub fn finish(&mut self) -> Result<()> {
+        match self.stack.pop() {
+            Some(o) => Err(Error::syntax(format!("{} is never closed", o.describe()), o.span())),
+            None => Ok(()),
         }
     }
-    if let Some(o) = stack.pop() {
-        return Err(Error::syntax(format!("{} is never closed", o.describe()), o.span()));
+}
+
+/// A closing directive written with something after it (`FINSI x ;`).
+fn nothing_after(directive: &str, ins: &Instr) -> Result<()> {
+    match ins.items.get(1..).and_then(|r| r.iter().map(|i| i.span).reduce(Span::join)) {
+        Some(extra) => Err(Error::syntax(format!("{} takes nothing after it", directive), extra)),
+        None => Ok(()),
     }
-    Ok(Program { stmts: top })
 }
 
 fn mismatch(closer: &str, open: &Open, span: Span) -> Error {

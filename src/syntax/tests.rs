@@ -24,6 +24,16 @@ fn sign_rule() {
 }
 
 #[test]
+fn a_sign_glued_to_an_exponent_is_a_number() {
+    // language.md §1: `-D5` or `-E2` lexes as a number (mantissa 0), since
+    // E and D are exponent letters; glued to a value, the sign subtracts.
+    assert_eq!(items("1 -e2 ;"), vec![Int(1), Float(-0.0)]);
+    assert_eq!(items("2 * +D5 ;"), vec![Int(2), Sym("*"), Float(0.0)]);
+    assert_eq!(items("A-E2 ;"), vec![Word("A".into()), Sym("-"), Word("E2".into())]);
+    assert_eq!(items("A -E2X ;"), vec![Word("A".into()), Sym("-"), Word("E2X".into())]);
+}
+
+#[test]
 fn numbers() {
     assert_eq!(
         items("1. .5 1.e-5 1D-13 2.1E11 1E-5 12 ;"),
@@ -116,4 +126,53 @@ fn completeness_for_the_repl() {
     assert!(matches!(check_complete("x = 1 ;"), Completeness::Complete(_)));
     assert!(matches!(check_complete("x = 1) ;"), Completeness::Invalid(_)));
     assert!(matches!(check_complete("finsi ;"), Completeness::Invalid(_)));
+}
+
+#[test]
+fn reading_stops_at_a_top_level_fin() {
+    // Anything may follow a top-level FIN; a FIN inside a block is read on.
+    let p = parse("a = 1 ;\nfin ;\nnotes ' ( without ) si ;\n").unwrap();
+    assert_eq!(p.stmts.len(), 2);
+    let p = parse("si (a) ; fin ; finsi ; b = 2 ; fin ; ' garbage").unwrap();
+    assert_eq!(p.stmts.len(), 3);
+    assert!(parse("si (a) ; fin ; ' garbage").is_err());
+}
+
+#[test]
+fn statements_come_one_at_a_time_before_an_error() {
+    let mut r = Reader::new("a = 1 ;\nrepeter b 2 ; x = 1 ; fin b ;\nc = (2 ;\nd = 3 ;");
+    assert!(matches!(r.next(), Some(Ok(Stmt::Instr(_)))));
+    assert!(matches!(r.next(), Some(Ok(Stmt::Loop { .. }))));
+    let e = r.next().unwrap().unwrap_err();
+    assert_eq!(e.span.unwrap().start as usize, "a = 1 ;\nrepeter b 2 ; x = 1 ; fin b ;\nc = (2 ".len());
+    assert!(r.next().is_none());
+}
+
+#[test]
+fn deep_nesting_is_a_syntax_error() {
+    let parens = format!("x = {}1{} ;", "(".repeat(MAX_PAREN_DEPTH + 1), ")".repeat(MAX_PAREN_DEPTH + 1));
+    assert!(parse(&parens).unwrap_err().message.contains("nested"));
+    let ok = format!("x = {}1{} ;", "(".repeat(MAX_PAREN_DEPTH), ")".repeat(MAX_PAREN_DEPTH));
+    assert!(parse(&ok).is_ok());
+    let blocks = "si vrai ;\n".repeat(MAX_BLOCK_DEPTH + 1) + &"finsi ;\n".repeat(MAX_BLOCK_DEPTH + 1);
+    let e = parse(&blocks).unwrap_err();
+    assert!(e.message.contains("nested more than"), "{}", e.message);
+    assert_eq!(e.span.unwrap().start as usize, "si vrai ;\n".len() * MAX_BLOCK_DEPTH);
+}
+
+#[test]
+fn else_if_and_closers_with_garbage() {
+    let p = parse("si a ; x = 1 ; sinon b ; x = 2 ; sinon c ; x = 3 ; sinon ; x = 4 ; finsi ;").unwrap();
+    match &p.stmts[0] {
+        Stmt::If { branches, otherwise: Some(o), .. } => {
+            assert_eq!(branches.len(), 3);
+            assert!(branches.iter().all(|b| b.body.len() == 1) && o.len() == 1);
+        }
+        s => panic!("{:?}", s),
+    }
+    assert!(parse("si a ; sinon ; sinon b ; finsi ;").is_err());
+    let e = parse("si a ; finsi garbage ;").unwrap_err();
+    assert_eq!((e.message.as_str(), e.span.unwrap().start), ("FINSI takes nothing after it", 13));
+    let e = parse("repeter b ; fin b garbage ;").unwrap_err();
+    assert_eq!((e.message.as_str(), e.span.unwrap().start), ("FIN takes a block name or nothing", 18));
 }

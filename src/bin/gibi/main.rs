@@ -5,7 +5,9 @@
 mod repl;
 
 use clap::Parser;
+use gibi::source::decode;
 use gibi::{ErrorKind, FilePolicy, Interpreter, Outcome};
+use std::ffi::{OsStr, OsString};
 use std::io::{IsTerminal, Read};
 use std::process::ExitCode;
 
@@ -15,8 +17,8 @@ struct Cli {
     /// Deck files to run in order ('-' reads a deck from standard input).
     files: Vec<String>,
     /// Run these instructions (before the files).
-    #[arg(short = 'e', long = "eval", value_name = "INSTRUCTIONS")]
-    eval: Vec<String>,
+    #[arg(short = 'e', long = "eval", value_name = "INSTRUCTIONS", value_parser = clap::value_parser!(OsString))]
+    eval: Vec<OsString>,
     /// Only parse: report syntax errors, run nothing.
     #[arg(long)]
     check: bool,
@@ -48,6 +50,26 @@ fn main() -> ExitCode {
     }
 }
 
+/// Standard input as deck text (Latin-1 bytes accepted, see `decode`).
+fn read_stdin() -> Result<String, String> {
+    let mut b = Vec::new();
+    std::io::stdin().read_to_end(&mut b).map(|_| decode(&b)).map_err(|e| e.to_string())
+}
+
+/// The bytes of a command-line argument: on Unix they are the raw bytes,
+/// so a Latin-1 `-e` snippet survives; elsewhere the lossy conversion.
+fn os_bytes(s: &OsStr) -> std::borrow::Cow<'_, [u8]> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::ffi::OsStrExt;
+        std::borrow::Cow::Borrowed(s.as_bytes())
+    }
+    #[cfg(not(unix))]
+    {
+        std::borrow::Cow::Owned(s.to_string_lossy().into_owned().into_bytes())
+    }
+}
+
 fn run() -> ExitCode {
     let cli = Cli::parse();
     let cwd = std::env::current_dir().unwrap_or_else(|_| ".".into());
@@ -60,24 +82,20 @@ fn run() -> ExitCode {
 
     let mut inputs: Vec<(String, Result<String, String>)> = Vec::new();
     for (i, e) in cli.eval.iter().enumerate() {
-        inputs.push((format!("-e#{}", i + 1), Ok(e.clone())));
+        inputs.push((format!("-e#{}", i + 1), Ok(decode(os_bytes(e).as_ref()))));
     }
     for f in &cli.files {
         if f == "-" {
-            let mut s = String::new();
-            let r = std::io::stdin().read_to_string(&mut s).map(|_| s).map_err(|e| e.to_string());
-            inputs.push(("<stdin>".into(), r));
+            inputs.push(("<stdin>".into(), read_stdin()));
         } else {
-            inputs.push((f.clone(), std::fs::read_to_string(f).map_err(|e| e.to_string())));
+            inputs.push((f.clone(), std::fs::read(f).map(|b| decode(&b)).map_err(|e| e.to_string())));
         }
     }
     if inputs.is_empty() {
         if std::io::stdin().is_terminal() && !cli.check {
             return repl::run(gibi);
         }
-        let mut s = String::new();
-        let r = std::io::stdin().read_to_string(&mut s).map(|_| s).map_err(|e| e.to_string());
-        inputs.push(("<stdin>".into(), r));
+        inputs.push(("<stdin>".into(), read_stdin()));
     }
 
     for (name, text) in inputs {
