@@ -47,7 +47,16 @@ fn apply(op: &str, x: Num, y: Num) -> Option<Num> {
                 None => Num::Float(float(op, i as f64, j as f64)),
             }
         }
-        _ => Num::Float(float(op, x.f(), y.f())),
+        _ => {
+            let (a, b) = (x.f(), y.f());
+            let r = float(op, a, b);
+            // A non-finite result of finite operands (x / 0., (-8.) ** 0.5)
+            // is the operator's error: the fast path does not decide it.
+            if !r.is_finite() && a.is_finite() && b.is_finite() {
+                return None;
+            }
+            Num::Float(r)
+        }
     })
 }
 
