@@ -37,15 +37,27 @@ pub struct Scaling {
 }
 
 /// Computes σ and α from the largest |K| entry of each row (`row_max`,
-/// assembled values) as spec §2.2 recommends: k_i = max over the rows of the
-/// condition's unknowns (fallback global max, then 1), ĉ_i = max(1, max|c|),
-/// κ_i = 1.5 k_i, σ_i = κ_i/ĉ_i, α_i = 2κ_i.
+/// assembled values) as spec §2.2 describes, ĉ_i = max(1, max|c|),
+/// κ_i = 1.5 k_i, σ_i = κ_i/ĉ_i, α_i = 2κ_i, except that k_i is the
+/// *smallest* row maximum among the condition's unknowns (that carry any
+/// stiffness), where Cast3M takes the largest. For one unknown it is the
+/// same. For a relation between a stiff and a soft unknown (a beam resting
+/// on soil springs through RELA 'MINI'), the soft side is the compliance
+/// the condition sees: scaled on the stiff side, releasing the condition
+/// changes the condensed operator by k_soft/k_stiff only, which a ratio of
+/// 10⁸–10⁹ (a steel beam on a fine mesh) makes indistinguishable from a
+/// singular release, and a support in tension from one in compression.
+/// Any α > 0 gives the same solution (§2.2). Fallback: the global max,
+/// then 1.
 pub fn scaling(p: &Problem, row_max: &[f64]) -> Scaling {
     let global = row_max.iter().fold(0.0f64, |a, &b| a.max(b));
     let mut sigma = Vec::with_capacity(p.conditions.len());
     let mut alpha = Vec::with_capacity(p.conditions.len());
     for c in &p.conditions {
-        let mut k = c.terms.iter().fold(0.0f64, |a, &(j, _)| a.max(row_max[j]));
+        let mut k = c.terms.iter().map(|&(j, _)| row_max[j]).filter(|&r| r > 0.0).fold(f64::INFINITY, f64::min);
+        if !k.is_finite() {
+            k = 0.0;
+        }
         // A condition on unknowns that carry no stiffness still needs a
         // multiplier block of the problem's order of magnitude.
         if k <= 0.0 {
@@ -504,6 +516,20 @@ mod tests {
         assert_eq!(d.values[d.find(l2, 0).unwrap()], 6.0);
         // K read once, from the upper triangle.
         assert_eq!(d.values[d.find(0, 1).unwrap()], -4.0);
+    }
+
+    /// A relation between a stiff and a soft unknown is scaled on the soft
+    /// side (k = the smallest row maximum among its unknowns).
+    #[test]
+    fn relation_scaled_on_its_softest_unknown() {
+        let p = Problem {
+            k: Matrix { n: 2, entries: vec![(0, 0, 1.0e9), (1, 1, 2.0)], symmetric: true },
+            conditions: vec![Condition { terms: vec![(0, 1.0), (1, -1.0)], kind: Kind::Mini, dual: None }],
+        };
+        let d = Doubled::new(&p, &[]).unwrap();
+        // k = 2, ĉ = 1, κ = 3.
+        assert_eq!(d.scaling.sigma, vec![3.0]);
+        assert_eq!(d.scaling.alpha, vec![6.0]);
     }
 
     #[test]
