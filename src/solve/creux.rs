@@ -114,7 +114,7 @@ impl Creux {
                 *s = at[i];
             }
         }
-        let ps = Problem { k: p.k.clone(), conditions: sub.iter().map(|&i| p.conditions[i].clone()).collect() };
+        let ps = sub_problem(p, &sub, &rows, &imposed);
         let sys = Doubled::new(&ps, &[])?;
         let primal = ordering::primal_best(&ps, &[], Some((&sys.col_ptr, &sys.row_idx)))?;
         let fwd = ordering::doubled_order(&ps, &primal, &[]);
@@ -166,8 +166,7 @@ impl Creux {
     /// Takes the values of `p` (same structure).
     fn numbers(&mut self, p: &Problem, uni: &[usize], refill: bool) -> Result<(), SolveError> {
         if refill {
-            let ps =
-                Problem { k: p.k.clone(), conditions: self.sub.iter().map(|&i| p.conditions[i].clone()).collect() };
+            let ps = sub_problem(p, &self.sub, &self.rows, &self.imposed);
             self.sys.fill(&ps, 0.0)?;
         }
         let n = p.k.n;
@@ -393,6 +392,21 @@ impl Op<'_> {
         self.active = active.to_vec();
         Ok(())
     }
+}
+
+/// The sparse system CREUX factorises: K and the conditions `sub` that
+/// keep doubled multipliers. Every unknown a single row imposes gets a
+/// stored diagonal, where its imposition is written: a BLOQ may hold an
+/// unknown that no stiffness touches (UX of a spring node).
+fn sub_problem(p: &Problem, sub: &[usize], rows: &[Row], imposed: &[(usize, usize, f64)]) -> Problem {
+    let mut k = p.k.clone();
+    for r in rows {
+        if let Row::Single { dof, .. } = *r {
+            k.entries.push((dof, dof, 0.0));
+        }
+    }
+    k.entries.extend(imposed.iter().map(|&(_, dof, _)| (dof, dof, 0.0)));
+    Problem { k, conditions: sub.iter().map(|&i| p.conditions[i].clone()).collect() }
 }
 
 impl Backend for Op<'_> {

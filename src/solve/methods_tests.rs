@@ -448,3 +448,24 @@ fn rows_fixed_by_other_conditions_are_dropped_or_conflict() {
     let r = run(&sum, &down, Method::Condense);
     assert!(matches!(r, Err(SolveError::DependentConditions { ref conditions }) if conditions.len() == 3), "{r:?}");
 }
+
+/// A BLOQ on an unknown that no stiffness touches (UX of a spring node):
+/// every method solves it (CREUX imposes such rows on a stored diagonal).
+#[test]
+fn bloq_on_an_unknown_without_stiffness() {
+    // u0, u1: springs 2 and 3; u2 touched by nothing but its BLOQ.
+    let p = Problem {
+        k: Matrix { n: 3, entries: vec![(0, 0, 2.0), (1, 1, 3.0)], symmetric: true },
+        conditions: vec![
+            Condition { terms: vec![(1, 1.0), (0, -1.0)], kind: Kind::Mini, dual: None },
+            Condition { terms: vec![(2, 1.0)], kind: Kind::Equal, dual: None },
+        ],
+    };
+    // F0 = 5 pushes u0 up to 2.5; u1 − u0 ≥ −1 makes it 1.6 / 0.6.
+    let l = Load { f: vec![5.0, 0.0, 0.0], d: vec![-1.0, 0.25] };
+    for m in [Method::Condense, Method::Creux, Method::Ancien, Method::Iter] {
+        let s = run(&p, &l, m).unwrap_or_else(|e| panic!("{m:?}: {e:?}"));
+        assert!((s.u[0] - 1.6).abs() < 1e-12 && (s.u[1] - 0.6).abs() < 1e-12, "{m:?}: {s:?}");
+        assert!((s.u[2] - 0.25).abs() < 1e-12 && s.lambda[1].abs() < 1e-12, "{m:?}: {s:?}");
+    }
+}
