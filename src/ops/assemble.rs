@@ -178,6 +178,10 @@ impl Assembled {
                 dof(*d),
                 list(conditions, &cond)
             ),
+            SolveError::DependentConditions { conditions } if conditions.is_empty() => {
+                "the conditions make the system singular (linearly dependent rows that could not be singled out)"
+                    .to_string()
+            }
             SolveError::DependentConditions { conditions } => {
                 format!("linearly dependent conditions: {}", list(conditions, &cond))
             }
