@@ -500,6 +500,18 @@ pub(crate) fn extr(it: &mut Interp, a: &mut Args) -> Result<Option<Vec<Value>>> 
         return extr_rigi(a, &r).map(Some);
     }
     if let Some(m) = a.opt::<Rc<Mchaml>>() {
+        if a.keyword_next(&["COMP"]).is_some() {
+            // The component names, every zone's, each once.
+            let mut names: Vec<String> = Vec::new();
+            for z in &m.zones {
+                for c in z.comps.iter().chain(z.constants.keys()) {
+                    if !names.contains(c) {
+                        names.push(c.clone());
+                    }
+                }
+            }
+            return Ok(Some(vec![Value::ListMots(Rc::new(names))]));
+        }
         let comp = a.word_not_operator().ok_or_else(|| a.missing("a component"))?;
         let mut idx = [1i64; 3];
         for k in idx.iter_mut() {

@@ -14,7 +14,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "COOR", signature: "COOR POINT | COOR n POINT | COOR n MAILLAGE", doc: "Coordinates of a point (one result per dimension), one of them, or a coordinate field on a mesh.", example: "x y = coor p ;", f: coor },
     OpDef { name: "NBNO", signature: "NBNO MAILLAGE", doc: "Number of nodes of a mesh.", example: "n = nbno l ;", f: nbno },
     OpDef { name: "NBEL", signature: "NBEL MAILLAGE", doc: "Number of elements of a mesh.", example: "n = nbel s ;", f: nbel },
-    OpDef { name: "POIN", signature: "POIN x (y) (z) | MAILLAGE POIN n | MAILLAGE POIN ('INIT'|'FINAL') | MAILLAGE POIN 'PROC' POINT | MAILLAGE POIN ('DROIT' P1 P2 | 'PLAN' P1 P2 P3) (crit)", doc: "A point, or nodes of a mesh.", example: "p = l poin 'FINAL' ;", f: poin },
+    OpDef { name: "POIN", signature: "POIN x (y) (z) | MAILLAGE POIN n | MAILLAGE POIN ('INIT'|'FINAL') | MAILLAGE POIN 'PROC' POINT | MAILLAGE POIN ('DROIT' P1 P2 | 'PLAN' P1 P2 P3) (crit) | CHPOINT POIN 'MAXI'|'MINI' ('ABS') | CHPOINT POIN 'SUPE'|'INFE'|'EGSU'|'EGIN'|'EGAL' v", doc: "A point, or nodes of a mesh, or the nodes where a field meets a test (a POI1 mesh).", example: "p = l poin 'FINAL' ;", f: poin },
     OpDef { name: "DROI", signature: "DROI (n) P1|LINE P2 ('DINI' d1) ('DFIN' d2)", doc: "A straight line of n elements (SEG2 or SEG3 per OPTI ELEM).", example: "l = droi 10 p1 p2 ;", f: droi },
     // D and C are Cast3M's own abbreviations of DROI and CERC (`p1 d 10 p2`).
     OpDef { name: "D", signature: "D (n) P1|LINE P2 ('DINI' d1) ('DFIN' d2)", doc: "Abbreviation of DROI.", example: "l = p1 d 10 p2 ;", f: droi },
@@ -28,7 +28,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "COTE", signature: "COTE n SURFACE", doc: "Side n of a structured (DALL/TRAN) surface.", example: "b = cote 1 s ;", f: cote },
     OpDef { name: "FACE", signature: "FACE n VOLUME", doc: "Face n of a volume made by VOLU, TRAN or ROTA: 1 the base, 2 the opposite face, 3 the lateral surface.", example: "haut = face 2 v ;", f: face },
     OpDef { name: "CONT", signature: "CONT GEO", doc: "Contour: boundary edges of a surface, end points of a line.", example: "c = cont s ;", f: cont },
-    OpDef { name: "ELIM", signature: "ELIM (crit) GEO", doc: "Merge nodes closer than crit, in every object.", example: "elim 1.e-5 l ;", f: elim },
+    OpDef { name: "ELIM", signature: "ELIM (crit) GEO (GEO2 …)", doc: "Merge nodes closer than crit, in every object (several meshes: their nodes with each other's).", example: "elim 1.e-5 l ;", f: elim },
     OpDef { name: "INTE", signature: "GEO1 INTE GEO2", doc: "Elements common to two meshes.", example: "c = s1 inte s2 ;", f: inte },
     OpDef { name: "DIFF", signature: "DIFF GEO1 GEO2", doc: "Symmetric difference of two meshes.", example: "d = diff s1 s2 ;", f: diff },
     OpDef { name: "PLUS", signature: "OBJ PLUS VECTOR | GEO PLUS CHPOINT", doc: "A translated copy (geometric, not arithmetic), or the mesh moved by a displacement field.", example: "l2 = l plus (0. 1.) ;", f: plus },
@@ -101,6 +101,9 @@ fn vector(it: &Interp, a: &mut Args) -> Option<[f64; 3]> {
 }
 
 fn poin(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    if let Some(ch) = a.opt::<Rc<crate::value::Chpoint>>() {
+        return poin_of_field(a, &ch);
+    }
     if let Some(m) = a.opt::<Rc<Mesh>>() {
         if let Some(k) = a.keyword(&["INIT", "FINAL", "PROC", "DROIT", "PLAN"]) {
             return Ok(vec![match k {
@@ -136,6 +139,45 @@ fn poin(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     }
     let d = it.opts.dens;
     Ok(vec![Value::Point(it.nodes.push(x, d))])
+}
+
+/// `CHPO POIN 'MAXI'|'MINI' ('ABS') | 'SUPE'|'INFE'|'EGSU'|'EGIN'|'EGAL' v`:
+/// the nodes where one value of the field meets the test, as a POI1 mesh
+/// (where is the maximum?). MAXI/MINI and EGAL compare within 1e-10 of
+/// the largest value.
+fn poin_of_field(a: &mut Args, ch: &crate::value::Chpoint) -> Result<Vec<Value>> {
+    let k = a.req_keyword(&["MAXI", "MINI", "SUPE", "INFE", "EGSU", "EGIN", "EGAL"])?;
+    let abs = a.keyword(&["ABS"]).is_some();
+    let value = |v: f64| if abs { v.abs() } else { v };
+    let vals: Vec<(usize, f64)> = ch.entries().map(|(n, _, v)| (n, value(v))).collect();
+    if vals.is_empty() {
+        return Err(a.err("the field is empty"));
+    }
+    let scale = vals.iter().fold(0.0_f64, |m, e| m.max(e.1.abs()));
+    let tol = 1e-10 * scale;
+    let test: Box<dyn Fn(f64) -> bool> = match k {
+        "MAXI" => {
+            let top = vals.iter().fold(f64::NEG_INFINITY, |m, e| m.max(e.1));
+            Box::new(move |v| v >= top - tol)
+        }
+        "MINI" => {
+            let low = vals.iter().fold(f64::INFINITY, |m, e| m.min(e.1));
+            Box::new(move |v| v <= low + tol)
+        }
+        _ => {
+            let t = a.req_num()?;
+            match k {
+                "SUPE" => Box::new(move |v| v > t),
+                "INFE" => Box::new(move |v| v < t),
+                "EGSU" => Box::new(move |v| v >= t),
+                "EGIN" => Box::new(move |v| v <= t),
+                _ => Box::new(move |v| (v - t).abs() <= tol),
+            }
+        }
+    };
+    let mut seen = std::collections::HashSet::new();
+    let nodes: Vec<usize> = vals.into_iter().filter(|&(n, v)| test(v) && seen.insert(n)).map(|e| e.0).collect();
+    Ok(mesh_val(Mesh::points(&nodes)))
 }
 
 /// `(n) … ('DINI' d1) ('DFIN' d2)` read in any order around the geometry.
@@ -311,7 +353,11 @@ fn elim(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     // The tolerance may come before or after the mesh (`ELIM 1.e-3 s`,
     // `ELIM s 1.e-3`).
     let tol = a.opt_num();
-    let m = req_geo(a)?;
+    let mut m = req_geo(a)?;
+    // `ELIM crit GEO1 GEO2`: the nodes of both are merged with each other.
+    while let Some(g) = opt_geo(a) {
+        m = m.union(&g);
+    }
     let tol = tol.or_else(|| a.opt_num()).unwrap_or(1e-6);
     let (merged, map) = mg::elim(&it.nodes, &m, tol)?;
     if !map.is_empty() {

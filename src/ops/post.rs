@@ -167,7 +167,8 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             let m = super::mesh::req_geo(a)?;
             Ok(vec![Value::Mesh(Rc::new(mg::change_to_quadratic(&mut it.nodes, &m)?))])
         }
-        "QUA4" | "TRI3" | "SEG2" => Ok(vec![Value::Mesh(Rc::new(mg::change_to_linear(&super::mesh::req_geo(a)?)))]),
+        "TRI3" => Ok(vec![Value::Mesh(Rc::new(mg::change_to_triangles(&super::mesh::req_geo(a)?)))]),
+        "QUA4" | "SEG2" => Ok(vec![Value::Mesh(Rc::new(mg::change_to_linear(&super::mesh::req_geo(a)?)))]),
         "INCO" => {
             let r = a.req::<Rc<Rigidite>>()?;
             let old = a.req::<Rc<Vec<String>>>()?;

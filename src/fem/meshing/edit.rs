@@ -252,6 +252,21 @@ pub fn change_to_linear(mesh: &Mesh) -> Mesh {
     merge_same_types(parts)
 }
 
+/// `CHAN 'TRI3'`: linear elements, each QUA4 cut along its first
+/// diagonal into two TRI3 (1-2-3 and 1-3-4, the orientation kept).
+pub fn change_to_triangles(mesh: &Mesh) -> Mesh {
+    let lin = change_to_linear(mesh);
+    let parts = lin
+        .parts
+        .iter()
+        .map(|p| match p.ty {
+            ElemType::Qua4 => (ElemType::Tri3, p.elems().flat_map(|e| [e[0], e[1], e[2], e[0], e[2], e[3]]).collect()),
+            t => (t, p.conn.clone()),
+        })
+        .collect();
+    merge_same_types(parts)
+}
+
 fn merge_same_types(parts: Vec<(ElemType, Vec<usize>)>) -> Mesh {
     let mut out: Vec<(ElemType, Vec<usize>)> = Vec::new();
     for (ty, conn) in parts {
