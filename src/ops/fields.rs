@@ -51,6 +51,13 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef { name: "XTX", signature: "XTX CHPOINT", doc: "Squared norm of a field.", example: "n = xtx r ;", f: xtx },
     OpDef {
+        name: "XTMX",
+        signature: "XTMX RIGIDITE CHPOINT",
+        doc: "The quadratic form uᵀ K u (twice the strain energy of a displacement field).",
+        example: "w = xtmx k u ;",
+        f: xtmx,
+    },
+    OpDef {
         name: "SOMT",
         signature: "SOMT CHPOINT|LISTREEL",
         doc: "Sum of every value of a field or list.",
@@ -220,6 +227,15 @@ fn enle(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let comps = comp_list(a).ok_or_else(|| a.missing("components to remove"))?;
     let out = Chpoint::from_entries(ch.nature, ch.entries().filter(|(_, c, _)| !comps.iter().any(|x| x == c)));
     Ok(vec![Value::Chpo(Rc::new(out))])
+}
+
+fn xtmx(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let r = a.req::<Rc<Rigidite>>()?;
+    let u = a.req::<Rc<Chpoint>>()?;
+    let ku = matvec(&r, &u);
+    // Each unknown against the force (dual) component of K u.
+    let s: f64 = u.entries().map(|(n, c, v)| v * ku.get(n, &dofs::dual_of(c)).unwrap_or(0.0)).sum();
+    Ok(vec![Value::Float(s)])
 }
 
 fn xtx(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {

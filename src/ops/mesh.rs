@@ -34,6 +34,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "PLUS", signature: "OBJ PLUS VECTOR | GEO PLUS CHPOINT", doc: "A translated copy (geometric, not arithmetic), or the mesh moved by a displacement field.", example: "l2 = l plus (0. 1.) ;", f: plus },
     OpDef { name: "MOIN", signature: "OBJ MOIN VECTOR", doc: "A copy translated by minus the vector.", example: "l2 = l moin (0. 1.) ;", f: moin },
     OpDef { name: "SYME", signature: "POINT|MAILLAGE SYME ('DROIT' P1 P2 | 'PLAN' P1 P2 P3 | 'POINT' P)", doc: "Mirror image on new nodes: about a line (2D; in 3D the half-turn about it), a plane (3D) or a point. Surfaces and volumes keep their orientation.", example: "s2 = s1 syme 'DROIT' p1 p2 ;", f: syme },
+    OpDef { name: "TOUR", signature: "POINT|MAILLAGE TOUR angle P1 (P2)", doc: "A copy on new nodes turned by angle degrees about P1 (2D) or about the axis P1 P2 (3D).", example: "s2 = s1 tour 90. p0 ;", f: tour },
     OpDef { name: "INVE", signature: "INVE GEO", doc: "Reverse the orientation of a mesh.", example: "l2 = inve l ;", f: inve },
     OpDef { name: "SURF", signature: "SURF LINE ('PLAN')", doc: "Free meshing — not available in gibi: use DALL, TRAN or ROTA, or import a Gmsh mesh.", example: "s = dall bas dro hau gau ;", f: surf },
 ];
@@ -467,6 +468,24 @@ fn syme(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         }
         Value::Mesh(m) => Ok(mesh_val(mg::syme(&mut it.nodes, &m, mirror, dim)?)),
         other => Err(a.err(format!("cannot take the symmetric of a {}", other.type_name()))),
+    }
+}
+
+fn tour(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    // The object is the operand before TOUR (`s2 = s1 tour 90. p`), else
+    // the first value after it.
+    let obj = match a.left_value() {
+        Some(v) => v,
+        None => a.right_any().ok_or_else(|| a.missing("POINT or MAILLAGE"))?,
+    };
+    let angle = a.req_num()?;
+    let centre = vector(it, a).ok_or_else(|| a.missing("POINT (the centre)"))?;
+    let axis_end =
+        if it.opts.dime >= 3 { Some(vector(it, a).ok_or_else(|| a.missing("POINT (the axis)"))?) } else { None };
+    match obj {
+        Value::Point(p) => Ok(vec![Value::Point(mg::rotate_point(&mut it.nodes, p, angle, centre, axis_end)?)]),
+        Value::Mesh(m) => Ok(mesh_val(mg::rotate_copy(&mut it.nodes, &m, angle, centre, axis_end)?)),
+        other => Err(a.err(format!("cannot turn a {}", other.type_name()))),
     }
 }
 

@@ -97,11 +97,9 @@ pub const MISSING: &[Missing] = &[
     op("REST", "RESTITUER", FILES),
     op("SAUV", "SAUVER", FILES),
     op("TIRE", "TIRER", ""),
-    op("TOUR", "TOURNER", MESHING),
     op("VARI", "VARIABLE", ""),
     op("VECT", "VECTEUR", "TRAC draws a deformed mesh (PLUS or DEFO) or a field"),
     op("VIBR", "VIBRATION", STATICS),
-    op("XTMX", "XTMX", "RIGIDITE * CHPOINT and XTX give the pieces"),
     op("XTY", "XTY", "SOMT (x * y) gives the scalar product of two fields"),
 ];
 

@@ -145,6 +145,55 @@ pub fn translate_copy(nodes: &mut Nodes, mesh: &Mesh, v: V3) -> Result<Mesh, Mes
     Ok(map.apply(mesh))
 }
 
+/// `GEO TOUR angle P1 (P2)`: a copy of `mesh` on new nodes turned by
+/// `angle_deg` degrees about `centre` (2D: about z, counter-clockwise) or
+/// about the axis `centre`→`axis_end` (3D, right-hand rule).
+pub fn rotate_copy(
+    nodes: &mut Nodes,
+    mesh: &Mesh,
+    angle_deg: f64,
+    centre: V3,
+    axis_end: Option<V3>,
+) -> Result<Mesh, MeshError> {
+    check_nodes("TOUR", nodes, mesh)?;
+    let k = rotation_axis("TOUR", centre, axis_end)?;
+    let mut map = NodeMap::default();
+    for n in mesh.node_list() {
+        let x = super::vec3::rotate(nodes.get(n), centre, k, angle_deg.to_radians());
+        let m = nodes.push(x, nodes.density[n]);
+        map.map.insert(n, m);
+    }
+    Ok(map.apply(mesh))
+}
+
+/// [`rotate_copy`] of one point: a new node.
+pub fn rotate_point(
+    nodes: &mut Nodes,
+    p: usize,
+    angle_deg: f64,
+    centre: V3,
+    axis_end: Option<V3>,
+) -> Result<usize, MeshError> {
+    let k = rotation_axis("TOUR", centre, axis_end)?;
+    let x = super::vec3::rotate(nodes.get(p), centre, k, angle_deg.to_radians());
+    Ok(nodes.push(x, nodes.density[p]))
+}
+
+/// The unit axis of a rotation: z in 2D, else from `centre` to `axis_end`.
+fn rotation_axis(op: &'static str, centre: V3, axis_end: Option<V3>) -> Result<V3, MeshError> {
+    match axis_end {
+        None => Ok([0.0, 0.0, 1.0]),
+        Some(p2) => {
+            let a = super::vec3::sub(p2, centre);
+            let l = super::vec3::norm(a);
+            if l == 0.0 {
+                return fail(op, "the two points of the axis coincide");
+            }
+            Ok(super::vec3::scale(a, 1.0 / l))
+        }
+    }
+}
+
 /// `INVE GEO`: reverse orientation. A line is run backwards (elements in
 /// reverse order, each reversed); a surface element keeps its first node
 /// and turns the other way; points come in reverse order.

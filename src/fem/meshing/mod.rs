@@ -34,7 +34,7 @@ mod tests;
 pub use dall::dall;
 pub use edit::{
     change_to_linear, change_to_poi1, change_to_quadratic, change_to_triangles, diff, elim, inte, inve, manu,
-    translate_copy, NodeMap,
+    rotate_copy, rotate_point, translate_copy, NodeMap,
 };
 pub use extract::{cont, cote, elem_appui, elem_numbers, elem_type, face};
 pub use grading::Spacing;
