@@ -3,7 +3,8 @@
 //! integral, exact for the piecewise linear curve IPOL reads; the INTG
 //! entry itself is in `integrate.rs`, with the field integrals).
 
-use super::{pointwise, Args, FromArg, OpDef};
+use super::math::Numeric;
+use super::{pointwise, Args, OpDef};
 use crate::error::Result;
 use crate::eval::Interp;
 use crate::value::model::Curve;
@@ -20,31 +21,12 @@ pub(crate) const OPS: &[OpDef] = &[
     },
 ];
 
-/// What IPOL reads: numbers, lists, fields, curves.
-struct IpolArg(Value);
-impl FromArg for IpolArg {
-    const EXPECT: &'static str = "a number, a list, a field or an EVOLUTIO";
-    fn from_value(v: &Value) -> Option<Self> {
-        let ok = matches!(
-            v,
-            Value::Int(_)
-                | Value::Float(_)
-                | Value::ListReel(_)
-                | Value::ListEnti(_)
-                | Value::Chpo(_)
-                | Value::Mchaml(_)
-                | Value::Evol(_)
-        );
-        ok.then(|| IpolArg(v.clone()))
-    }
-}
-
 fn ipol(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     // Up to three operands, in the order written: X then the curve (one
     // EVOLUTIO, or the abscissae and ordinates lists).
     let mut vals: Vec<Value> = Vec::new();
     while vals.len() < 3 {
-        let Some(v) = a.opt::<IpolArg>() else { break };
+        let Some(v) = a.opt::<Numeric>() else { break };
         vals.push(v.0);
         let has_curve = vals.iter().any(|v| matches!(v, Value::Evol(_)));
         if has_curve && vals.len() == 2 {

@@ -103,7 +103,7 @@ pub(crate) const OPS: &[OpDef] = &[
 ];
 
 /// An operand holding numbers: a number, a list, a field or a curve.
-struct Numeric(Value);
+pub(crate) struct Numeric(pub(crate) Value);
 impl FromArg for Numeric {
     const EXPECT: &'static str = "a number, a list, a field or a curve";
     fn from_value(v: &Value) -> Option<Self> {

@@ -77,7 +77,9 @@ pub(super) fn solve(
             phases.push(("lu status loop", t0.elapsed().as_secs_f64()));
             return Ok((sol, active));
         }
-        if it == cap && sopts.keep_last {
+        let repeated = !history.insert(active.clone());
+        if sopts.keep_last && (it == cap || (repeated && single)) {
+            // 'SOUC': this solve is the last iterate.
             record.mode = UNCONVERGED;
             record.activated = violated;
             record.released = release;
@@ -85,16 +87,8 @@ pub(super) fn solve(
             phases.push(("lu status loop", t0.elapsed().as_secs_f64()));
             return Ok((sol, active));
         }
-        if !history.insert(active.clone()) {
+        if repeated {
             if single {
-                if sopts.keep_last {
-                    record.mode = UNCONVERGED;
-                    record.activated = violated;
-                    record.released = release;
-                    on_iter(&record);
-                    phases.push(("lu status loop", t0.elapsed().as_secs_f64()));
-                    return Ok((sol, active));
-                }
                 on_iter(&record);
                 let mut changing = release.clone();
                 changing.extend(&violated);
