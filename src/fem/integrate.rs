@@ -80,11 +80,7 @@ pub fn point_weights(
     m: &Material,
 ) -> Result<Vec<f64>, FemError> {
     match f {
-        Formulation::Barr | Formulation::Pout | Formulation::Timo => {
-            // Values at both ends: the trapezoidal rule along the length.
-            let l = line_length(x)?;
-            Ok(vec![0.5 * l; 2])
-        }
+        Formulation::Barr | Formulation::Pout | Formulation::Timo => line_weights(x),
         Formulation::Solid | Formulation::Q4ri => solid::point_weights(f, ty, mode, x, m),
     }
 }
@@ -99,12 +95,15 @@ pub fn node_weights(
     m: &Material,
 ) -> Result<Vec<f64>, FemError> {
     match f {
-        Formulation::Barr | Formulation::Pout | Formulation::Timo => {
-            let l = line_length(x)?;
-            Ok(vec![0.5 * l; 2])
-        }
+        Formulation::Barr | Formulation::Pout | Formulation::Timo => line_weights(x),
         Formulation::Solid | Formulation::Q4ri => solid::node_weights(ty, mode, x, m),
     }
+}
+
+/// Bars and beams carry values at both ends: the trapezoidal rule along
+/// the length, which is also ∫ N_i for the linear shape functions.
+fn line_weights(x: &[[f64; 3]]) -> Result<Vec<f64>, FemError> {
+    Ok(vec![0.5 * line_length(x)?; 2])
 }
 
 fn line_length(x: &[[f64; 3]]) -> Result<f64, FemError> {

@@ -79,7 +79,9 @@ pub(crate) enum Bin {
     Pow,
 }
 
-fn float_op(op: Bin, x: f64, y: f64) -> f64 {
+/// The operation on two FLOTTANTs: the one definition that every
+/// operand type (numbers, lists, points, fields, curves) applies.
+pub(crate) fn float_op(op: Bin, x: f64, y: f64) -> f64 {
     match op {
         Bin::Add => x + y,
         Bin::Sub => x - y,

@@ -363,13 +363,7 @@ pub(crate) fn matvec(r: &Rigidite, u: &Chpoint) -> Chpoint {
 
 pub(crate) fn binary(op: Bin, x: &Value, y: &Value) -> Option<std::result::Result<Value, String>> {
     use Value::*;
-    let f = |p: f64, q: f64| match op {
-        Bin::Add => p + q,
-        Bin::Sub => p - q,
-        Bin::Mul => p * q,
-        Bin::Div => p / q,
-        Bin::Pow => p.powf(q),
-    };
+    let f = |p: f64, q: f64| super::arith::float_op(op, p, q);
     Some(Ok(match (x, y) {
         (Chpo(a), Chpo(b)) => match op {
             Bin::Add | Bin::Sub => Chpo(Rc::new(combine(a, b, f))),

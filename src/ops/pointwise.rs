@@ -3,7 +3,7 @@
 //! of a curve (SIN, EXP, ABS, … and `MCHAML * 2.`). Node fields keep their
 //! own algebra in fields.rs; curves and element fields get theirs here.
 
-use super::arith::Bin;
+use super::arith::{float_op, Bin};
 use crate::value::model::{Curve, MchamlZone};
 use crate::value::{Evolution, Mchaml, Value};
 use std::cell::Cell;
@@ -64,16 +64,6 @@ fn map_evol(e: &Evolution, f: &dyn Fn(f64) -> f64) -> Evolution {
         }
     }
     out
-}
-
-pub(crate) fn float_op(op: Bin, x: f64, y: f64) -> f64 {
-    match op {
-        Bin::Add => x + y,
-        Bin::Sub => x - y,
-        Bin::Mul => x * y,
-        Bin::Div => x / y,
-        Bin::Pow => x.powf(y),
-    }
 }
 
 /// `+ - * / **` with an EVOLUTIO or an MCHAML on either side. None when

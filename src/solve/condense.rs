@@ -52,9 +52,10 @@ struct Interrupted {
     /// Factorise the tail of condensed λ2 without the shift (see
     /// [`Interrupted::numeric`]); cleared when that meets a tiny pivot.
     plain: bool,
-    /// With `plain`: the packed LDLᵀ of `schur` (D on the diagonal, unit L
-    /// strictly below), read from the factor.
-    tail_factor: Option<Mat<f64>>,
+    /// With `plain` (only the condensation onto the λ2 uses it): the packed
+    /// LDLᵀ of G = −S/4 (D on the diagonal, unit L strictly below), read
+    /// from the factor, shared with every [`Condensed`] without a copy.
+    tail_factor: Option<std::rc::Rc<Mat<f64>>>,
 }
 
 /// A plain tail pivot smaller than this fraction of its 4α is taken as
@@ -202,7 +203,13 @@ impl Interrupted {
             s[(j, j)] -= shift[j];
         }
         mirror_lower(&mut s);
-        self.tail_factor = if self.plain { Some(packed) } else { None };
+        self.tail_factor = self.plain.then(|| {
+            // G = −S/4 has the same L and D/(−4).
+            for j in 0..mt {
+                packed[(j, j)] *= -0.25;
+            }
+            std::rc::Rc::new(packed)
+        });
         // Take the shift back off the stored values too, so that residual
         // checks see the true matrix.
         for (&t, &sh) in self.tail.iter().zip(&shift) {
@@ -360,17 +367,9 @@ impl Condenser {
         let alpha: Vec<f64> = self.uni.iter().map(|&i| sys.scaling.alpha[i]).collect();
         let g = &self.core.schur * faer::Scale(-0.25);
         let _ = m;
-        // G = −S/4 has the same L and D/(−4).
-        let g_factor = self.core.tail_factor.as_ref().map(|f| {
-            let mut f = f.clone();
-            for j in 0..mu {
-                f[(j, j)] *= -0.25;
-            }
-            f
-        });
         Ok(Condensed {
             g,
-            g_factor,
+            g_factor: self.core.tail_factor.clone(),
             h: (0..mu).map(|q| -r[(q, 0)] / 4.0).collect(),
             alpha,
             sigma: self.uni.iter().map(|&i| sys.scaling.sigma[i]).collect(),

@@ -181,7 +181,7 @@ impl Backend for TOperator<'_> {
         // The condensation's own factor of G serves the all-active status.
         let given = match &self.c.g_factor {
             Some(gf) if self.factor.is_none() && active.iter().all(|&a| a) && gf.nrows() == m => {
-                Some(DenseLdlt::from_packed(gf.clone())).filter(|f| self.check(f, active).is_none())
+                Some(DenseLdlt::from_packed(gf.as_ref().clone())).filter(|f| self.check(f, active).is_none())
             }
             _ => None,
         };

@@ -100,7 +100,7 @@ pub struct Condensed {
     /// when the condensation produced it (an unshifted interrupted
     /// factorisation): the status loop's factor while every condition is
     /// active, with no dense factorisation.
-    pub g_factor: Option<faer::Mat<f64>>,
+    pub g_factor: Option<std::rc::Rc<faer::Mat<f64>>>,
     /// `h = ½ (ΣC H⁻¹ (F + CᵀW d) − Σd)`.
     pub h: Vec<f64>,
     /// Multiplier-block scaling α_i (the diagonal change on release is α_i).
