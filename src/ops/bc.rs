@@ -46,7 +46,7 @@ fn kind_keyword(a: &mut Args) -> Kind {
 
 /// A new multiplier node at the position of a physical node (Cast3M puts
 /// the LX node on the node it blocks).
-fn mult_node(it: &mut Interp, at: usize) -> usize {
+pub(super) fn mult_node(it: &mut Interp, at: usize) -> usize {
     let x = it.nodes.get(at);
     let d = it.nodes.density[at];
     it.nodes.push(x, d)

@@ -7,6 +7,7 @@ mod arith;
 mod assemble;
 mod bc;
 mod colour;
+mod contact;
 mod curves;
 mod dofs;
 mod evol;
@@ -175,6 +176,7 @@ impl Registry {
             mesh::OPS,
             colour::OPS,
             bc::OPS,
+            contact::OPS,
             model::OPS,
             manu::OPS,
             fields::OPS,

@@ -1,0 +1,158 @@
+//! Contact: JEU (the gap of conditions measured from the geometry) and
+//! IMPO (node-to-facet unilateral contact conditions). The geometry lives
+//! in `fem::contact`; this file reads arguments and builds the objects.
+
+use super::bc::mult_node;
+use super::{dofs, Args, OpDef};
+use crate::error::Result;
+use crate::eval::Interp;
+use crate::fem::contact::{self, Pair};
+use crate::fem::mesh::{ElemType, Mesh, Part};
+use crate::solve::Kind;
+use crate::value::rigidity::{CondRow, Subtype};
+use crate::value::{Chpoint, Nature, Rigidite, Value};
+use std::rc::Rc;
+
+pub(crate) const OPS: &[OpDef] = &[
+    OpDef {
+        name: "IMPO",
+        signature: "IMPO MAIL1 MAIL2 | IMPO 'MAIL' MAIL1 MAIL2 | IMPO 'BLOC' MAIL3",
+        doc: "Unilateral contact of the nodes of MAIL1 against the oriented SEG2 line (2D) or TRI3 surface (3D) MAIL2, \
+              which they must stay on the right-hand side of (the side of the TRI3 normal in 3D): one RELA 'MINI'-like \
+              condition per node of MAIL1 that projects onto MAIL2, with the nearest facet. Returns the gap field \
+              (as DEPI gives it) and the conditions. 'MAIL' gives the contact elements instead (slave node then facet \
+              nodes: TRI3 in 2D, TET4 in 3D), and 'BLOC' the gap and conditions of such a mesh. Nodes that project onto \
+              no facet get no condition.",
+        example: "jeu0 cont = impo haut_bas sol ; u = reso (k et cont) (f et jeu0) ;",
+        f: impo,
+    },
+    OpDef {
+        name: "JEU",
+        signature: "JEU RIGIDITE",
+        doc: "The limits (FLX, as DEPI gives them) that make the conditions of RIGIDITE measure from the current \
+              geometry: minus each condition applied to the node coordinates (UX←x, UY←y, UZ←z; UR←r, UZ←z in AXIS). \
+              Unknowns that are not translations count for 0.",
+        example: "u = reso (k et r) (f et (jeu r)) ;",
+        f: jeu,
+    },
+];
+
+/// Coordinate index of a translation unknown in the current mode.
+fn coord_index(it: &Interp, comp: &str) -> Option<usize> {
+    dofs::translations(it).iter().position(|c| *c == comp)
+}
+
+/// `−Σ c·x` for every condition, as a DEPI field on its multiplier node.
+fn gaps(it: &Interp, rig: &Rigidite) -> Chpoint {
+    let mut out = Chpoint::new(Nature::Discret);
+    for c in &rig.conds {
+        let ax: f64 = c
+            .terms
+            .iter()
+            .filter_map(|(n, comp, coef)| coord_index(it, comp).map(|k| coef * it.nodes.get(*n)[k]))
+            .sum();
+        // `+ 0.0` turns −0 into 0, so that LIST shows no "-0.00000E+00".
+        out.add(c.mult_node, "FLX", -ax + 0.0, true);
+    }
+    out
+}
+
+fn jeu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let rig = a.req::<Rc<Rigidite>>()?;
+    if rig.conds.is_empty() {
+        return Err(a.err("this RIGIDITE holds no condition"));
+    }
+    Ok(vec![Value::Chpo(Rc::new(gaps(it, &rig)))])
+}
+
+/// The facet type of the space dimension: what the master side is made of.
+fn facet_type(it: &Interp, a: &Args) -> Result<ElemType> {
+    match it.opts.dime {
+        2 => Ok(ElemType::Seg2),
+        3 => Ok(ElemType::Tri3),
+        d => Err(a.err(format!("contact needs OPTI DIME 2 (SEG2 lines) or 3 (TRI3 surfaces), not {}", d))),
+    }
+}
+
+/// The first element type of `m` that is not `want`, if any.
+fn other_type(m: &Mesh, want: &[ElemType]) -> Option<ElemType> {
+    m.parts.iter().map(|p| p.ty).find(|t| !want.contains(t))
+}
+
+fn impo(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let form = a.keyword(&["MAIL", "BLOC", "MESC", "FAIB", "SYME", "ACTI", "IMPA"]);
+    if let Some(k @ ("MESC" | "FAIB" | "SYME" | "ACTI" | "IMPA")) = form {
+        return Err(a.err(format!("the option '{}' is not supported", k)));
+    }
+    let ft = facet_type(it, a)?;
+    let pairs = if form == Some("BLOC") {
+        let m = a.req::<Rc<Mesh>>()?;
+        bloc_pairs(it, a, &m, ft)?
+    } else {
+        let slave = a.req::<Rc<Mesh>>()?;
+        let master = a.req::<Rc<Mesh>>()?;
+        let dim = ft.dim() + 1;
+        if let Some(t) = other_type(&master, &[ft]) {
+            return Err(a.err(format!(
+                "the second mesh (the master side) must be made of {} elements in {}D, found {}",
+                ft.name(),
+                dim,
+                t.name()
+            )));
+        }
+        if let Some(t) = slave.parts.iter().map(|p| p.ty).find(|t| t.dim() >= dim) {
+            return Err(a.err(format!(
+                "the first mesh (the slave side) must be points, lines{} in {}D, found {}",
+                if dim == 3 { " or surfaces" } else { "" },
+                dim,
+                t.name()
+            )));
+        }
+        let facets: Vec<&[usize]> = master.parts.iter().flat_map(|p| p.elems()).collect();
+        contact::pairs(&it.nodes.coords, &slave.node_list(), &facets)
+            .map_err(|i| a.err(format!("element {} of the master side has no length or area", i + 1)))?
+    };
+    if form == Some("MAIL") {
+        let ty = if ft == ElemType::Seg2 { ElemType::Tri3 } else { ElemType::Tet4 };
+        let conn = pairs.iter().flat_map(|p| std::iter::once(p.slave).chain(p.facet.iter().copied())).collect();
+        return Ok(vec![Value::Mesh(Rc::new(Mesh::single(Part::with(ty, conn))))]);
+    }
+    let rig = conditions(it, &pairs, ft.dim() + 1);
+    let gap = gaps(it, &rig);
+    Ok(vec![Value::Chpo(Rc::new(gap)), Value::Rigi(Rc::new(rig))])
+}
+
+/// The pairs a contact mesh (IMPO 'MAIL') stands for: slave node first,
+/// then the facet. The pairing is kept as given, so a node that has slid
+/// past its facet's end is held by the facet's nearest edge.
+fn bloc_pairs(it: &Interp, a: &Args, m: &Mesh, ft: ElemType) -> Result<Vec<Pair>> {
+    let ce = if ft == ElemType::Seg2 { ElemType::Tri3 } else { ElemType::Tet4 };
+    if let Some(t) = other_type(m, &[ce]) {
+        return Err(a.err(format!(
+            "'BLOC' reads a contact mesh made by IMPO 'MAIL' ({} elements in {}D), found {}",
+            ce.name(),
+            ft.dim() + 1,
+            t.name()
+        )));
+    }
+    let mut out = Vec::new();
+    for (e, el) in m.parts.iter().flat_map(|p| p.elems()).enumerate() {
+        let p = contact::project(&it.nodes.coords, el[0], &el[1..], false)
+            .map_err(|_| a.err(format!("contact element {}: its facet has no length or area", e + 1)))?;
+        out.push(p);
+    }
+    Ok(out)
+}
+
+/// One unilateral condition `Σ c·u ≥ −g0` per pair, its multiplier node on
+/// the slave node.
+fn conditions(it: &mut Interp, pairs: &[Pair], ndim: usize) -> Rigidite {
+    let names = dofs::translations(it);
+    let mut rig = Rigidite::new(Subtype::Blocage);
+    for p in pairs {
+        let terms = p.terms(ndim).into_iter().map(|(n, k, c)| (n, names[k].to_string(), c)).collect();
+        let m = mult_node(it, p.slave);
+        rig.conds.push(CondRow::new(m, terms, Kind::Mini));
+    }
+    rig
+}
