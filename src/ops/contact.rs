@@ -79,6 +79,24 @@ fn other_type(m: &Mesh, want: &[ElemType]) -> Option<ElemType> {
     m.parts.iter().map(|p| p.ty).find(|t| !want.contains(t))
 }
 
+/// `DEP1 RIG1 = IMPO M1 M2`: node-to-facet contact, one way (the nodes of
+/// M1 against the facets of M2; Cast3M's 'SYME' both ways is not offered:
+/// swap the meshes and add the RIGIDITEs). Choices, where impo.notice
+/// leaves them open:
+/// * each node takes the facet it projects onto with the smallest |gap|,
+///   so a closed master contour pairs a node with the near side, not the
+///   far one; a node that projects onto no facet (beyond the line's ends,
+///   or in the wedge outside a convex corner) gets **no condition**: a
+///   condition on a facet it does not face would measure a wrong gap;
+/// * no distance cut-off: far nodes get conditions that stay inactive;
+/// * the weights and the normal are frozen at the current geometry (small
+///   displacements, like every condition of gibi); DEP1 is JEU of RIG1;
+/// * a facet with no length or area is an error, not skipped silently.
+///
+/// The contact mesh of 'MAIL' lists each pair as a simplex (slave node,
+/// then the facet's nodes: TRI3 in 2D, TET4 in 3D), a shape gibi already
+/// knows and draws; Cast3M has a contact element type of its own, so the
+/// mesh serves 'BLOC' and pictures, not MODE.
 fn impo(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let form = a.keyword(&["MAIL", "BLOC", "MESC", "FAIB", "SYME", "ACTI", "IMPA"]);
     if let Some(k @ ("MESC" | "FAIB" | "SYME" | "ACTI" | "IMPA")) = form {
