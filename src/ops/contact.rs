@@ -3,6 +3,7 @@
 //! in `fem::contact`; this file reads arguments and builds the objects.
 
 use super::bc::mult_node;
+use super::mesh::req_geo;
 use super::{dofs, Args, OpDef};
 use crate::error::Result;
 use crate::eval::Interp;
@@ -16,7 +17,7 @@ use std::rc::Rc;
 pub(crate) const OPS: &[OpDef] = &[
     OpDef {
         name: "IMPO",
-        signature: "IMPO MAIL1 MAIL2 | IMPO 'MAIL' MAIL1 MAIL2 | IMPO 'BLOC' MAIL3",
+        signature: "IMPO POINT|MAIL1 MAIL2 | IMPO 'MAIL' MAIL1 MAIL2 | IMPO 'BLOC' MAIL3",
         doc: "Unilateral contact of the nodes of MAIL1 against the oriented SEG2 line (2D) or TRI3 surface (3D) MAIL2, \
               which they must stay on the right-hand side of (the side of the TRI3 normal in 3D): one RELA 'MINI'-like \
               condition per node of MAIL1 that projects onto MAIL2, with the nearest facet. Returns the gap field \
@@ -107,7 +108,7 @@ fn impo(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         let m = a.req::<Rc<Mesh>>()?;
         bloc_pairs(it, a, &m, ft)?
     } else {
-        let slave = a.req::<Rc<Mesh>>()?;
+        let slave = req_geo(a)?;
         let master = a.req::<Rc<Mesh>>()?;
         let dim = ft.dim() + 1;
         if let Some(t) = other_type(&master, &[ft]) {
