@@ -19,7 +19,7 @@ pub(crate) const OPS: &[OpDef] = &[
         name: "IMPO",
         signature: "IMPO POINT|MAIL1 MAIL2 | IMPO 'MAIL' MAIL1 MAIL2 | IMPO 'BLOC' MAIL3",
         doc: "Unilateral contact of the nodes of MAIL1 against the oriented SEG2 line (2D) or TRI3 surface (3D) MAIL2, \
-              which they must stay on the right-hand side of (the side of the TRI3 normal in 3D): one RELA 'MINI'-like \
+              which they must stay on the right-hand side of (the side of the TRI3 normal in 3D; a QUA4 counts as two TRI3): one RELA 'MINI'-like \
               condition per node of MAIL1 that projects onto MAIL2, with the nearest facet. Returns the gap field \
               (as DEPI gives it) and the conditions. 'MAIL' gives the contact elements instead (slave node then facet \
               nodes: TRI3 in 2D, TET4 in 3D), and 'BLOC' the gap and conditions of such a mesh. Nodes that project onto \
@@ -111,10 +111,13 @@ fn impo(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         let slave = req_geo(a)?;
         let master = a.req::<Rc<Mesh>>()?;
         let dim = ft.dim() + 1;
-        if let Some(t) = other_type(&master, &[ft]) {
+        // In 3D a QUA4 of the master side counts as two TRI3 (a b c, a c d),
+        // which keep its orientation: surfaces made by DALL or FACE are QUA4.
+        let allowed: &[ElemType] = if dim == 3 { &[ElemType::Tri3, ElemType::Qua4] } else { &[ElemType::Seg2] };
+        if let Some(t) = other_type(&master, allowed) {
             return Err(a.err(format!(
                 "the second mesh (the master side) must be made of {} elements in {}D, found {}",
-                ft.name(),
+                if dim == 3 { "TRI3 or QUA4" } else { "SEG2" },
                 dim,
                 t.name()
             )));
@@ -127,9 +130,24 @@ fn impo(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 t.name()
             )));
         }
-        let facets: Vec<&[usize]> = master.parts.iter().flat_map(|p| p.elems()).collect();
-        contact::pairs(&it.nodes.coords, &slave.node_list(), &facets)
-            .map_err(|i| a.err(format!("element {} of the master side has no length or area", i + 1)))?
+        // Each facet with the number of the master element it comes from.
+        let mut facets: Vec<Vec<usize>> = Vec::new();
+        let mut elem_of: Vec<usize> = Vec::new();
+        for (e, el) in master.parts.iter().flat_map(|p| p.elems()).enumerate() {
+            match el {
+                [a, b, c, d] => {
+                    facets.extend([vec![*a, *b, *c], vec![*a, *c, *d]]);
+                    elem_of.extend([e, e]);
+                }
+                _ => {
+                    facets.push(el.to_vec());
+                    elem_of.push(e);
+                }
+            }
+        }
+        let refs: Vec<&[usize]> = facets.iter().map(|f| f.as_slice()).collect();
+        contact::pairs(&it.nodes.coords, &slave.node_list(), &refs)
+            .map_err(|i| a.err(format!("element {} of the master side has no length or area", elem_of[i] + 1)))?
     };
     if form == Some("MAIL") {
         let ty = if ft == ElemType::Seg2 { ElemType::Tri3 } else { ElemType::Tet4 };
