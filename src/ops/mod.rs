@@ -19,17 +19,20 @@ mod io;
 mod limits;
 mod lists;
 mod manu;
+mod masq;
 mod math;
 mod mesh;
 mod model;
 mod objects;
 mod pointwise;
 mod post;
+mod products;
 mod reso;
 mod restrict;
 pub mod solver_cache;
 mod superele;
 mod tables;
+mod transform;
 pub mod unimplemented;
 mod union;
 
@@ -173,11 +176,14 @@ impl Registry {
             io::OPS,
             union::OPS,
             mesh::OPS,
+            transform::OPS,
             colour::OPS,
             bc::OPS,
             model::OPS,
             manu::OPS,
             fields::OPS,
+            products::OPS,
+            masq::OPS,
             restrict::OPS,
             reso::OPS,
             post::OPS,

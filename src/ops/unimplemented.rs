@@ -51,9 +51,7 @@ const MESHING: &str = "gibi meshes with DROI, CERC, DALL, TRAN, ROTA, VOLU, SYME
 /// The table, sorted by key.
 pub const MISSING: &[Missing] = &[
     op("ACQU", "ACQUERIR", "read data with LIRE"),
-    op("AFFI", "AFFINITE", MESHING),
     op("AMOR", "AMORTISSEMENT", STATICS),
-    op("BARY", "BARYCENTRE", ""),
     op("CALP", "CALP", "SIGM gives the beam resultants EFFX … MOMZ"),
     op("CAPA", "CAPACITE", STATICS),
     op("CHAR", "CHARGEMENT", STATICS),
@@ -69,7 +67,6 @@ pub const MISSING: &[Missing] = &[
     op("EXCI", "EXCITER", "UNIL runs the unilateral status iteration natively"),
     op("FLUX", "FLUX", STATICS),
     op("GRAD", "GRADIENT", "EPSI gives strains"),
-    op("HOMO", "HOMOTHETIE", MESHING),
     op("HOOK", "HOOKE", ""),
     op("IMPO", "IMPOSER", "unilateral supports are BLOQ/RELA 'MINI'|'MAXI' solved by RESO or UNIL"),
     proc("INCR", "INCREME", STATICS),
@@ -88,8 +85,6 @@ pub const MISSING: &[Missing] = &[
     op("PJBA", "PJBA", STATICS),
     op("PRIN", "PRINCIPALE", "VMIS gives the von Mises stress"),
     op("PROI", "PROI", ""),
-    op("PROJ", "PROJETER", MESHING),
-    op("PSCA", "PSCAL", "XTX gives the squared norm of a field; * multiplies fields"),
     op("PVEC", "PVEC", ""),
     op("RACC", "RACCORDER", MESHING),
     op("RECO", "RECOMBINER", STATICS),
@@ -100,7 +95,6 @@ pub const MISSING: &[Missing] = &[
     op("VARI", "VARIABLE", ""),
     op("VECT", "VECTEUR", "TRAC draws a deformed mesh (PLUS or DEFO) or a field"),
     op("VIBR", "VIBRATION", STATICS),
-    op("XTY", "XTY", "SOMT (x * y) gives the scalar product of two fields"),
 ];
 
 /// The message for a missing name, as written in the deck.

@@ -26,6 +26,7 @@ pub mod line;
 pub mod query;
 pub mod sweep;
 pub mod symmetry;
+pub mod transform;
 mod vec3;
 
 #[cfg(test)]
@@ -44,6 +45,7 @@ pub use query::{
 };
 pub use sweep::{rota, tran, volu};
 pub use symmetry::{syme, Mirror};
+pub use transform::{barycentre, map_copy, map_point, PointMap, Target};
 
 use crate::fem::mesh::{ElemType, Mesh, Nodes, Part};
 
