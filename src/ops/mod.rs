@@ -26,6 +26,7 @@ mod model;
 mod objects;
 mod pointwise;
 mod post;
+mod principal;
 mod products;
 mod reso;
 mod restrict;
@@ -187,6 +188,7 @@ impl Registry {
             restrict::OPS,
             reso::OPS,
             post::OPS,
+            principal::OPS,
             integrate::OPS,
             superele::OPS,
             export::OPS,

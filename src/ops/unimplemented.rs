@@ -83,7 +83,6 @@ pub const MISSING: &[Missing] = &[
     proc("PASA", "PASAPAS", STATICS),
     op("PAVE", "PAVER", MESHING),
     op("PJBA", "PJBA", STATICS),
-    op("PRIN", "PRINCIPALE", "VMIS gives the von Mises stress"),
     op("PROI", "PROI", ""),
     op("PVEC", "PVEC", ""),
     op("RACC", "RACCORDER", MESHING),
