@@ -6,8 +6,10 @@ use super::mesh::{mesh_val, req_geo, vector};
 use super::{Args, OpDef};
 use crate::error::Result;
 use crate::eval::Interp;
+use crate::fem::mesh::Mesh;
 use crate::fem::meshing::{self as mg, PointMap, Target};
 use crate::value::Value;
+use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
     OpDef {
@@ -30,6 +32,13 @@ pub(crate) const OPS: &[OpDef] = &[
         doc: "A copy on new nodes projected on a plane (3D) or a line (2D), along a direction (CYLI) or from an apex (CONI).",
         example: "s2 = s1 proj 'CYLI' (0. 0. 1.) 'PLAN' p1 p2 p3 ;",
         f: proj,
+    },
+    OpDef {
+        name: "ORIE",
+        signature: "ORIE MAILLAGE",
+        doc: "The mesh with one orientation: lines head to tail, plane surfaces counter-clockwise, surfaces in space consistent across edges, volumes positive (each connected piece follows its first element).",
+        example: "l2 = orie l ;",
+        f: orie,
     },
     OpDef {
         name: "BARY",
@@ -117,4 +126,12 @@ fn bary(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let g = mg::barycentre(&it.nodes, &m)?;
     let d = it.opts.dens;
     Ok(vec![Value::Point(it.nodes.push(g, d))])
+}
+
+fn orie(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let m = a.req::<Rc<Mesh>>()?;
+    if let Some(k) = a.keyword(&["POIN", "VECT"]) {
+        return Err(a.err(format!("ORIE '{}' (a chosen side for the normals) is not implemented in gibi", k)));
+    }
+    Ok(mesh_val(mg::orie(&it.nodes, &m, it.opts.dime.max(1))?))
 }

@@ -79,7 +79,6 @@ pub const MISSING: &[Missing] = &[
     op("MREM", "MREM", "RESO and UNIL re-insert eliminated unknowns themselves"),
     op("NUAG", "NUAGE", ""),
     op("OBTE", "OBTENIR", FILES),
-    op("ORIE", "ORIENTER", "INVE reverses the orientation of a mesh"),
     proc("PASA", "PASAPAS", STATICS),
     op("PAVE", "PAVER", MESHING),
     op("PJBA", "PJBA", STATICS),

@@ -23,6 +23,7 @@ pub mod edit;
 pub mod extract;
 pub mod grading;
 pub mod line;
+pub mod orient;
 pub mod query;
 pub mod sweep;
 pub mod symmetry;
@@ -40,6 +41,7 @@ pub use edit::{
 pub use extract::{cont, cote, elem_appui, elem_numbers, elem_type, face};
 pub use grading::Spacing;
 pub use line::{cerc, droi, droi_extend, line_type};
+pub use orient::orie;
 pub use query::{
     line_chain, nbel, nbel_of_type, nbno, poin_droit, poin_final, poin_init, poin_nth, poin_plan, poin_proc,
 };
