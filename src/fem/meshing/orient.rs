@@ -51,7 +51,10 @@ fn flip_perm(ty: ElemType) -> &'static [usize] {
 /// (the end node +1, the start node -1) or a surface's edges (+1 when
 /// run from the lower node number to the higher). Two neighbours agree
 /// when they run through the meeting place with opposite signs.
-fn connectors(ty: ElemType, e: &[usize]) -> Vec<((usize, usize), i8)> {
+/// A meeting place: a node (as `(n, n)`) or an edge `(low, high)`.
+type Key = (usize, usize);
+
+fn connectors(ty: ElemType, e: &[usize]) -> Vec<(Key, i8)> {
     let c: Vec<usize> = corners(ty).iter().map(|&k| e[k]).collect();
     match ty.dim() {
         1 => vec![((c[1], c[1]), 1), ((c[0], c[0]), -1)],
@@ -68,7 +71,7 @@ fn connectors(ty: ElemType, e: &[usize]) -> Vec<((usize, usize), i8)> {
 /// Which elements of `parts` (a flat list over the parts of dimension
 /// `dim`) must be turned so that neighbours agree.
 fn propagate(parts: &[&Part]) -> Vec<Vec<bool>> {
-    let mut at: HashMap<(usize, usize), Vec<(usize, usize, i8)>> = HashMap::new();
+    let mut at: HashMap<Key, Vec<(usize, usize, i8)>> = HashMap::new();
     for (pi, p) in parts.iter().enumerate() {
         for (ei, e) in p.elems().enumerate() {
             for (key, s) in connectors(p.ty, e) {
