@@ -1,6 +1,9 @@
-//! Scalar products: PSCA (of two vectors, two node fields or two element
-//! fields) and XTY (of two node fields), each over paired component lists.
+//! Products and combinations: PSCA (scalar product of two vectors, two
+//! node fields or two element fields) and XTY (of two node fields), each
+//! over paired component lists; PVEC (vector product of two vectors); COLI
+//! (linear combination of fields).
 
+use super::arith::{self, Bin};
 use super::{Args, OpDef, PointId};
 use crate::error::Result;
 use crate::eval::Interp;
@@ -23,7 +26,54 @@ pub(crate) const OPS: &[OpDef] = &[
         example: "w = xty u f (mots 'UX' 'UY') (mots 'FX' 'FY') ;",
         f: xty,
     },
+    OpDef {
+        name: "PVEC",
+        signature: "PVEC POINT POINT",
+        doc: "Vector product of two vectors (OPTI DIME 3), as a new point.",
+        example: "n = pvec (1. 0. 0.) (0. 1. 0.) ;",
+        f: pvec,
+    },
+    OpDef {
+        name: "COLI",
+        signature: "COLI OBJ1 a1 (OBJ2 a2 …)",
+        doc: "Linear combination a1 OBJ1 + a2 OBJ2 + … of CHPOINTs (or MCHAMLs), each weighed by the number after it.",
+        example: "u = coli u1 0.5 u2 2. ;",
+        f: coli,
+    },
 ];
+
+fn pvec(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let p = a.req::<PointId>()?;
+    let q = a.req::<PointId>()?;
+    if it.opts.dime < 3 {
+        return Err(a.err("the vector product of two points needs OPTI DIME 3"));
+    }
+    let (x, y) = (it.nodes.get(p.0), it.nodes.get(q.0));
+    let w = [x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]];
+    let d = it.opts.dens;
+    Ok(vec![Value::Point(it.nodes.push(w, d))])
+}
+
+/// Σ a_i OBJ_i with the field algebra of `*` and `+` (supports united,
+/// a value missing on one side reading as 0).
+fn coli(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let field = |v: &Value| matches!(v, Value::Chpo(_) | Value::Mchaml(_)).then(|| v.clone());
+    let mut sum: Option<Value> = None;
+    while let Some(obj) = a.opt_with(field) {
+        let w = a.opt_num().ok_or_else(|| a.missing("FLOTTANT (the weight of the field before it)"))?;
+        let term = arith::apply(it, a, Bin::Mul, Value::Float(w), obj)?;
+        sum = Some(match sum {
+            None => term,
+            Some(s) => {
+                if s.ty() != term.ty() {
+                    return Err(a.err(format!("cannot combine a {} with a {}", s.type_name(), term.type_name())));
+                }
+                arith::apply(it, a, Bin::Add, s, term)?
+            }
+        });
+    }
+    sum.map(|s| vec![s]).ok_or_else(|| a.missing("CHPOINT or MCHAML"))
+}
 
 /// Either operand pair PSCA accepts, read in one go so that the first
 /// operand's type decides which form is meant.
