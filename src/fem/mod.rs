@@ -13,6 +13,7 @@ pub mod element;
 pub mod integrate;
 pub mod loads;
 pub mod material;
+pub mod principal;
 pub mod quadrature;
 pub mod shape;
 pub mod solid;

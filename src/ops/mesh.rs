@@ -82,7 +82,7 @@ pub(crate) fn req_geo(a: &mut Args) -> Result<Mesh> {
     opt_geo(a).ok_or_else(|| a.missing("POINT or MAILLAGE"))
 }
 
-fn mesh_val(m: Mesh) -> Vec<Value> {
+pub(crate) fn mesh_val(m: Mesh) -> Vec<Value> {
     vec![Value::Mesh(Rc::new(m))]
 }
 
@@ -97,7 +97,7 @@ fn nbel(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 /// A POINT argument read as a vector.
-fn vector(it: &Interp, a: &mut Args) -> Option<[f64; 3]> {
+pub(crate) fn vector(it: &Interp, a: &mut Args) -> Option<[f64; 3]> {
     a.opt::<PointId>().map(|p| it.nodes.get(p.0))
 }
 

@@ -20,17 +20,21 @@ mod io;
 mod limits;
 mod lists;
 mod manu;
+mod masq;
 mod math;
 mod mesh;
 mod model;
 mod objects;
 mod pointwise;
 mod post;
+mod principal;
+mod products;
 mod reso;
 mod restrict;
 pub mod solver_cache;
 mod superele;
 mod tables;
+mod transform;
 pub mod unimplemented;
 mod union;
 
@@ -174,15 +178,19 @@ impl Registry {
             io::OPS,
             union::OPS,
             mesh::OPS,
+            transform::OPS,
             colour::OPS,
             bc::OPS,
             contact::OPS,
             model::OPS,
             manu::OPS,
             fields::OPS,
+            products::OPS,
+            masq::OPS,
             restrict::OPS,
             reso::OPS,
             post::OPS,
+            principal::OPS,
             integrate::OPS,
             superele::OPS,
             export::OPS,

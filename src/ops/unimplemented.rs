@@ -51,13 +51,10 @@ const MESHING: &str = "gibi meshes with DROI, CERC, DALL, TRAN, ROTA, VOLU, SYME
 /// The table, sorted by key.
 pub const MISSING: &[Missing] = &[
     op("ACQU", "ACQUERIR", "read data with LIRE"),
-    op("AFFI", "AFFINITE", MESHING),
     op("AMOR", "AMORTISSEMENT", STATICS),
-    op("BARY", "BARYCENTRE", ""),
     op("CALP", "CALP", "SIGM gives the beam resultants EFFX … MOMZ"),
     op("CAPA", "CAPACITE", STATICS),
     op("CHAR", "CHARGEMENT", STATICS),
-    op("COLI", "COLINEAIRE", "combine fields with + - * and ET"),
     op("COND", "CONDUCTIVITE", STATICS),
     op("DOMA", "DOMAINE", ""),
     proc("DYNA", "DYNAMIC", STATICS),
@@ -69,7 +66,6 @@ pub const MISSING: &[Missing] = &[
     op("EXCI", "EXCITER", "UNIL runs the unilateral status iteration natively"),
     op("FLUX", "FLUX", STATICS),
     op("GRAD", "GRADIENT", "EPSI gives strains"),
-    op("HOMO", "HOMOTHETIE", MESHING),
     op("HOOK", "HOOKE", ""),
     proc("INCR", "INCREME", STATICS),
     op("INVA", "INVARIANT", "VMIS gives the von Mises stress"),
@@ -80,15 +76,10 @@ pub const MISSING: &[Missing] = &[
     op("MREM", "MREM", "RESO and UNIL re-insert eliminated unknowns themselves"),
     op("NUAG", "NUAGE", ""),
     op("OBTE", "OBTENIR", FILES),
-    op("ORIE", "ORIENTER", "INVE reverses the orientation of a mesh"),
     proc("PASA", "PASAPAS", STATICS),
     op("PAVE", "PAVER", MESHING),
     op("PJBA", "PJBA", STATICS),
-    op("PRIN", "PRINCIPALE", "VMIS gives the von Mises stress"),
     op("PROI", "PROI", ""),
-    op("PROJ", "PROJETER", MESHING),
-    op("PSCA", "PSCAL", "XTX gives the squared norm of a field; * multiplies fields"),
-    op("PVEC", "PVEC", ""),
     op("RACC", "RACCORDER", MESHING),
     op("RECO", "RECOMBINER", STATICS),
     op("REGL", "REGLER", MESHING),
@@ -98,7 +89,6 @@ pub const MISSING: &[Missing] = &[
     op("VARI", "VARIABLE", ""),
     op("VECT", "VECTEUR", "TRAC draws a deformed mesh (PLUS or DEFO) or a field"),
     op("VIBR", "VIBRATION", STATICS),
-    op("XTY", "XTY", "SOMT (x * y) gives the scalar product of two fields"),
 ];
 
 /// The message for a missing name, as written in the deck.

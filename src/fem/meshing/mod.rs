@@ -23,9 +23,11 @@ pub mod edit;
 pub mod extract;
 pub mod grading;
 pub mod line;
+pub mod orient;
 pub mod query;
 pub mod sweep;
 pub mod symmetry;
+pub mod transform;
 mod vec3;
 
 #[cfg(test)]
@@ -39,11 +41,13 @@ pub use edit::{
 pub use extract::{cont, cote, elem_appui, elem_numbers, elem_type, face};
 pub use grading::Spacing;
 pub use line::{cerc, droi, droi_extend, line_type};
+pub use orient::orie;
 pub use query::{
     line_chain, nbel, nbel_of_type, nbno, poin_droit, poin_final, poin_init, poin_nth, poin_plan, poin_proc,
 };
 pub use sweep::{rota, tran, volu};
 pub use symmetry::{syme, Mirror};
+pub use transform::{barycentre, map_copy, map_point, PointMap, Target};
 
 use crate::fem::mesh::{ElemType, Mesh, Nodes, Part};
 

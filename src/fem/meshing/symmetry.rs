@@ -68,7 +68,7 @@ impl Mirror {
 }
 
 /// Node permutation that turns an element over, keeping its first node.
-fn turn_over(ty: ElemType) -> &'static [usize] {
+pub(crate) fn turn_over(ty: ElemType) -> &'static [usize] {
     match ty {
         ElemType::Poi1 => &[0],
         ElemType::Seg2 => &[0, 1],
