@@ -98,9 +98,14 @@ fn run(name: &str, k: &Matrix, nodes: &[usize], gap: f64, load: f64, method: Met
                 );
             }
         };
+        // The cache (factor, symbolic analysis) outlives the timing, as it
+        // outlives a RESO inside its RIGIDITE; F's factor is not freed
+        // inside its timing either.
+        let mut cache = UnilCache::default();
         let t = Instant::now();
-        let (_, r) = solve_unilateral(&p, &l, &opts, &mut UnilCache::default(), &mut on_iter).expect("solves");
+        let (_, r) = solve_unilateral(&p, &l, &opts, &mut cache, &mut on_iter).expect("solves");
         ts.push(t.elapsed().as_secs_f64());
+        drop(cache);
         rep = Some(r);
     }
     if method == Method::Creux {

@@ -1,11 +1,21 @@
 //! Condensation by an interrupted factorisation (unilateral.md §3,
 //! solver-notes §3.3).
 //!
-//! The unknowns to condense onto are ordered last and made one dense
-//! trailing supernode; one supernodal LDLᵀ of the whole doubled matrix then
-//! holds, in that supernode, the LDLᵀ of the Schur complement S of the
-//! trailing block. We read S = L₂₂D₂₂L₂₂ᵀ from it. Building S from one solve
-//! per condensed unknown was measured 25–100× slower and is never done.
+//! [`Condenser`] condenses a unilateral problem onto the second multipliers
+//! of its unilateral conditions. Its normal path is [`super::bordered`]: the
+//! sparse factor holds everything but those multipliers, and the Schur
+//! complement S of the tail is formed from the border, supernode by
+//! supernode. This module keeps the *whole-matrix* path, used for the
+//! static condensation onto chosen unknowns ([`schur_onto`], Cast3M's SUPER
+//! and the 'ANCIEN' method) and as the condenser's fallback (a zero pivot
+//! before the tail is reported from here, with the unknowns involved).
+//!
+//! The whole-matrix path: the unknowns to condense onto are ordered last
+//! and made one dense trailing supernode; one supernodal LDLᵀ of the whole
+//! doubled matrix then holds, in that supernode, the LDLᵀ of the Schur
+//! complement S of the trailing block. We read S = L₂₂D₂₂L₂₂ᵀ from it.
+//! Building S from one solve per condensed unknown was measured 25–100×
+//! slower and is never done.
 //!
 //! The trailing block's own factorisation is only a means to read S, and S
 //! may be singular (a MINI and a MAXI on the same dof give a singular G).
@@ -31,12 +41,14 @@
 use faer::linalg::matmul::triangular::{matmul as tri_matmul, BlockStructure};
 use faer::{Accum, Mat};
 
+use super::bordered::Bordered;
 use super::direct::{check_structure, diagnose};
 use super::error::SolveError;
 use super::lagrange::Doubled;
 use super::linear::SymFactor;
 use super::ordering;
 use super::problem::{Condensed, Load, Problem, Solution};
+use std::rc::Rc;
 
 /// A doubled system factorised with a condensed tail.
 #[derive(Debug)]
@@ -265,12 +277,24 @@ impl Interrupted {
     }
 }
 
+/// How the condensation onto the λ2 is held: the border kept out of the
+/// factor (the normal case, [`Bordered`]), or the whole doubled matrix
+/// factorised with its tail (the fallback: it names the unknowns of a zero
+/// pivot, and copes with a tail that the border path cannot factor).
+#[derive(Debug)]
+enum Core {
+    Bordered(Box<Bordered>),
+    Whole(Box<Interrupted>),
+}
+
 /// The unilateral problem condensed onto the second multipliers of its
 /// unilateral conditions (`kind != Equal`); bilateral conditions stay
 /// doubled inside the factor.
 #[derive(Debug)]
 pub struct Condenser {
-    core: Interrupted,
+    core: Core,
+    /// G = −S/4, shared with every [`Condensed`] without a copy.
+    g: Rc<Mat<f64>>,
     /// The forward substitution of the last load's rhs, keyed by the load:
     /// the recovery of that load then skips its forward half.
     forwarded: std::sync::Mutex<Option<(u64, Mat<f64>)>>,
@@ -282,6 +306,16 @@ pub struct Condenser {
 
 impl Condenser {
     pub fn new(p: &Problem) -> Result<Self, SolveError> {
+        Self::build(p, false)
+    }
+
+    /// The whole-matrix path only (tests compare both paths).
+    #[cfg(test)]
+    pub(crate) fn new_whole(p: &Problem) -> Result<Self, SolveError> {
+        Self::build(p, true)
+    }
+
+    fn build(p: &Problem, force_whole: bool) -> Result<Self, SolveError> {
         let uni: Vec<usize> = (0..p.conditions.len()).filter(|&i| p.conditions[i].kind.is_unilateral()).collect();
         if uni.is_empty() {
             return Err(SolveError::Other("no unilateral condition".into()));
@@ -293,27 +327,67 @@ impl Condenser {
                 "the condensed method needs a symmetric matrix: use the CREUX method for a non-symmetric one".into(),
             ));
         }
-        // Doubled::with_tail validates the data.
         let (n, m) = (p.k.n, p.conditions.len());
         let tail: Vec<usize> = uni.iter().map(|&i| n + m + i).collect();
-        // Without the m² explicit tail pairs first: one mesh connects the
-        // tail anyway; disconnected contact zones need them.
-        let sys = Doubled::with_tail(p, &tail, false)?;
+        // Doubled::new validates the data.
+        let sys = Doubled::new(p, &[])?;
+        check_structure(p)?;
         let primal = ordering::primal_best(p, &[], Some((&sys.col_ptr, &sys.row_idx)))?;
         let fwd = ordering::doubled_order(p, &primal, &uni);
+        let rows: Vec<Vec<(usize, f64)>> = uni.iter().map(|&i| p.conditions[i].terms.clone()).collect();
+        let sense: Vec<f64> = uni.iter().map(|&i| p.conditions[i].kind.sense()).collect();
+        let bordered = if force_whole { None } else { Bordered::new(sys, &fwd, tail)?.ok() };
+        let core = match bordered {
+            Some(b) => Core::Bordered(Box::new(b)),
+            None => Core::Whole(Box::new(Self::whole(p, &uni, fwd, &rows, &sense)?)),
+        };
+        let mut c =
+            Condenser { core, g: Rc::new(Mat::zeros(0, 0)), forwarded: std::sync::Mutex::new(None), sense, rows, uni };
+        c.take_g();
+        Ok(c)
+    }
+
+    /// The whole-matrix condensation (see [`Core`]).
+    fn whole(
+        p: &Problem,
+        uni: &[usize],
+        fwd: Vec<usize>,
+        rows: &[Vec<(usize, f64)>],
+        sense: &[f64],
+    ) -> Result<Interrupted, SolveError> {
+        let (n, m) = (p.k.n, p.conditions.len());
+        let tail: Vec<usize> = uni.iter().map(|&i| n + m + i).collect();
         let cut = fwd.len() - uni.len();
         // Without proportional rows (duplicates, a gap on both sides of a
         // dof) G is usually regular: the tail is then factorised unshifted
         // and its factor is the status loop's first one (all active).
-        let rows: Vec<Vec<(usize, f64)>> = uni.iter().map(|&i| p.conditions[i].terms.clone()).collect();
-        let sense: Vec<f64> = uni.iter().map(|&i| p.conditions[i].kind.sense()).collect();
-        let plain = super::groups::analyse(&rows, &sense, &vec![0.0; uni.len()])
+        let plain = super::groups::analyse(rows, sense, &vec![0.0; uni.len()])
             .is_ok_and(|g| g.partner.iter().all(Option::is_none) && !g.fixed_inactive.iter().any(|&f| f));
-        let core = match Interrupted::try_new(p, fwd.clone(), cut, Some(sys), plain)? {
+        // Without the m² explicit tail pairs first: one mesh connects the
+        // tail anyway; disconnected contact zones need them.
+        let sys = Doubled::with_tail(p, &tail, false)?;
+        Ok(match Interrupted::try_new(p, fwd.clone(), cut, Some(sys), plain)? {
             Some(core) => core,
             None => Interrupted::new(p, fwd, cut, Some(Doubled::new(p, &tail)?), plain)?,
+        })
+    }
+
+    /// Moves S out of the core as G = −S/4 (no copy).
+    fn take_g(&mut self) {
+        let s = match &mut self.core {
+            Core::Bordered(b) => &mut b.schur,
+            Core::Whole(w) => &mut w.schur,
         };
-        Ok(Condenser { core, forwarded: std::sync::Mutex::new(None), sense, rows, uni })
+        let mut g = std::mem::replace(s, Mat::zeros(0, 0));
+        g *= faer::Scale(-0.25);
+        self.g = Rc::new(g);
+    }
+
+    fn sys(&self) -> &Doubled {
+        match &self.core {
+            Core::Bordered(b) => &b.sys,
+            Core::Whole(w) => &w.sys,
+        }
     }
 
     /// Global numbers of the unilateral conditions (position q ↦ condition).
@@ -322,7 +396,7 @@ impl Condenser {
     }
 
     pub fn same_pattern(&self, p: &Problem) -> bool {
-        self.core.sys.same_pattern(p)
+        self.sys().same_pattern(p)
     }
 
     /// New values on the same structure: numeric factorisation only.
@@ -330,13 +404,24 @@ impl Condenser {
         if let Ok(mut slot) = self.forwarded.lock() {
             *slot = None;
         }
-        self.core.numeric(p, true)?;
         self.rows = self.uni.iter().map(|&i| p.conditions[i].terms.clone()).collect();
+        match &mut self.core {
+            Core::Bordered(b) => {
+                b.sys.fill(p, 0.0)?;
+                if b.numeric().is_err() {
+                    // The whole-matrix path names the failure.
+                    let fwd = b.elimination_order();
+                    self.core = Core::Whole(Box::new(Self::whole(p, &self.uni, fwd, &self.rows, &self.sense)?));
+                }
+            }
+            Core::Whole(w) => w.numeric(p, true)?,
+        }
+        self.take_g();
         Ok(())
     }
 
     fn check_load(&self, load: &Load) -> Result<(), SolveError> {
-        let (n, m) = (self.core.sys.n, self.core.sys.m);
+        let (n, m) = (self.sys().n, self.sys().m);
         if load.f.len() != n || load.d.len() != m {
             return Err(SolveError::Other(format!(
                 "load sizes ({}, {}) do not match ({n}, {m})",
@@ -350,26 +435,34 @@ impl Condenser {
     /// The condensed problem `T x = h` for one load (§3.2).
     pub fn condensed(&self, load: &Load) -> Result<Condensed, SolveError> {
         self.check_load(load)?;
-        let sys = &self.core.sys;
-        let (n, m, dim) = (sys.n, sys.m, sys.dim());
+        let sys = self.sys();
+        let (n, dim) = (sys.n, sys.dim());
         let mut full = vec![0.0; dim];
         sys.rhs(&load.f, &load.d, &mut full);
         let mut f_only = vec![0.0; dim];
         f_only[..n].copy_from_slice(&load.f);
-        // With the λ2 shifted to −α−4α the Schur system reads −4T x = r,
-        // so h = −r/4; with d = 0 (F only), r = −2ΣCH⁻¹F.
-        let x = self.core.forward(&[full, f_only]);
-        let r = x.subrows(self.core.cut, dim - self.core.cut).to_owned();
+        // The Schur system reads −4T x = r, so h = −r/4; with d = 0
+        // (F only), r = −2ΣCH⁻¹F.
+        let (x, r) = match &self.core {
+            Core::Bordered(b) => b.forward(&[full, f_only]),
+            Core::Whole(w) => {
+                let x = w.forward(&[full, f_only]);
+                let r = x.subrows(w.cut, dim - w.cut).to_owned();
+                (x, r)
+            }
+        };
         if let Ok(mut slot) = self.forwarded.lock() {
             *slot = Some((load_key(load), x.subcols(0, 1).to_owned()));
         }
         let mu = self.uni.len();
         let alpha: Vec<f64> = self.uni.iter().map(|&i| sys.scaling.alpha[i]).collect();
-        let g = &self.core.schur * faer::Scale(-0.25);
-        let _ = m;
+        let g_factor = match &self.core {
+            Core::Whole(w) => w.tail_factor.clone(),
+            Core::Bordered(_) => None,
+        };
         Ok(Condensed {
-            g,
-            g_factor: self.core.tail_factor.clone(),
+            g: self.g.clone(),
+            g_factor,
             h: (0..mu).map(|q| -r[(q, 0)] / 4.0).collect(),
             alpha,
             sigma: self.uni.iter().map(|&i| sys.scaling.sigma[i]).collect(),
@@ -388,16 +481,23 @@ impl Condenser {
         if x.len() != mu || active.len() != mu {
             return Err(SolveError::Other("status vector size mismatch".into()));
         }
-        let sys = &self.core.sys;
+        let sys = self.sys();
         let (n, m, dim) = (sys.n, sys.m, sys.dim());
         let saved = self.forwarded.lock().ok().and_then(|mut s| s.take());
-        let z = match saved {
-            Some((key, fx)) if key == load_key(load) => self.core.finish_with_tail(fx, x),
+        let fx = match saved {
+            Some((key, fx)) if key == load_key(load) => fx,
             _ => {
                 let mut rhs = vec![0.0; dim];
                 sys.rhs(&load.f, &load.d, &mut rhs);
-                self.core.solve_with_tail(&rhs, x)
+                match &self.core {
+                    Core::Bordered(b) => b.forward(&[rhs]).0,
+                    Core::Whole(w) => w.forward(&[rhs]),
+                }
             }
+        };
+        let z = match &self.core {
+            Core::Bordered(b) => b.finish(fx, x),
+            Core::Whole(w) => w.finish_with_tail(fx, x),
         };
         let sg = &sys.scaling.sigma;
         let mut lambda: Vec<f64> = (0..m).map(|i| sg[i] * (z[n + i] + z[n + m + i])).collect();
@@ -412,7 +512,7 @@ impl Condenser {
 
 /// Copies the lower triangle of a square matrix onto its upper one, by
 /// tiles so that both the reads and the writes stay in cache.
-fn mirror_lower(s: &mut Mat<f64>) {
+pub(super) fn mirror_lower(s: &mut Mat<f64>) {
     const B: usize = 64;
     let n = s.nrows();
     for jb in (0..n).step_by(B) {

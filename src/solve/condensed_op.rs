@@ -63,11 +63,11 @@ impl<'a> TOperator<'a> {
             return bad("non-finite G");
         }
         let g = if exactly_symmetric(&c.g) {
-            Cow::Borrowed(&c.g)
+            Cow::Borrowed(&*c.g)
         } else {
             // (G + Gᵀ)/2 by faer's blocked transpose: element-wise (j, i)
             // reads stride through memory (≈ 0.1 s at m = 2000).
-            let mut g = &c.g + c.g.transpose();
+            let mut g = &*c.g + c.g.transpose();
             g *= faer::Scale(0.5);
             Cow::Owned(g)
         };
@@ -77,7 +77,19 @@ impl<'a> TOperator<'a> {
     }
 
     fn t_matrix(&self, active: &[bool]) -> Mat<f64> {
-        let mut t = self.g.as_ref().clone();
+        self.t_matrix_in(active, None)
+    }
+
+    /// T for `active`, written into `buf` when given (a factor's storage
+    /// that is no longer needed: no fresh m² allocation to page in).
+    fn t_matrix_in(&self, active: &[bool], buf: Option<Mat<f64>>) -> Mat<f64> {
+        let mut t = match buf {
+            Some(mut b) if b.nrows() == self.g.nrows() && b.ncols() == self.g.ncols() => {
+                b.copy_from(self.g.as_ref());
+                b
+            }
+            _ => self.g.as_ref().clone(),
+        };
         for (k, &a) in active.iter().enumerate() {
             if !a {
                 t[(k, k)] -= self.c.alpha[k];
@@ -92,6 +104,33 @@ impl<'a> TOperator<'a> {
 
     /// Relative residual max|h − Tx| / max(Σ|T_ij x_j| + |h_i|), and h − Tx.
     fn residual(&self, x: &[f64]) -> (f64, Vec<f64>) {
+        let m = x.len();
+        // r = h − Tx by one (threaded) matrix-vector product; the exact
+        // denominator Σ|T_ij x_j| costs a second pass over T, needed only
+        // when a lower bound of it (|h_i|, |T_ii x_i|) does not already
+        // show the residual small.
+        let mut r = Mat::<f64>::from_fn(m, 1, |i, _| self.c.h[i]);
+        let xm = faer::MatRef::from_column_major_slice(x, m, 1);
+        let par = if m >= 256 { faer::get_global_parallelism() } else { faer::Par::Seq };
+        faer::linalg::matmul::matmul(r.as_mut(), faer::Accum::Add, self.g.as_ref(), xm, -1.0, par);
+        let mut r: Vec<f64> = (0..m).map(|i| r[(i, 0)]).collect();
+        let mut lower = 0.0_f64;
+        for j in 0..m {
+            if !self.active[j] {
+                r[j] += self.c.alpha[j] * x[j];
+            }
+            let t = if self.active[j] { self.g[(j, j)] } else { self.g[(j, j)] - self.c.alpha[j] };
+            lower = lower.max(self.c.h[j].abs()).max((t * x[j]).abs());
+        }
+        let num = r.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
+        if num.is_finite() && lower > 0.0 && num <= RESIDUAL_OK * lower {
+            return (num / lower, r);
+        }
+        self.exact_residual(x)
+    }
+
+    /// [`TOperator::residual`] with the exact denominator.
+    fn exact_residual(&self, x: &[f64]) -> (f64, Vec<f64>) {
         let m = x.len();
         let mut r = self.c.h.clone();
         let mut s: Vec<f64> = self.c.h.iter().map(|v| v.abs()).collect();
@@ -156,6 +195,7 @@ impl Backend for TOperator<'_> {
     fn set_status(&mut self, active: &[bool]) -> Result<(), usize> {
         let m = active.len();
         let mut lost = false;
+        let mut spare = None;
         if let Some(mut f) = self.factor.take() {
             let changed: Vec<usize> = (0..m).filter(|&k| active[k] != self.active[k]).collect();
             if changed.is_empty() {
@@ -172,11 +212,12 @@ impl Backend for TOperator<'_> {
                     return Ok(());
                 }
                 // A bad updated pivot may be update round-off: decide on a
-                // fresh factorisation. The old factor is gone.
-                lost = true;
-            } else {
-                self.factor = Some(f);
+                // fresh factorisation.
             }
+            // Refactored from scratch below in its storage: the previous
+            // status's factor is gone (refactored if the new one fails).
+            spare = Some(f.into_storage());
+            lost = true;
         }
         // The condensation's own factor of G serves the all-active status.
         let given = match &self.c.g_factor {
@@ -187,12 +228,13 @@ impl Backend for TOperator<'_> {
         };
         let f = match given {
             Some(f) => f,
-            None => DenseLdlt::factor_owned(self.t_matrix(active)),
+            None => DenseLdlt::factor_owned(self.t_matrix_in(active, spare)),
         };
         if let Some(k) = self.check(&f, active) {
             if lost {
                 // The contract keeps the previous status usable.
-                self.factor = Some(DenseLdlt::factor_owned(self.t_matrix(&self.active)));
+                let prev = self.t_matrix_in(&self.active, Some(f.into_storage()));
+                self.factor = Some(DenseLdlt::factor_owned(prev));
             }
             return Err(k);
         }

@@ -58,6 +58,11 @@ impl DenseLdlt {
         DenseLdlt { ld, updates: 0 }
     }
 
+    /// The m² storage, for reuse by a later factorisation.
+    pub fn into_storage(self) -> Mat<f64> {
+        self.ld
+    }
+
     pub fn dim(&self) -> usize {
         self.ld.nrows()
     }

@@ -330,7 +330,7 @@ pub(super) fn solve(
     let uf = pcg(&h, &pre, &rhs).map_err(g)?;
     let hf = pcg(&h, &pre, &f_eff).map_err(g)?;
     let cd = Condensed {
-        g: gm,
+        g: std::rc::Rc::new(gm),
         g_factor: None,
         h: (0..mu).map(|q| 0.5 * (sc_row(q, &uf) - sc.sigma[q] * d[q])).collect(),
         alpha: sc.alpha.clone(),

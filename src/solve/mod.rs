@@ -21,6 +21,7 @@
 //!   preconditioned CG, no factorisation).
 
 pub mod ancien;
+mod bordered;
 pub mod condense;
 pub mod condensed_op;
 mod creux;

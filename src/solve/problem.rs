@@ -95,7 +95,7 @@ pub struct Solution {
 pub struct Condensed {
     /// `G = ΣC H⁻¹ CᵀΣ` (m×m, symmetric; positive definite when the rows
     /// are independent).
-    pub g: faer::Mat<f64>,
+    pub g: std::rc::Rc<faer::Mat<f64>>,
     /// The packed LDLᵀ of `g` (D on the diagonal, unit L strictly below)
     /// when the condensation produced it (an unshifted interrupted
     /// factorisation): the status loop's factor while every condition is

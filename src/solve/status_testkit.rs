@@ -117,7 +117,7 @@ pub fn build(p: &Dense) -> Built {
     let hv = (0..m).map(|i| 0.5 * (sigma[i] * p.dot(i, &uf) - sigma[i] * p.d[i])).collect();
     let xtf = (0..m).map(|i| sigma[i] * p.dot(i, &hf)).collect();
     let c = Condensed {
-        g,
+        g: g.into(),
         g_factor: None,
         h: hv,
         alpha,
