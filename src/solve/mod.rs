@@ -12,7 +12,8 @@
 //!   [`linear`], [`direct`]: the doubled-multiplier system of Verpeaux &
 //!   Charras and its pivot-free LDLᵀ on faer.
 //! * [`condense`]: the interrupted factorisation onto the second multipliers
-//!   of the unilateral conditions (and onto chosen unknowns, for SUPER).
+//!   of the unilateral conditions, normally with the border kept out of the
+//!   sparse factor (`bordered`), and onto chosen unknowns (SUPER).
 //! * [`status`]: the status (active-set) iteration on the condensed operator.
 //! * [`unilateral`]: the UNIL driver choosing among the methods: CONDENSE
 //!   (above), ANCIEN (`uni_ancien`: Guyan condensation onto the contact
