@@ -2,7 +2,7 @@
 //! solver-notes §3.3).
 //!
 //! [`Condenser`] condenses a unilateral problem onto the second multipliers
-//! of its unilateral conditions. Its normal path is [`super::bordered`]: the
+//! of its unilateral conditions. Its normal path is `bordered.rs`: the
 //! sparse factor holds everything but those multipliers, and the Schur
 //! complement S of the tail is formed from the border, supernode by
 //! supernode. This module keeps the *whole-matrix* path, used for the
