@@ -149,6 +149,11 @@ fn impo(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         contact::pairs(&it.nodes.coords, &slave.node_list(), &refs)
             .map_err(|i| a.err(format!("element {} of the master side has no length or area", elem_of[i] + 1)))?
     };
+    if pairs.is_empty() {
+        // Legal (bodies far apart sideways) but nearly always a mistake in
+        // the orientation or the order of the meshes: say so.
+        it.println("IMPO: warning: no node of the slave side projects onto the master side: no contact condition");
+    }
     if form == Some("MAIL") {
         let ty = if ft == ElemType::Seg2 { ElemType::Tri3 } else { ElemType::Tet4 };
         let conn = pairs.iter().flat_map(|p| std::iter::once(p.slave).chain(p.facet.iter().copied())).collect();
