@@ -136,25 +136,159 @@ pub fn project(coords: &[[f64; 3]], s: usize, facet: &[usize], inside_only: bool
 /// facets of a straight line). Nodes that project onto no facet get no
 /// pair. Degenerate facets are reported by their index.
 pub fn pairs(coords: &[[f64; 3]], slaves: &[usize], facets: &[&[usize]]) -> Result<Vec<Pair>, usize> {
+    pairs_with(coords, slaves, facets, BRUTE_MAX)
+}
+
+/// [`pairs`], with the grid used above `brute_max` node × facet checks.
+fn pairs_with(
+    coords: &[[f64; 3]],
+    slaves: &[usize],
+    facets: &[&[usize]],
+    brute_max: usize,
+) -> Result<Vec<Pair>, usize> {
     if let Some(i) = facets.iter().position(|f| project(coords, f[0], f, false) == Err(Miss::Degenerate)) {
         return Err(i);
     }
+    // Every facet against every node is fine for deck-sized contacts; a
+    // grid of facet boxes keeps large 3D surfaces near-linear.
+    let grid = (slaves.len() * facets.len() > brute_max).then(|| Grid::new(coords, facets));
     let mut out = Vec::new();
-    for &s in slaves {
-        let mut best: Option<Pair> = None;
-        for f in facets {
+    let mut stamp = vec![usize::MAX; facets.len()];
+    for (k, &s) in slaves.iter().enumerate() {
+        let mut best: Option<(Pair, usize)> = None;
+        let best_gap = std::cell::Cell::new(f64::INFINITY);
+        let mut consider = |i: usize| {
+            let f = facets[i];
             if f.contains(&s) {
-                continue;
+                return;
             }
             if let Ok(p) = project(coords, s, f, true) {
-                if best.as_ref().is_none_or(|b| p.gap.abs() < b.gap.abs()) {
-                    best = Some(p);
+                // Smallest |gap|, then the first facet on a tie: the same
+                // choice whatever order the facets are met in.
+                if best.as_ref().is_none_or(|(b, j)| (p.gap.abs(), i) < (b.gap.abs(), *j)) {
+                    best_gap.set(p.gap.abs());
+                    best = Some((p, i));
+                }
+            }
+        };
+        match &grid {
+            None => (0..facets.len()).for_each(&mut consider),
+            Some(g) => g.search(coords[s], k, &mut stamp, &mut consider, |pending| {
+                // A facet whose box is farther than the best |gap| cannot
+                // hold a nearer projection (the foot of a projection is in
+                // the facet, within the box).
+                pending <= best_gap.get()
+            }),
+        }
+        out.extend(best.map(|(p, _)| p));
+    }
+    Ok(out)
+}
+
+/// Node × facet count above which the facet grid is used.
+const BRUTE_MAX: usize = 200_000;
+
+/// A uniform grid over the facets' bounding boxes.
+struct Grid {
+    lo: [f64; 3],
+    h: f64,
+    dims: [usize; 3],
+    /// Facets overlapping each cell.
+    cells: Vec<Vec<usize>>,
+}
+
+impl Grid {
+    fn new(coords: &[[f64; 3]], facets: &[&[usize]]) -> Self {
+        let boxes: Vec<([f64; 3], [f64; 3])> = facets.iter().map(|f| bbox(coords, f)).collect();
+        let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+        let mut size = 0.0;
+        for (a, b) in &boxes {
+            for k in 0..3 {
+                lo[k] = lo[k].min(a[k]);
+                hi[k] = hi[k].max(b[k]);
+            }
+            size += (0..3).map(|k| b[k] - a[k]).fold(0.0, f64::max);
+        }
+        // Cells about the mean facet size, at most a few per facet.
+        let extent = (0..3).map(|k| hi[k] - lo[k]).fold(0.0, f64::max);
+        let mut h = (size / facets.len() as f64).max(extent * 1e-9).max(f64::MIN_POSITIVE);
+        let count = |h: f64| (0..3).map(|k| ((hi[k] - lo[k]) / h) as usize + 1).product::<usize>();
+        while count(h) > 8 * facets.len() + 8 {
+            h *= 2.0;
+        }
+        let dims = [0, 1, 2].map(|k| ((hi[k] - lo[k]) / h) as usize + 1);
+        let mut cells = vec![Vec::new(); dims[0] * dims[1] * dims[2]];
+        let cell = |x: f64, k: usize| (((x - lo[k]) / h) as usize).min(dims[k] - 1);
+        for (i, (a, b)) in boxes.iter().enumerate() {
+            for z in cell(a[2], 2)..=cell(b[2], 2) {
+                for y in cell(a[1], 1)..=cell(b[1], 1) {
+                    for x in cell(a[0], 0)..=cell(b[0], 0) {
+                        cells[(z * dims[1] + y) * dims[0] + x].push(i);
+                    }
                 }
             }
         }
-        out.extend(best);
+        Grid { lo, h, dims, cells }
     }
-    Ok(out)
+
+    /// Offers the facets to `consider` by rings of cells around `x`, while
+    /// `go_on(lower bound of the distance to the next ring)` holds.
+    fn search(
+        &self,
+        x: [f64; 3],
+        key: usize,
+        stamp: &mut [usize],
+        consider: &mut dyn FnMut(usize),
+        go_on: impl Fn(f64) -> bool,
+    ) {
+        let at: [i64; 3] = [0, 1, 2].map(|k| ((x[k] - self.lo[k]) / self.h).floor() as i64);
+        let d: [i64; 3] = [0, 1, 2].map(|k| self.dims[k] as i64);
+        // Beyond this ring every cell is outside the grid.
+        let max_r = (0..3).map(|k| at[k].abs().max((d[k] - 1 - at[k]).abs())).max().unwrap_or(0);
+        let span = |k: usize, r: i64| (at[k] - r).max(0)..=(at[k] + r).min(d[k] - 1);
+        let mut visit = |xx: i64, y: i64, z: i64| {
+            let c = ((z * d[1] + y) * d[0] + xx) as usize;
+            for &i in &self.cells[c] {
+                if stamp[i] != key {
+                    stamp[i] = key;
+                    consider(i);
+                }
+            }
+        };
+        for r in 0..=max_r {
+            // Points of ring r are at least (r − 1)·h away from x.
+            if r > 1 && !go_on((r - 1) as f64 * self.h) {
+                return;
+            }
+            // The shell of the cube of cells at Chebyshev distance r.
+            for z in span(2, r) {
+                for y in span(1, r) {
+                    if (z - at[2]).abs() == r || (y - at[1]).abs() == r {
+                        span(0, r).for_each(|xx| visit(xx, y, z));
+                    } else {
+                        for xx in [at[0] - r, at[0] + r] {
+                            if xx >= 0 && xx < d[0] {
+                                visit(xx, y, z);
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// A facet's bounding box, widened by the projection tolerance.
+fn bbox(coords: &[[f64; 3]], f: &[usize]) -> ([f64; 3], [f64; 3]) {
+    let (mut a, mut b) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+    for &n in f {
+        for k in 0..3 {
+            a[k] = a[k].min(coords[n][k]);
+            b[k] = b[k].max(coords[n][k]);
+        }
+    }
+    let pad = 1e-6 * (0..3).map(|k| b[k] - a[k]).fold(0.0, f64::max);
+    ([0, 1, 2].map(|k| a[k] - pad), [0, 1, 2].map(|k| b[k] + pad))
 }
 
 #[cfg(test)]
@@ -163,6 +297,52 @@ mod tests {
 
     fn close(a: f64, b: f64) -> bool {
         (a - b).abs() < 1e-12
+    }
+
+    /// The facet grid picks exactly the facets the brute-force scan picks:
+    /// a wavy triangulated surface, slave nodes above, below, beside it and
+    /// on its vertices (ties between facets sharing the vertex).
+    #[test]
+    fn grid_search_matches_brute_force() {
+        let nx = 30;
+        let mut x = Vec::new();
+        for j in 0..=nx {
+            for i in 0..=nx {
+                let (u, v) = (i as f64 / nx as f64, j as f64 / nx as f64);
+                x.push([u, v, 0.1 * (7.0 * u).sin() * (5.0 * v).cos()]);
+            }
+        }
+        let id = |i: usize, j: usize| j * (nx + 1) + i;
+        let mut tris = Vec::new();
+        for j in 0..nx {
+            for i in 0..nx {
+                tris.push(vec![id(i, j), id(i + 1, j), id(i + 1, j + 1)]);
+                tris.push(vec![id(i, j), id(i + 1, j + 1), id(i, j + 1)]);
+            }
+        }
+        let mut seed = 12345u64;
+        let mut rnd = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut slaves = Vec::new();
+        for k in 0..400 {
+            let p = [1.4 * rnd() - 0.2, 1.4 * rnd() - 0.2, if k % 2 == 0 { 0.5 } else { -0.3 } * rnd()];
+            slaves.push(x.len());
+            x.push(p);
+        }
+        for j in (0..=nx).step_by(7) {
+            let v = x[id(j, (j * 3) % (nx + 1))];
+            slaves.push(x.len());
+            x.push([v[0], v[1], v[2] + 0.05]);
+        }
+        let refs: Vec<&[usize]> = tris.iter().map(|t| t.as_slice()).collect();
+        let brute = pairs_with(&x, &slaves, &refs, usize::MAX).unwrap();
+        let grid = pairs_with(&x, &slaves, &refs, 0).unwrap();
+        assert!(brute.len() > 100, "{} pairs", brute.len());
+        assert_eq!(brute, grid);
     }
 
     #[test]
