@@ -74,10 +74,21 @@ impl FilePolicy {
 }
 
 /// Cumulative time and call count per operator, for TEMP.
-#[derive(Debug, Default, Clone)]
+#[derive(Debug, Clone)]
 pub struct Timers {
     /// Named phases reported by long operators (factorisation, status loop).
     pub phases: BTreeMap<String, (u64, Duration)>,
+    /// The interpreter's start, the origin of TEMP's clock.
+    pub origin: std::time::Instant,
+    /// The last TEMP call, for the time elapsed since.
+    pub last: std::time::Instant,
+}
+
+impl Default for Timers {
+    fn default() -> Self {
+        let now = std::time::Instant::now();
+        Timers { phases: BTreeMap::new(), origin: now, last: now }
+    }
 }
 
 impl Timers {
