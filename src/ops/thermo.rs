@@ -88,8 +88,12 @@ fn holds(f: &Mchaml, names: &[&str]) -> bool {
 }
 
 fn comps_of(f: &Mchaml) -> String {
-    let mut v: Vec<&str> = f.zones.iter().flat_map(|z| z.comps.iter().map(String::as_str)).collect();
-    v.dedup();
+    let mut v: Vec<&str> = Vec::new();
+    for c in f.zones.iter().flat_map(|z| z.comps.iter()) {
+        if !v.contains(&c.as_str()) {
+            v.push(c);
+        }
+    }
     if v.is_empty() {
         "no point values".into()
     } else {
@@ -135,7 +139,7 @@ fn elas(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         .ok_or_else(|| a.missing("MCHAML of strains (from EPSI or EPTH)"))?;
     if !holds(&eps, STRAIN_NAMES) {
         return Err(a.err(format!(
-            "ELAS applies Hooke's law to a strain field (EPXX …, EPSS …); this field has {}",
+            "Hooke's law applies to a strain field (EPXX …, EPSS …); this field has {}",
             comps_of(&eps)
         )));
     }
@@ -157,7 +161,7 @@ fn ener(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         (false, true) => (f2, f1),
         _ => {
             return Err(a.err(format!(
-                "ENER needs a stress field and a strain field; got fields with {} and {}",
+                "one stress field and one strain field are needed; the fields have {} and {}",
                 comps_of(&f1),
                 comps_of(&f2)
             )))
