@@ -348,6 +348,45 @@ pub fn strain(timo: bool, mode: Mode, x: &[[f64; 3]], m: &Material, u: &[f64]) -
     })
 }
 
+/// Generalised Hooke's law (ELAS): resultants from generalised strains,
+/// EFFX = EA·EPSS, MOMX = GJ·CURX, MOMY = EI_y·CURY, MOMZ = EI_z·CURZ, and
+/// for TIMO the shear forces G·A_s·GAXY (GAXZ). A POUT is rigid in shear:
+/// its shear forces come from equilibrium, not from a strain, so they are
+/// 0 here. Absent strain components count as 0.
+pub fn hooke(timo: bool, mode: Mode, m: &Material, eps: &GaussField) -> Result<GaussField, FemError> {
+    let elem = elem_name(timo);
+    let s = section(elem, mode, m, timo, 1.0)?;
+    let d3 = mode == Mode::Trid;
+    let (gy, gz) = if timo {
+        let gz = if d3 { s.g * m.positive(m.secz, "SECZ", elem)? } else { 0.0 };
+        (s.g * m.positive(m.secy, "SECY", elem)?, gz)
+    } else {
+        (0.0, 0.0)
+    };
+    let at = |v: &[f64], c: &str| eps.comps.iter().position(|n| *n == c).map_or(0.0, |i| v[i]);
+    let values = eps
+        .values
+        .iter()
+        .map(|v| {
+            let r = [
+                s.e * s.a * at(v, "EPSS"),
+                gy * at(v, "GAXY"),
+                gz * at(v, "GAXZ"),
+                s.g * s.j * at(v, "CURX"),
+                s.e * s.iy * at(v, "CURY"),
+                s.e * s.iz * at(v, "CURZ"),
+            ];
+            if d3 {
+                r.to_vec()
+            } else {
+                vec![r[0], r[1], r[5]]
+            }
+        })
+        .collect();
+    let comps = if d3 { vec!["EFFX", "EFFY", "EFFZ", "MOMX", "MOMY", "MOMZ"] } else { vec!["EFFX", "EFFY", "MOMZ"] };
+    Ok(GaussField { comps, values })
+}
+
 /// Nodal forces of the section resultants at both ends (the inverse of
 /// [`stress`]): in local axes −R at node 1 and +R at node 2, then turned
 /// to global axes.

@@ -10,7 +10,10 @@ pub struct Material {
     pub youn: Option<f64>,
     pub nu: Option<f64>,
     pub rho: Option<f64>,
+    /// Thermal expansion coefficient, and the temperature at which the
+    /// thermal strain is zero (MATE 'TREF', 0 by default as in Cast3M).
     pub alph: Option<f64>,
+    pub tref: Option<f64>,
     /// Cross-section area (BARR, POUT, TIMO).
     pub sect: Option<f64>,
     /// Second moments about the local y and z axes.
@@ -61,6 +64,17 @@ impl Material {
     /// Shear modulus E / (2(1 + ν)).
     pub(crate) fn shear_modulus(&self, elem: &'static str) -> Result<f64, FemError> {
         Ok(self.young(elem)? / (2.0 * (1.0 + self.poisson(elem)?)))
+    }
+
+    /// Thermal expansion coefficient: any finite value (a negative α is a
+    /// material that shrinks when heated, not an input error).
+    pub(crate) fn expansion(&self, elem: &'static str) -> Result<f64, FemError> {
+        let a = self.alph.ok_or(FemError::MissingProperty { prop: "ALPH", elem })?;
+        if a.is_finite() {
+            Ok(a)
+        } else {
+            Err(FemError::InvalidProperty { prop: "ALPH", value: a, elem, why: "must be finite" })
+        }
     }
 
     pub(crate) fn density(&self, elem: &'static str) -> Result<f64, FemError> {

@@ -8,6 +8,7 @@
 pub mod bar;
 pub mod beam;
 pub mod colour;
+pub mod constitutive;
 pub mod contact;
 pub mod element;
 pub mod integrate;

@@ -34,6 +34,7 @@ mod restrict;
 pub mod solver_cache;
 mod superele;
 mod tables;
+mod thermo;
 mod transform;
 pub mod unimplemented;
 mod union;
@@ -190,6 +191,7 @@ impl Registry {
             restrict::OPS,
             reso::OPS,
             post::OPS,
+            thermo::OPS,
             principal::OPS,
             integrate::OPS,
             superele::OPS,

@@ -14,7 +14,7 @@ use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "MODE", signature: "MODE GEO 'MECANIQUE' ('ELASTIQUE' ('ISOTROPE')) (BARR|POUT|TIMO|Q4RI|…)", doc: "A model: a mesh tied to a formulation, a behaviour and an element type.", example: "mo = mode l mecanique elastique pout ;", f: mode },
-    OpDef { name: "MATE", signature: "MATE MMODEL 'YOUN' E 'NU' nu ('RHO' r) ('ALPH' a) (SECT INRY INRZ TORS SECY SECZ EPAI DIM3 …)", doc: "Material (and section) data of a model.", example: "ma = mate mo youn 2.e11 nu 0.3 ;", f: mate },
+    OpDef { name: "MATE", signature: "MATE MMODEL 'YOUN' E 'NU' nu ('RHO' r) ('ALPH' a ('TREF' t)) (SECT INRY INRZ TORS SECY SECZ EPAI DIM3 …)", doc: "Material (and section) data of a model.", example: "ma = mate mo youn 2.e11 nu 0.3 ;", f: mate },
     OpDef { name: "CARA", signature: "CARA MMODEL ('SECT' s) ('INRY' i) ('INRZ' i) ('TORS' j) ('SECY' a) ('SECZ' a) ('EPAI' e) ('DIM3' e) ('VECT' P)", doc: "Geometric characteristics of a model (merge with MATE using ET).", example: "ca = cara mo sect 1. inrz 1. ;", f: cara },
     OpDef { name: "RIGI", signature: "RIGI MMODEL MCHAML (MCHAML) | RIGI ('DEPL') ('ROTA') (comps) VALUE GEO", doc: "Stiffness of a model, or springs to ground.", example: "k = rigi mo ma ;", f: rigi },
     OpDef { name: "APPU", signature: "APPU ('DEPL') ('ROTA') (comps) ('DIRECTION' VEC) VALUE GEO", doc: "Springs to ground of stiffness VALUE on the listed unknowns of every node.", example: "ri = appu 'UX' 10. p1 ;", f: appu },
@@ -22,6 +22,8 @@ pub(crate) const OPS: &[OpDef] = &[
 
 const FORMS: &[&str] =
     &["BARR", "POUT", "TIMO", "Q4RI", "TRI3", "TRI6", "QUA4", "QUA8", "CUB8", "TET4", "PRI6", "SEG2"];
+
+const BEHAVIOURS: &[&str] = &["ELASTIQUE", "ISOTROPE"];
 
 fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let geo = req_geo(a)?;
@@ -31,7 +33,10 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     }
     let mut behaviour = Vec::new();
     let mut element = String::new();
-    while let Some(w) = a.word_not_operator() {
+    // ELASTIQUE is matched before any operator check: its first four
+    // letters name the operator ELAS, which must not stop `MODE s
+    // MECANIQUE ELASTIQUE` (Cast3M reads MODE's words as words).
+    while let Some(w) = a.keyword_next(BEHAVIOURS).map(String::from).or_else(|| a.word_not_operator()) {
         let w = w.to_uppercase();
         if let Some(f) = FORMS.iter().find(|f| super::args::keyword_matches(&w, f)) {
             element = f.to_string();
@@ -63,8 +68,8 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 const PROPS: &[&str] = &[
-    "YOUN", "NU", "RHO", "ALPH", "SECT", "INRY", "INRZ", "TORS", "SECY", "SECZ", "EPAI", "DIM3", "DX", "DY", "DZ",
-    "VECT",
+    "YOUN", "NU", "RHO", "ALPH", "TREF", "SECT", "INRY", "INRZ", "TORS", "SECY", "SECZ", "EPAI", "DIM3", "DX", "DY",
+    "DZ", "VECT",
 ];
 
 fn props(it: &Interp, a: &mut Args, subtype: &str) -> Result<Vec<Value>> {
@@ -116,6 +121,7 @@ pub(crate) fn material_for(zone: &ModelZone, fields: &[Rc<Mchaml>]) -> Material 
                     "NU" => m.nu = v,
                     "RHO" => m.rho = v,
                     "ALPH" => m.alph = v,
+                    "TREF" => m.tref = v,
                     "SECT" => m.sect = v,
                     "INRY" => m.inry = v,
                     "INRZ" => m.inrz = v,

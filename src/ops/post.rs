@@ -27,9 +27,9 @@ fn fem_err(e: element::FemError) -> Error {
 
 /// The model, the material fields and (optionally) the displacement field.
 /// A model, its material fields and an optional displacement field.
-type ModelArgs = (Rc<Model>, Vec<Rc<Mchaml>>, Option<Rc<Chpoint>>);
+pub(crate) type ModelArgs = (Rc<Model>, Vec<Rc<Mchaml>>, Option<Rc<Chpoint>>);
 
-fn model_args(a: &mut Args) -> Result<ModelArgs> {
+pub(crate) fn model_args(a: &mut Args) -> Result<ModelArgs> {
     a.keyword(&["LINE"]);
     let model = a.req::<Rc<Model>>()?;
     let mut fields = Vec::new();
@@ -120,7 +120,7 @@ fn intern(c: &str) -> &'static str {
     const NAMES: &[&str] = &[
         "SMXX", "SMYY", "SMZZ", "SMXY", "SMXZ", "SMYZ", "SMRR", "SMTT", "SMRZ", "EPXX", "EPYY", "EPZZ", "GAXY", "GAXZ",
         "GAYZ", "EPRR", "EPTT", "GARZ", "EFFX", "EFFY", "EFFZ", "MOMX", "MOMY", "MOMZ", "EPSS", "CURX", "CURY", "CURZ",
-        "VMIS", "SCAL",
+        "VMIS", "SCAL", "ENER", "TRES", "I1", "J2", "J3",
     ];
     NAMES.iter().find(|n| **n == c).copied().unwrap_or("?")
 }

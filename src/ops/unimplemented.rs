@@ -68,7 +68,6 @@ pub const MISSING: &[Missing] = &[
     op("GRAD", "GRADIENT", "EPSI gives strains"),
     op("HOOK", "HOOKE", ""),
     proc("INCR", "INCREME", STATICS),
-    op("INVA", "INVARIANT", "VMIS gives the von Mises stress"),
     op("ISOV", "ISOVALEUR", ""),
     op("KCHA", "KCHA", ""),
     op("KCHT", "KCHT", ""),
