@@ -59,11 +59,21 @@ enum Direction {
 }
 
 fn bloq(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let kind = kind_keyword(a);
+    let mut kind = kind_keyword(a);
     let mut comps: Vec<String> = Vec::new();
     let mut dir: Option<Direction> = None;
     let mut geo: Option<Mesh> = None;
     loop {
+        // 'MINI'/'MAXI' after the components (`BLOQ 'UY' 'MINI' l`) is the
+        // same condition, not a component named MINI.
+        if let Some(k) = a.keyword(&["MINI", "MAXI"]) {
+            let k = if k == "MINI" { Kind::Mini } else { Kind::Maxi };
+            if kind != Kind::Equal && kind != k {
+                return Err(a.err("a condition is either 'MINI' or 'MAXI', not both"));
+            }
+            kind = k;
+            continue;
+        }
         if let Some(k) = a.keyword(&["DEPL", "ROTA", "DIRECTION", "RADIAL", "ORTHO", "FROT"]) {
             match k {
                 "DEPL" => comps.extend(dofs::translations(it).iter().map(|s| s.to_string())),
