@@ -42,6 +42,9 @@ pub fn thermal_strain(
         Formulation::Solid | Formulation::Q4ri => ty.name(),
         _ => f.name(),
     };
+    if f.is_shell() {
+        return Err(FemError::Unsupported { form: f.name(), elem: ty.name(), mode: mode.name() });
+    }
     let alpha = m.expansion(elem)?;
     let tref = m.tref.unwrap_or(0.0);
     match f {
@@ -73,6 +76,9 @@ pub fn thermal_strain(
                 .collect();
             Ok(GaussField { comps, values })
         }
+        Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => {
+            Err(FemError::Unsupported { form: f.name(), elem: ty.name(), mode: mode.name() })
+        }
     }
 }
 
@@ -92,10 +98,14 @@ fn check_solid(f: Formulation, ty: ElemType, mode: Mode) -> Result<(), FemError>
 /// [`beam::hooke`]. A strain component the field lacks counts as 0, but a
 /// field with none of them is not a strain field of this element.
 pub fn hooke(f: Formulation, ty: ElemType, mode: Mode, m: &Material, eps: &GaussField) -> Result<GaussField, FemError> {
+    if f.is_shell() {
+        return Err(FemError::Unsupported { form: f.name(), elem: ty.name(), mode: mode.name() });
+    }
     let wanted: Vec<&'static str> = match f {
         Formulation::Barr => vec!["EPSS"],
         Formulation::Pout | Formulation::Timo => vec!["EPSS", "GAXY", "GAXZ", "CURX", "CURY", "CURZ"],
         Formulation::Solid | Formulation::Q4ri => solid::strain_comps(mode),
+        Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => unreachable!("refused above"),
     };
     if !wanted.iter().any(|w| eps.comps.contains(w)) {
         return Err(FemError::MissingComponent { comp: wanted[0], elem: ty.name() });
@@ -119,6 +129,9 @@ pub fn hooke(f: Formulation, ty: ElemType, mode: Mode, m: &Material, eps: &Gauss
                 })
                 .collect();
             Ok(GaussField { comps: solid::stress_comps(mode), values })
+        }
+        Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => {
+            Err(FemError::Unsupported { form: f.name(), elem: ty.name(), mode: mode.name() })
         }
     }
 }
@@ -147,6 +160,14 @@ const WORK_PAIRS: &[(&str, &str)] = &[
     ("MOMX", "CURX"),
     ("MOMY", "CURY"),
     ("MOMZ", "CURZ"),
+    // Thin shells: membrane forces and moments per unit length with the
+    // membrane strains and curvatures (engineering shear and twist).
+    ("N11", "EPSS"),
+    ("N22", "EPTT"),
+    ("N12", "GAST"),
+    ("M11", "RTSS"),
+    ("M22", "RTTT"),
+    ("M12", "RTST"),
 ];
 
 /// Strain energy density ½ σ:ε (ENER), component ENER, point by point.

@@ -14,7 +14,7 @@
 //!   is per unit thickness.
 
 use super::mesh::ElemType;
-use super::{bar, beam, solid};
+use super::{bar, beam, shell, solid};
 use thiserror::Error;
 
 pub use super::material::Material;
@@ -48,6 +48,10 @@ pub enum Formulation {
     Timo,
     Solid,
     Q4ri,
+    /// Thin flat shells (see [`shell`]).
+    Coq3,
+    Dkt,
+    Coq4,
 }
 
 impl Formulation {
@@ -58,7 +62,15 @@ impl Formulation {
             Formulation::Timo => "TIMO",
             Formulation::Solid => "massive",
             Formulation::Q4ri => "Q4RI",
+            Formulation::Coq3 => "COQ3",
+            Formulation::Dkt => "DKT",
+            Formulation::Coq4 => "COQ4",
         }
+    }
+
+    /// COQ3, DKT or COQ4.
+    pub fn is_shell(self) -> bool {
+        matches!(self, Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4)
     }
 }
 
@@ -111,6 +123,7 @@ pub fn node_dofs(f: Formulation, mode: Mode) -> Result<&'static [&'static str], 
         Formulation::Barr => bar::dofs(mode),
         Formulation::Pout | Formulation::Timo => beam::dofs(mode),
         Formulation::Solid | Formulation::Q4ri => Ok(solid::dofs(mode)),
+        Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::dofs(f, mode),
     }
 }
 
@@ -146,6 +159,7 @@ fn check(f: Formulation, ty: ElemType, mode: Mode) -> Result<(), FemError> {
         Formulation::Barr | Formulation::Pout | Formulation::Timo => ty == ElemType::Seg2,
         Formulation::Q4ri => ty == ElemType::Qua4,
         Formulation::Solid => ty.dim() >= 2,
+        Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => ty == shell::geometry(f),
     };
     if ok {
         Ok(())
@@ -167,6 +181,7 @@ pub fn stiffness(
         Formulation::Pout => beam::stiffness(false, mode, x, m),
         Formulation::Timo => beam::stiffness(true, mode, x, m),
         Formulation::Solid | Formulation::Q4ri => solid::stiffness(f, ty, mode, x, m),
+        Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::stiffness(f, mode, x, m),
     }
 }
 
@@ -185,6 +200,7 @@ pub fn mass(
         Formulation::Pout => beam::mass(false, mode, x, m, lumped),
         Formulation::Timo => beam::mass(true, mode, x, m, lumped),
         Formulation::Solid | Formulation::Q4ri => solid::mass(ty, mode, x, m, lumped),
+        Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::mass(f, mode, x, m, lumped),
     }
 }
 
@@ -204,12 +220,13 @@ pub fn stress(
         Formulation::Pout => beam::stress(false, mode, x, m, u),
         Formulation::Timo => beam::stress(true, mode, x, m, u),
         Formulation::Solid | Formulation::Q4ri => solid::field(f, ty, mode, x, m, u, true),
+        Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::stress(f, mode, x, m, u),
     }
 }
 
 /// Strains (EPSI): EPXX EPYY EPZZ GAXY (GAXZ GAYZ) with engineering
 /// shears for solids (EPRR EPZZ EPTT GARZ in AXIS); generalised strains
-/// for bars and beams.
+/// for bars, beams and shells.
 pub fn strain(
     f: Formulation,
     ty: ElemType,
@@ -224,6 +241,7 @@ pub fn strain(
         Formulation::Pout => beam::strain(false, mode, x, m, u),
         Formulation::Timo => beam::strain(true, mode, x, m, u),
         Formulation::Solid | Formulation::Q4ri => solid::field(f, ty, mode, x, m, u, false),
+        Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::strain(f, mode, x, u),
     }
 }
 
@@ -243,6 +261,7 @@ pub fn internal_forces(
         Formulation::Barr => bar::internal_forces(mode, x, sig),
         Formulation::Pout | Formulation::Timo => beam::internal_forces(f == Formulation::Timo, mode, x, m, sig),
         Formulation::Solid | Formulation::Q4ri => solid::internal_forces(f, ty, mode, x, m, sig),
+        Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::internal_forces(f, mode, x, sig),
     }
 }
 
@@ -255,6 +274,7 @@ pub fn gauss_points(f: Formulation, ty: ElemType) -> Vec<([f64; 3], f64)> {
             vec![([-1.0, 0.0, 0.0], 1.0), ([1.0, 0.0, 0.0], 1.0)]
         }
         Formulation::Solid | Formulation::Q4ri => solid::rule(f, ty),
+        Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::rule(ty),
     }
 }
 

@@ -82,6 +82,7 @@ pub fn point_weights(
     match f {
         Formulation::Barr | Formulation::Pout | Formulation::Timo => line_weights(x),
         Formulation::Solid | Formulation::Q4ri => solid::point_weights(f, ty, mode, x, m),
+        Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => super::shell::point_weights(f, x),
     }
 }
 
@@ -97,6 +98,7 @@ pub fn node_weights(
     match f {
         Formulation::Barr | Formulation::Pout | Formulation::Timo => line_weights(x),
         Formulation::Solid | Formulation::Q4ri => solid::node_weights(ty, mode, x, m),
+        Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => super::shell::node_weights(f, x),
     }
 }
 

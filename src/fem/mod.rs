@@ -14,9 +14,11 @@ pub mod element;
 pub mod integrate;
 pub mod loads;
 pub mod material;
+pub mod plate;
 pub mod principal;
 pub mod quadrature;
 pub mod shape;
+pub mod shell;
 pub mod solid;
 pub mod stress;
 
@@ -28,6 +30,8 @@ mod tests_beam;
 mod tests_integrate;
 #[cfg(test)]
 mod tests_patch;
+#[cfg(test)]
+mod tests_shell;
 #[cfg(test)]
 mod tests_solid;
 #[cfg(test)]

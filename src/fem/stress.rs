@@ -12,7 +12,8 @@ use super::shape::eval;
 /// strain and AXIS hoop stresses count). Bars and beams: Cast3M's
 /// `sqrt((EFFX/SECT)² + (MOMX·DX/TORS)² + (MOMY·DZ/INRY)² + (MOMZ·DY/INRZ)²)`;
 /// an absent fibre distance DX/DY/DZ drops its term (the stress on the
-/// neutral fibre), absent components count as 0.
+/// neutral fibre), absent components count as 0. Shells: the larger of the
+/// plane-stress von Mises values on the two faces, σ = N/t ± 6M/t².
 pub fn von_mises(f: Formulation, mode: Mode, m: &Material, sig: &GaussField) -> Result<GaussField, FemError> {
     let at = |v: &[f64], name: &str| sig.comps.iter().position(|c| *c == name).map_or(0.0, |i| v[i]);
     let values = match f {
@@ -34,6 +35,21 @@ pub fn von_mises(f: Formulation, mode: Mode, m: &Material, sig: &GaussField) -> 
                         + (at(v, "MOMY") * cy).powi(2)
                         + (at(v, "MOMZ") * cz).powi(2);
                     vec![s.sqrt()]
+                })
+                .collect()
+        }
+        Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => {
+            let t = m.positive(m.epai, "EPAI", f.name())?;
+            let vm = |s: [f64; 3]| (s[0] * s[0] + s[1] * s[1] - s[0] * s[1] + 3.0 * s[2] * s[2]).sqrt();
+            sig.values
+                .iter()
+                .map(|v| {
+                    let face = |z: f64| -> [f64; 3] {
+                        let c = ["N11", "N22", "N12"].map(|n| at(v, n) / t);
+                        let b = ["M11", "M22", "M12"].map(|n| at(v, n) * 6.0 / (t * t));
+                        [c[0] + z * b[0], c[1] + z * b[1], c[2] + z * b[2]]
+                    };
+                    vec![vm(face(1.0)).max(vm(face(-1.0)))]
                 })
                 .collect()
         }

@@ -13,15 +13,17 @@ use crate::value::{Mchaml, Model, Rigidite, Value};
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
-    OpDef { name: "MODE", signature: "MODE GEO 'MECANIQUE' ('ELASTIQUE' ('ISOTROPE')) (BARR|POUT|TIMO|Q4RI|…)", doc: "A model: a mesh tied to a formulation, a behaviour and an element type.", example: "mo = mode l mecanique elastique pout ;", f: mode },
+    OpDef { name: "MODE", signature: "MODE GEO 'MECANIQUE' ('ELASTIQUE' ('ISOTROPE')) (BARR|POUT|TIMO|Q4RI|COQ3|DKT|COQ4|…)", doc: "A model: a mesh tied to a formulation, a behaviour and an element type (COQ3, DKT on TRI3 and COQ4 on QUA4 are thin shells, in TRID).", example: "mo = mode l mecanique elastique pout ;", f: mode },
     OpDef { name: "MATE", signature: "MATE MMODEL 'YOUN' E 'NU' nu ('RHO' r) ('ALPH' a ('TREF' t)) (SECT INRY INRZ TORS SECY SECZ EPAI DIM3 …)", doc: "Material (and section) data of a model.", example: "ma = mate mo youn 2.e11 nu 0.3 ;", f: mate },
     OpDef { name: "CARA", signature: "CARA MMODEL ('SECT' s) ('INRY' i) ('INRZ' i) ('TORS' j) ('SECY' a) ('SECZ' a) ('EPAI' e) ('DIM3' e) ('VECT' P)", doc: "Geometric characteristics of a model (merge with MATE using ET).", example: "ca = cara mo sect 1. inrz 1. ;", f: cara },
     OpDef { name: "RIGI", signature: "RIGI MMODEL MCHAML (MCHAML) | RIGI ('DEPL') ('ROTA') (comps) VALUE GEO", doc: "Stiffness of a model, or springs to ground.", example: "k = rigi mo ma ;", f: rigi },
     OpDef { name: "APPU", signature: "APPU ('DEPL') ('ROTA') (comps) ('DIRECTION' VEC) VALUE GEO", doc: "Springs to ground of stiffness VALUE on the listed unknowns of every node.", example: "ri = appu 'UX' 10. p1 ;", f: appu },
 ];
 
-const FORMS: &[&str] =
-    &["BARR", "POUT", "TIMO", "Q4RI", "TRI3", "TRI6", "QUA4", "QUA8", "CUB8", "TET4", "PRI6", "SEG2"];
+const FORMS: &[&str] = &[
+    "BARR", "POUT", "TIMO", "Q4RI", "COQ3", "DKT", "COQ4", "TRI3", "TRI6", "QUA4", "QUA8", "CUB8", "TET4", "PRI6",
+    "SEG2",
+];
 
 const BEHAVIOURS: &[&str] = &["ELASTIQUE", "ISOTROPE"];
 
@@ -43,12 +45,33 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         } else if ["ELAS", "ISOT"].iter().any(|k| w.starts_with(k)) {
             behaviour.push(w);
         } else {
-            return Err(
-                a.err(format!("{} is not supported (elastic isotropic BARR, POUT, TIMO and massive elements are)", w))
-            );
+            return Err(a.err(format!(
+                "{} is not supported (elastic isotropic BARR, POUT, TIMO, COQ3, DKT, COQ4 and massive elements are)",
+                w
+            )));
         }
     }
     let mode = it.opts.mode.clone();
+    let shell = shell_geometry(&element);
+    if let Some(ty) = shell {
+        if let Some(p) = geo.parts.iter().find(|p| p.ty != ty) {
+            return Err(a
+                .err(format!(
+                    "{} is a shell element on {} meshes; this mesh has {} elements",
+                    element,
+                    ty.name(),
+                    p.ty.name()
+                ))
+                .note(if ty == ElemType::Tri3 {
+                    "mesh the surface with triangles (OPTI ELEM TRI3, or CHAN 'TRI3'), or use COQ4 on QUA4"
+                } else {
+                    "mesh the surface with quadrangles (OPTI ELEM QUA4), or use COQ3/DKT on TRI3"
+                }));
+        }
+        if mode != "TRID" {
+            return Err(a.err(format!("{} shells need OPTI DIME 3 MODE TRID, not mode {}", element, mode)));
+        }
+    }
     let mut model = Model { zones: vec![] };
     // Massive elements follow the mesh: one zone per element type.
     if element.is_empty() || ElemType::from_name(&element).is_some() {
@@ -144,8 +167,20 @@ pub(crate) fn material_for(zone: &ModelZone, fields: &[Rc<Mchaml>]) -> Material 
     m
 }
 
+/// The mesh geometry a shell element needs (None for other elements).
+fn shell_geometry(element: &str) -> Option<ElemType> {
+    match element {
+        "COQ3" | "DKT" => Some(ElemType::Tri3),
+        "COQ4" => Some(ElemType::Qua4),
+        _ => None,
+    }
+}
+
 pub(crate) fn formulation(zone: &ModelZone) -> Formulation {
     match zone.element.as_str() {
+        "COQ3" => Formulation::Coq3,
+        "DKT" => Formulation::Dkt,
+        "COQ4" => Formulation::Coq4,
         "BARR" => Formulation::Barr,
         "POUT" => Formulation::Pout,
         "TIMO" => Formulation::Timo,
@@ -187,6 +222,8 @@ fn rigi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                     Some("in 3D a beam needs its local y axis: CARA mo ... 'VECT' (0. 0. 1.) (any vector not along the beam)")
                 } else if e.message.contains("property SECY missing") || e.message.contains("property SECZ missing") {
                     Some("TIMO needs the shear areas: SECY (shear along local y) and, in 3D, SECZ")
+                } else if e.message.contains("property EPAI missing") {
+                    Some("shells need their thickness: CARA mo 'EPAI' t (or MATE mo ... 'EPAI' t)")
                 } else {
                     None
                 };

@@ -13,11 +13,11 @@ use crate::value::{Chpoint, Mchaml, Model, Nature, Rigidite, Value};
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
-    OpDef { name: "SIGM", signature: "SIGM ('LINE') MMODEL MCHAML (MCHAML) CHPOINT", doc: "Elastic stresses (SMXX … for massive elements, EFFX … MOMZ resultants for bars and beams) at the element points.", example: "sig = sigm mo ma u ;", f: sigm },
-    OpDef { name: "EPSI", signature: "EPSI ('LINE') MMODEL (MCHAML) CHPOINT", doc: "Strains (EPXX … GAXY; generalised strains for bars and beams).", example: "eps = epsi mo ma u ;", f: epsi },
+    OpDef { name: "SIGM", signature: "SIGM ('LINE') MMODEL MCHAML (MCHAML) CHPOINT", doc: "Elastic stresses (SMXX … for massive elements, EFFX … MOMZ resultants for bars and beams, N11 N22 N12 M11 M22 M12 V1 V2 for shells) at the element points.", example: "sig = sigm mo ma u ;", f: sigm },
+    OpDef { name: "EPSI", signature: "EPSI ('LINE') MMODEL (MCHAML) CHPOINT", doc: "Strains (EPXX … GAXY; generalised strains for bars and beams; EPSS EPTT GAST RTSS RTTT RTST for shells).", example: "eps = epsi mo ma u ;", f: epsi },
     OpDef { name: "VMIS", signature: "VMIS MMODEL MCHAML_STRESS (MCHAML)", doc: "Von Mises equivalent stress (the beam formula for bars and beams).", example: "vm = vmis mo sig ma ;", f: vmis },
     OpDef { name: "CHAN", signature: "CHAN 'POI1'|QUA8|TRI6|SEG3|QUA4|TRI3|SEG2 GEO | CHAN 'CHPO'|'NOEUD' MMODEL MCHAML | CHAN 'INCO' RIGIDITE LISTMOTS LISTMOTS | CHAN 'ATTRIBUT' CHPOINT 'NATURE' word", doc: "Change the type or attributes of an object.", example: "pts = chan 'POI1' l ;", f: chan },
-    OpDef { name: "PRES", signature: "PRES 'MASS' MMODEL VALUE GEO", doc: "Nodal forces equivalent to a pressure on edges/faces of a massive model (positive towards the solid).", example: "f = pres 'MASS' mo 10. haut ;", f: pres },
+    OpDef { name: "PRES", signature: "PRES 'MASS' MMODEL VALUE GEO | PRES 'COQU' MMODEL VALUE", doc: "Nodal forces equivalent to a pressure on edges/faces of a massive model (positive towards the solid), or on every element of a shell model (positive along the element normal).", example: "f = pres 'MASS' mo 10. haut ;", f: pres },
     OpDef { name: "MASS", signature: "MASS MMODEL MCHAML (MCHAML) ('LUMP')", doc: "Mass matrix (consistent, or lumped with 'LUMP').", example: "m = mass mo ma ;", f: mass },
 ];
 
@@ -120,7 +120,8 @@ fn intern(c: &str) -> &'static str {
     const NAMES: &[&str] = &[
         "SMXX", "SMYY", "SMZZ", "SMXY", "SMXZ", "SMYZ", "SMRR", "SMTT", "SMRZ", "EPXX", "EPYY", "EPZZ", "GAXY", "GAXZ",
         "GAYZ", "EPRR", "EPTT", "GARZ", "EFFX", "EFFY", "EFFZ", "MOMX", "MOMY", "MOMZ", "EPSS", "CURX", "CURY", "CURZ",
-        "VMIS", "SCAL", "ENER", "TRES", "I1", "J2", "J3",
+        "VMIS", "SCAL", "ENER", "TRES", "I1", "J2", "J3", "N11", "N22", "N12", "M11", "M22", "M12", "V1", "V2", "GAST",
+        "RTSS", "RTTT", "RTST",
     ];
     NAMES.iter().find(|n| **n == c).copied().unwrap_or("?")
 }
@@ -259,7 +260,9 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 fn pres(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    a.req_keyword(&["MASS"])?;
+    if a.req_keyword(&["MASS", "COQU"])? == "COQU" {
+        return pres_shell(it, a);
+    }
     let model = a.req::<Rc<Model>>()?;
     let p = a.req_num()?;
     let geo = super::mesh::req_geo(a)?;
@@ -279,6 +282,37 @@ fn pres(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 }
             }
         }
+    }
+    Ok(vec![Value::Chpo(Rc::new(out))])
+}
+
+/// PRES 'COQU' mo p: p ∫N_i dA along each shell element's normal.
+fn pres_shell(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let model = a.req::<Rc<Model>>()?;
+    let p = a.req_num()?;
+    let mut out = Chpoint::new(Nature::Discret);
+    let mut any = false;
+    for zone in &model.zones {
+        let form = formulation(zone);
+        if !form.is_shell() {
+            continue;
+        }
+        any = true;
+        for part in &zone.mesh.parts {
+            for (e, nodes) in part.elems().enumerate() {
+                let x: Vec<[f64; 3]> = nodes.iter().map(|n| it.nodes.get(*n)).collect();
+                let f = crate::fem::shell::pressure_load(form, &x, p)
+                    .map_err(|err| a.err(format!("element {}: {}", e + 1, err)))?;
+                for (n, v) in nodes.iter().zip(f) {
+                    for (k, c) in ["FX", "FY", "FZ"].iter().enumerate() {
+                        out.add(*n, c, v[k], true);
+                    }
+                }
+            }
+        }
+    }
+    if !any {
+        return Err(a.err("PRES 'COQU' needs a shell model (COQ3, DKT, COQ4); use PRES 'MASS' for massive ones"));
     }
     Ok(vec![Value::Chpo(Rc::new(out))])
 }

@@ -78,10 +78,12 @@ fn has_points(f: &Mchaml) -> bool {
 
 const STRESS_NAMES: &[&str] = &[
     "SMXX", "SMYY", "SMZZ", "SMXY", "SMXZ", "SMYZ", "SMRR", "SMTT", "SMRZ", "EFFX", "EFFY", "EFFZ", "MOMX", "MOMY",
-    "MOMZ",
+    "MOMZ", "N11", "N22", "N12", "M11", "M22", "M12", "V1", "V2",
 ];
-const STRAIN_NAMES: &[&str] =
-    &["EPXX", "EPYY", "EPZZ", "GAXY", "GAXZ", "GAYZ", "EPRR", "EPTT", "GARZ", "EPSS", "CURX", "CURY", "CURZ"];
+const STRAIN_NAMES: &[&str] = &[
+    "EPXX", "EPYY", "EPZZ", "GAXY", "GAXZ", "GAYZ", "EPRR", "EPTT", "GARZ", "EPSS", "CURX", "CURY", "CURZ", "GAST",
+    "RTSS", "RTTT", "RTST",
+];
 
 fn holds(f: &Mchaml, names: &[&str]) -> bool {
     f.zones.iter().any(|z| z.comps.iter().any(|c| names.contains(&c.as_str())))
