@@ -201,6 +201,11 @@ impl Assembled {
                 iterations,
                 list(conditions, &cond)
             ),
+            SolveError::Inaccurate { residual, weakest } if !weakest.is_empty() => format!(
+                "inaccurate solution: relative residual {}; the weakest pivots are at {}: a rigid mode held by almost nothing there? (check the supports, or stiffnesses many orders of magnitude apart)",
+                fmt_float(*residual),
+                list(weakest, &dof)
+            ),
             other => other.to_string(),
         };
         Error::runtime(format!("RESO: {}", msg))

@@ -211,7 +211,7 @@ fn solve_direct(it: &mut Interp, r: &Rigidite, asm: &Assembled, loads: &[Load], 
         let t = std::time::Instant::now();
         let s = match entry.fact.solve_checked(loads, !o.noid) {
             // 'SOUC': an inaccurate solution is a warning, not a failure.
-            Err(crate::solve::SolveError::Inaccurate { residual }) if o.soft => {
+            Err(crate::solve::SolveError::Inaccurate { residual, .. }) if o.soft => {
                 let s = entry.fact.solve_checked(loads, false);
                 warnings.push(format!(
                     "RESO 'SOUC': warning: inaccurate solution (relative residual {}) returned anyway",

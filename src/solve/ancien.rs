@@ -248,7 +248,7 @@ impl<'a> Old<'a> {
         let (_, num, den) = resid(&y);
         let rel = if den > 0.0 { num / den } else { num };
         if rel.is_nan() || rel > 1e-8 || y.iter().any(|v| !v.is_finite()) {
-            return Err(SolveError::Inaccurate { residual: rel });
+            return Err(SolveError::Inaccurate { residual: rel, weakest: vec![] });
         }
         Ok(y)
     }

@@ -258,7 +258,7 @@ impl Backend for TOperator<'_> {
             self.fresh_residual = res;
         }
         if res.is_nan() || res > RESIDUAL_FAIL || !x.iter().all(|v| v.is_finite()) {
-            return Err(SolveError::Inaccurate { residual: res });
+            return Err(SolveError::Inaccurate { residual: res, weakest: vec![] });
         }
         Ok(x)
     }

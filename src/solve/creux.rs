@@ -240,7 +240,7 @@ impl Creux {
         self.factor.solve_in_place(rhs.as_mut())?;
         let z: Vec<f64> = (0..dim).map(|k| rhs[(k, 0)]).collect();
         if z.iter().any(|v| !v.is_finite()) {
-            return Err(SolveError::Inaccurate { residual: f64::INFINITY });
+            return Err(SolveError::Inaccurate { residual: f64::INFINITY, weakest: vec![] });
         }
         Ok(z)
     }

@@ -95,6 +95,22 @@ impl Factorization {
         Ok(())
     }
 
+    /// The `k` primal unknowns whose pivots are smallest relative to their
+    /// row (LDLᵀ only), weakest first.
+    fn weakest_pivots(&self, k: usize) -> Vec<usize> {
+        let Engine::Ldlt(f) = &self.engine else { return Vec::new() };
+        let n = self.sys.n;
+        let mut r: Vec<(f64, usize)> = f
+            .pivots()
+            .iter()
+            .zip(f.fwd())
+            .filter(|(_, &o)| o < n && self.sys.row_scale[o] > 0.0)
+            .map(|(d, &o)| (d.abs() / self.sys.row_scale[o], o))
+            .collect();
+        r.sort_by(|a, b| a.0.total_cmp(&b.0));
+        r.into_iter().take(k).map(|x| x.1).collect()
+    }
+
     /// Solves for several loads at once.
     pub fn solve(&self, loads: &[Load]) -> Result<Vec<Solution>, SolveError> {
         self.solve_checked(loads, self.opts.check_residual)
@@ -132,7 +148,7 @@ impl Factorization {
             }
             // NaN counts as a failure too.
             if eta.is_nan() || eta > RESIDUAL_TOL {
-                return Err(SolveError::Inaccurate { residual: eta });
+                return Err(SolveError::Inaccurate { residual: eta, weakest: self.weakest_pivots(3) });
             }
         }
         Ok((0..loads.len())

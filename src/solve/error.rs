@@ -30,9 +30,12 @@ pub enum SolveError {
     /// the ones still changing.
     #[error("the status iteration did not converge")]
     NoConvergence { iterations: usize, conditions: Vec<usize> },
-    /// The a-posteriori residual check failed.
+    /// The a-posteriori residual check failed. `weakest` lists the primal
+    /// unknowns with the smallest pivots relative to their row, when the
+    /// factor gives them: a rigid mode held by almost nothing (too small
+    /// to count as singular) shows there.
     #[error("inaccurate solution: relative residual {residual:e}")]
-    Inaccurate { residual: f64 },
+    Inaccurate { residual: f64, weakest: Vec<usize> },
     /// Anything else the numerical library reported.
     #[error("{0}")]
     Other(String),

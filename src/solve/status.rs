@@ -494,7 +494,7 @@ fn single_release(b: &mut dyn Backend, ctx: &Ctx, i: usize, status: &mut Vec<boo
         // singular release): treat it as the singular case.
     }
     if !mode.work.is_finite() || mode.motion.iter().any(|x| !x.is_finite()) {
-        return Err(SolveError::Inaccurate { residual: f64::INFINITY });
+        return Err(SolveError::Inaccurate { residual: f64::INFINITY, weakest: vec![] });
     }
     if mode.work <= EPS_WORK * mode.work_scale {
         // The load does no work along the mode: the wrong sign on i is
