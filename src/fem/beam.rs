@@ -18,21 +18,12 @@
 
 use super::element::{ElemMatrix, FemError, GaussField, Mode};
 use super::material::Material;
+use super::vec3::{cross, dot, sub};
 
 /// Element geometry: length and local axes (rows ex, ey, ez in global).
 struct Frame {
     l: f64,
     r: [[f64; 3]; 3],
-}
-
-fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 }
 
 fn frame(elem: &'static str, mode: Mode, x: &[[f64; 3]], m: &Material, need_vect: bool) -> Result<Frame, FemError> {

@@ -17,6 +17,8 @@
 //! `n·u_s − Σ w_i n·u_i ≥ −g0`, with `g0 = n·(x_s − x_a)` the initial gap
 //! (small displacements: the normal and the weights are not updated).
 
+use super::vec3::{cross, dot, sub};
+
 /// Where a projection parameter may overshoot a facet's ends and still
 /// count as inside: a slave node facing a master node exactly (matching
 /// meshes) must find a facet despite rounding.
@@ -58,18 +60,6 @@ impl Pair {
         }
         out
     }
-}
-
-fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 }
 
 /// Why a facet gives no pair.

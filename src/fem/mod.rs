@@ -21,6 +21,7 @@ pub mod shape;
 pub mod shell;
 pub mod solid;
 pub mod stress;
+pub mod vec3;
 
 #[cfg(test)]
 mod test_support;

@@ -38,6 +38,7 @@ use super::material::Material;
 use super::mesh::ElemType;
 use super::plate::{self, PlatePoint};
 use super::quadrature::{quad, tri, QPoint};
+use super::vec3::{cross, dot, sub, unit};
 
 /// Fictitious drilling stiffness, relative to the bending rotations'.
 pub const DRILL: f64 = 1e-4;
@@ -76,20 +77,6 @@ pub fn rule(ty: ElemType) -> Vec<QPoint> {
 struct Frame {
     r: [[f64; 3]; 3],
     xl: Vec<[f64; 2]>,
-}
-
-fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
-}
-fn unit(a: [f64; 3]) -> [f64; 3] {
-    let l = dot(a, a).sqrt();
-    [a[0] / l, a[1] / l, a[2] / l]
 }
 
 fn frame(f: Formulation, x: &[[f64; 3]]) -> Result<Frame, FemError> {
