@@ -43,7 +43,7 @@ pub fn thermal_strain(
         _ => f.name(),
     };
     if f.is_shell() {
-        return Err(FemError::Unsupported { form: f.name(), elem: ty.name(), mode: mode.name() });
+        return Err(FemError::NotFor { what: "thermal strain (EPTH)", form: f.name() });
     }
     let alpha = m.expansion(elem)?;
     let tref = m.tref.unwrap_or(0.0);
@@ -99,7 +99,7 @@ fn check_solid(f: Formulation, ty: ElemType, mode: Mode) -> Result<(), FemError>
 /// field with none of them is not a strain field of this element.
 pub fn hooke(f: Formulation, ty: ElemType, mode: Mode, m: &Material, eps: &GaussField) -> Result<GaussField, FemError> {
     if f.is_shell() {
-        return Err(FemError::Unsupported { form: f.name(), elem: ty.name(), mode: mode.name() });
+        return Err(FemError::NotFor { what: "Hooke's law on a strain field (ELAS)", form: f.name() });
     }
     let wanted: Vec<&'static str> = match f {
         Formulation::Barr => vec!["EPSS"],

@@ -82,6 +82,8 @@ pub enum FemError {
     InvalidProperty { prop: &'static str, value: f64, elem: &'static str, why: &'static str },
     #[error("{form} elements on {elem} are not available in mode {mode}")]
     Unsupported { form: &'static str, elem: &'static str, mode: &'static str },
+    #[error("{what} is not available for {form} elements")]
+    NotFor { what: &'static str, form: &'static str },
     #[error("degenerate {elem} element: {why}")]
     Degenerate { elem: &'static str, why: String },
     #[error("{elem} element needs {expected} nodes, got {got}")]
