@@ -39,6 +39,10 @@ const PAR_WORK: usize = 1 << 22;
 
 const NONE: usize = usize::MAX;
 
+/// Entries of the scratch for one supernode's update of S (32 MB; tiny
+/// under test, so that the unit tests go through the chunking).
+const T_CHUNK: usize = if cfg!(test) { 64 } else { 1 << 22 };
+
 /// The doubled system with its condensed tail bordered out of the factor.
 #[derive(Debug)]
 pub(crate) struct Bordered {
@@ -195,7 +199,7 @@ impl Bordered {
             ymax = ymax.max(v.ncols() * k);
             let js = self.j_of(s);
             if js[k - 1] - js[0] != k - 1 {
-                tmax = tmax.max(k * k);
+                tmax = tmax.max((k * k).min(T_CHUNK.max(k)));
             }
             umax = umax.max((v.nrows() - v.ncols()) * k);
         }
@@ -235,22 +239,27 @@ impl Bordered {
                 let dst = s_mat.as_mut().submatrix_mut(js[0], js[0], k, k);
                 sym_update(dst, xs, y, par);
             } else {
-                let mut t = MatMut::from_column_major_slice_mut(&mut tbuf[..k * k], k, k);
-                tri_matmul(
-                    t.rb_mut(),
-                    BlockStructure::TriangularLower,
-                    Accum::Replace,
-                    xs.transpose(),
-                    BlockStructure::Rectangular,
-                    y,
-                    BlockStructure::Rectangular,
-                    1.0,
-                    par,
-                );
-                for (c, &qc) in js.iter().enumerate() {
-                    let col = s_mat.col_as_slice_mut(qc);
-                    for (r, &qr) in js.iter().enumerate().skip(c) {
-                        col[qr] -= t[(r, c)];
+                // By column chunks: the scratch stays bounded (k may be in
+                // the thousands); each chunk is a rectangle from its
+                // diagonal down, its few upper entries computed and unused.
+                let bk = (T_CHUNK / k).clamp(1, k);
+                for c0 in (0..k).step_by(bk) {
+                    let c1 = (c0 + bk).min(k);
+                    let rows = k - c0;
+                    let mut t = MatMut::from_column_major_slice_mut(&mut tbuf[..rows * (c1 - c0)], rows, c1 - c0);
+                    matmul(
+                        t.rb_mut(),
+                        Accum::Replace,
+                        xs.subcols(c0, rows).transpose(),
+                        y.subcols(c0, c1 - c0),
+                        1.0,
+                        par,
+                    );
+                    for c in c0..c1 {
+                        let col = s_mat.col_as_slice_mut(js[c]);
+                        for r in c..k {
+                            col[js[r]] -= t[(r - c0, c - c0)];
+                        }
                     }
                 }
             }
