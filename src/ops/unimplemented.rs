@@ -86,7 +86,6 @@ pub const MISSING: &[Missing] = &[
     op("SAUV", "SAUVER", FILES),
     op("TIRE", "TIRER", ""),
     op("VARI", "VARIABLE", ""),
-    op("VECT", "VECTEUR", "TRAC draws a deformed mesh (PLUS or DEFO) or a field"),
     op("VIBR", "VIBRATION", STATICS),
 ];
 
