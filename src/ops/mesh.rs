@@ -11,7 +11,7 @@ use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "NOEU", signature: "NOEUD n", doc: "The point (node) number n, as numbered by gibi (LIST shows node numbers).", example: "p = noeud 5 ;", f: noeu },
-    OpDef { name: "COOR", signature: "COOR POINT | COOR n POINT | COOR n MAILLAGE", doc: "Coordinates of a point (one result per dimension), one of them, or a coordinate field on a mesh.", example: "x y = coor p ;", f: coor },
+    OpDef { name: "COOR", signature: "COOR POINT | COOR n POINT | COOR (n) MAILLAGE", doc: "Coordinates of a point (one result per dimension), one of them, or coordinate fields (SCAL) on a mesh: one per dimension, or the n-th.", example: "x y = coor p ;", f: coor },
     OpDef { name: "NBNO", signature: "NBNO MAILLAGE", doc: "Number of nodes of a mesh.", example: "n = nbno l ;", f: nbno },
     OpDef { name: "NBEL", signature: "NBEL MAILLAGE", doc: "Number of elements of a mesh.", example: "n = nbel s ;", f: nbel },
     OpDef { name: "POIN", signature: "POIN x (y) (z) | MAILLAGE POIN n | MAILLAGE POIN ('INIT'|'FINAL') | MAILLAGE POIN 'PROC' POINT | MAILLAGE POIN ('DROIT' P1 P2 | 'PLAN' P1 P2 P3) (crit) | CHPOINT POIN 'MAXI'|'MINI' ('ABS') | CHPOINT POIN 'SUPE'|'INFE'|'EGSU'|'EGIN'|'EGAL' v", doc: "A point, or nodes of a mesh, or the nodes where a field meets a test (a POI1 mesh).", example: "p = l poin 'FINAL' ;", f: poin },
@@ -52,18 +52,22 @@ fn coor(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         };
     }
     if let Some(m) = a.opt::<Rc<Mesh>>() {
-        let k = which.ok_or_else(|| a.missing("the coordinate number"))?;
         let dim = it.opts.dime.max(1) as i64;
-        if !(1..=dim + 1).contains(&k) {
-            return Err(a.err(format!("coordinate {} does not exist in dimension {}", k, dim)));
-        }
-        let c = Chpoint::from_entries(
-            Nature::Diffus,
-            m.node_list()
-                .into_iter()
-                .map(|n| (n, "SCAL", if k == dim + 1 { it.nodes.density[n] } else { it.nodes.get(n)[k as usize - 1] })),
-        );
-        return Ok(vec![Value::Chpo(Rc::new(c))]);
+        let field = |k: i64| {
+            let c = Chpoint::from_entries(
+                Nature::Diffus,
+                m.node_list().into_iter().map(|n| {
+                    (n, "SCAL", if k == dim + 1 { it.nodes.density[n] } else { it.nodes.get(n)[k as usize - 1] })
+                }),
+            );
+            Value::Chpo(Rc::new(c))
+        };
+        return match which {
+            // Like the POINT form: one field per coordinate (`x y = COOR s`).
+            None => Ok((1..=dim).map(field).collect()),
+            Some(k) if (1..=dim + 1).contains(&k) => Ok(vec![field(k)]),
+            Some(k) => Err(a.err(format!("coordinate {} does not exist in dimension {}", k, dim))),
+        };
     }
     Err(a.missing("POINT or MAILLAGE"))
 }
