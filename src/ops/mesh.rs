@@ -27,6 +27,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "ELEM", signature: "GEO ELEM TYPE | GEO ELEM n|LISTENTI | GEO ELEM 'APPU' ('STRI'|'LARG') GEO2", doc: "Elements of a mesh by type, by number, or resting on another mesh.", example: "q = s elem qua4 ;", f: elem },
     OpDef { name: "COTE", signature: "COTE n SURFACE", doc: "Side n of a structured (DALL/TRAN) surface.", example: "b = cote 1 s ;", f: cote },
     OpDef { name: "FACE", signature: "FACE n VOLUME", doc: "Face n of a volume made by VOLU, TRAN or ROTA: 1 the base, 2 the opposite face, 3 the lateral surface.", example: "haut = face 2 v ;", f: face },
+    OpDef { name: "ENVE", signature: "ENVE VOLUME", doc: "The envelope of a volume mesh: the faces that belong to one element only (TRI3/QUA4), oriented outwards as in their elements.", example: "peau = enve v ;", f: enve },
     OpDef { name: "CONT", signature: "CONT GEO", doc: "Contour: boundary edges of a surface, end points of a line.", example: "c = cont s ;", f: cont },
     OpDef { name: "ELIM", signature: "ELIM (crit) GEO (GEO2 …)", doc: "Merge nodes closer than crit, in every object (several meshes: their nodes with each other's).", example: "elim 1.e-5 l ;", f: elim },
     OpDef { name: "INTE", signature: "GEO1 INTE GEO2", doc: "Elements common to two meshes.", example: "c = s1 inte s2 ;", f: inte },
@@ -345,6 +346,42 @@ fn cote(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let n = a.req::<i64>()?;
     let s = a.req::<Rc<Mesh>>()?;
     Ok(mesh_val(mg::cote(&s, n)?))
+}
+
+/// ENVE: the faces of the volume elements that no other element shares
+/// (same node set), in element order, each with its element's outward
+/// orientation (`shape::faces`).
+fn enve(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let m = a.req::<Rc<Mesh>>()?;
+    let mut faces: Vec<(ElemType, Vec<usize>)> = Vec::new();
+    let mut count: std::collections::HashMap<Vec<usize>, usize> = std::collections::HashMap::new();
+    for part in m.parts.iter().filter(|p| p.ty.dim() == 3) {
+        for e in part.elems() {
+            for (fty, loc) in crate::fem::shape::faces(part.ty) {
+                let nodes: Vec<usize> = loc.iter().map(|&k| e[k]).collect();
+                let mut key = nodes.clone();
+                key.sort_unstable();
+                *count.entry(key).or_default() += 1;
+                faces.push((fty, nodes));
+            }
+        }
+    }
+    if faces.is_empty() {
+        return Err(a.err("ENVE needs a volume mesh (the boundary of a surface or a line is CONT)"));
+    }
+    let mut parts: Vec<(ElemType, Vec<usize>)> = Vec::new();
+    for (fty, nodes) in faces {
+        let mut key = nodes.clone();
+        key.sort_unstable();
+        if count[&key] != 1 {
+            continue;
+        }
+        match parts.iter_mut().find(|(t, _)| *t == fty) {
+            Some((_, c)) => c.extend(nodes),
+            None => parts.push((fty, nodes)),
+        }
+    }
+    Ok(mesh_val(mg::mesh_of(parts)))
 }
 
 fn cont(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {

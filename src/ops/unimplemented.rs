@@ -60,7 +60,6 @@ pub const MISSING: &[Missing] = &[
     proc("DYNA", "DYNAMIC", STATICS),
     op("DYNE", "DYNE", STATICS),
     op("ECOU", "ECOULEMENT", STATICS),
-    op("ENVE", "ENVELOPPE", "FACE gives the faces of a volume made by VOLU, TRAN or ROTA"),
     op("EQEX", "EQEX", ""),
     op("EQPR", "EQPR", ""),
     op("EXCI", "EXCITER", "UNIL runs the unilateral status iteration natively"),
