@@ -70,6 +70,16 @@ fn trac_of_meshes_and_fields_in_svg_then_png() {
     assert_png(&dir.join("figs/plate.png"));
 }
 
+/// Decks draw arrows with `TRAC (VECT u ...) s`: the picture has the mesh
+/// (gibi draws no arrows), and the deck goes on.
+#[test]
+fn trac_of_vect_draws_the_mesh() {
+    let dir = scratch("vect");
+    let mut gibi = session(&dir);
+    run(&mut gibi, "v = vect u 10. 'UX' 'UY' 'ROUG' ; trac v s 'TITR' 'arrows' ; w = vect u ;");
+    assert!(assert_svg(&dir.join("gibi_trac_1.svg")).contains("arrows"));
+}
+
 #[test]
 fn trac_of_a_volume_mesh() {
     let dir = scratch("trac3d");

@@ -59,6 +59,16 @@ pub(crate) const OPS: &[OpDef] = &[
         example: "dess ev 'TITR' 'load-displacement' ;",
         f: dess,
     },
+    OpDef {
+        name: "VECT",
+        signature: "VECT CHPOINT (SCALE) (comp…) (COLOUR) | VECT MCHAML MMODEL (SCALE) (comp…) (COLOUR)",
+        doc: "An arrows object (type VECTEUR) for TRAC: the field, its scale, the components taken as the \
+              vector's coordinates (default: the displacements or forces of the field) and a colour. gibi's \
+              pictures do not draw arrows: TRAC draws the meshes given with it and passes over the VECTEUR, so \
+              that decks which draw vectors still run.",
+        example: "v = vect u 1.e3 'UX' 'UY' 'ROUG' ; trac v s ;",
+        f: vect,
+    },
 ];
 
 fn io_err(e: io::IoError) -> Error {
@@ -428,6 +438,62 @@ fn nodal_field(c: &Chpoint, mesh: Mesh) -> plot::NodalField {
         (first, values)
     };
     plot::NodalField { mesh, values, name }
+}
+
+/// The VECTEUR object of VECT: what it would draw, kept for LIST and TYPE.
+#[derive(Debug)]
+pub struct Vecteur {
+    comps: Vec<String>,
+    scale: f64,
+    colour: String,
+}
+
+impl crate::value::HostObject for Vecteur {
+    fn type_name(&self) -> &str {
+        "VECTEUR"
+    }
+    fn describe(&self) -> String {
+        format!(
+            "arrows of {} scaled by {}, colour {} (TRAC does not draw them)",
+            self.comps.join(" "),
+            crate::value::fmt_float(self.scale),
+            self.colour
+        )
+    }
+    fn as_any(&self) -> &dyn std::any::Any {
+        self
+    }
+}
+
+fn vect(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    // The field's components, to check the names the deck gives; an MCHAML
+    // comes with its model (vect.notice: stresses drawn as principal axes).
+    let comps: Vec<String> = match a.opt::<Rc<Chpoint>>() {
+        Some(c) => c.components(),
+        None => {
+            let m = a.req::<Rc<Mchaml>>()?;
+            a.req::<Rc<crate::value::Model>>()?;
+            m.zones.iter().flat_map(|z| z.comps.iter().cloned()).collect()
+        }
+    };
+    let scale = a.opt_num().unwrap_or(1.0);
+    let mut chosen = Vec::new();
+    let mut colour = crate::fem::colour::Colour::default();
+    while let Some(w) = a.word_not_operator() {
+        let w = w.trim().to_uppercase();
+        if let Some(c) = crate::fem::colour::Colour::from_name(&w) {
+            colour = c;
+        } else if comps.contains(&w) || ["DEPL", "FORC", "ROTA", "MOME"].contains(&w.as_str()) {
+            chosen.push(w);
+        } else {
+            return Err(a.err(format!("the field has no component {} (it has {})", w, comps.join(" "))));
+        }
+    }
+    if chosen.is_empty() {
+        chosen = comps;
+    }
+    let v = Vecteur { comps: chosen, scale, colour: colour.name().to_string() };
+    Ok(vec![Value::Host(Rc::new(v))])
 }
 
 fn dess(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {

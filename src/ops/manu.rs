@@ -11,8 +11,10 @@ use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[OpDef {
     name: "MANU",
-    signature: "MANU TYPE P1 P2 … | MANU 'SUPE' P1 P2 … | MANU 'CHPO' GEO (n) COMP1 V1 … ('NATURE' 'DIFFUS'|'DISCRET') | MANU 'RIGI' ('TYPE' 'RIGIDITE'|'MASSE') GEO LISTMOTS ('DUAL' LISTMOTS) ('ANTI'|'QUEL') LISTREEL | MANU 'RIGI' CHPOINT 'DIAG'",
-    doc: "Build a mesh from points, a field from values, or a matrix from a list of values.",
+    signature: "MANU TYPE P1 P2 … | MANU 'SUPE' P1 P2 … | MANU 'CHPO' GEO (n) COMP1 V1 … ('NATURE' 'DIFFUS'|'DISCRET') | MANU 'RIGI' ('TYPE' 'RIGIDITE'|'MASSE') GEO LISTMOTS ('DUAL' LISTMOTS) ('ANTI'|'QUEL') LISTREEL | MANU 'RIGI' CHPOINT 'DIAG' | MANU 'CHML' MMODEL COMP1 V1 … ('TYPE' word) (support word)",
+    doc: "Build a mesh from points, a field from values, a constant field by element on every zone of a model \
+          (at the points SIGM uses, or the element nodes with 'NOEUD'; subtype from 'TYPE', default SCALAIRE; \
+          other support words such as 'STRESSES' change nothing for a constant), or a matrix from a list of values.",
     example: "k = manu 'RIGI' m (mots 'UX') (prog 2. -1. -1. 2.) ;",
     f: manu,
 }];
@@ -24,6 +26,9 @@ fn manu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     }
     if super::args::keyword_matches(&what, "RIGIDITE") {
         return rigi(it, a);
+    }
+    if super::args::keyword_matches(&what, "CHML") {
+        return chml(a);
     }
     let mut pts = Vec::new();
     while let Some(p) = a.opt::<PointId>() {
@@ -39,6 +44,58 @@ fn manu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     }
     let ty = ElemType::from_name(&what).ok_or_else(|| a.err(format!("unknown element type {}", what)))?;
     Ok(vec![Value::Mesh(Rc::new(mg::manu(&it.nodes, ty, &pts)?))])
+}
+
+/// MANU 'CHML' mo c1 v1 …: the same values at every point of every
+/// element. Built with the points SIGM gives (or the element nodes with
+/// 'NOEUD'), so that VMIS, CHAN, INTG and arithmetic treat it like a
+/// computed field; another support word changes nothing for a constant.
+fn chml(a: &mut Args) -> Result<Vec<Value>> {
+    use crate::value::model::{Mchaml, MchamlZone};
+    let model = a.req::<Rc<crate::value::Model>>()?;
+    let mut comps: Vec<String> = Vec::new();
+    let mut vals: Vec<f64> = Vec::new();
+    let mut subtype = "SCALAIRE".to_string();
+    let mut at_nodes = false;
+    const SUPPORTS: &[&str] = &["STRESSES", "GRAVITE", "RIGIDITE", "MASSE", "DEFORMATIONS"];
+    while let Some(w) = a.word_not_operator() {
+        let w = w.trim().to_uppercase();
+        if super::args::keyword_matches(&w, "TYPE") {
+            subtype = a.req::<String>()?.trim().to_uppercase();
+        } else if super::args::keyword_matches(&w, "NOEUD") {
+            at_nodes = true;
+        } else if SUPPORTS.iter().any(|k| super::args::keyword_matches(&w, k)) {
+            continue;
+        } else {
+            let v = a.opt_num().ok_or_else(|| a.err(format!("component {} needs a value", w)))?;
+            match comps.iter().position(|c| *c == w) {
+                Some(i) => vals[i] = v,
+                None => {
+                    comps.push(w);
+                    vals.push(v);
+                }
+            }
+        }
+    }
+    if comps.is_empty() {
+        return Err(a.missing("a component name and its value"));
+    }
+    let mut zones = Vec::new();
+    for z in &model.zones {
+        let form = super::model::formulation(z);
+        for part in &z.mesh.parts {
+            let npts = if at_nodes { part.ty.nodes() } else { crate::fem::element::gauss_points(form, part.ty).len() };
+            zones.push(MchamlZone {
+                mesh: Mesh::single(part.clone()),
+                element: z.element.clone(),
+                comps: comps.clone(),
+                values: vec![vec![vals.clone(); npts]; part.elems().count()],
+                at_nodes,
+                ..Default::default()
+            });
+        }
+    }
+    Ok(vec![Value::Mchaml(Rc::new(Mchaml { subtype, zones }))])
 }
 
 fn chpo(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {

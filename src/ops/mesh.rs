@@ -11,7 +11,7 @@ use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "NOEU", signature: "NOEUD n", doc: "The point (node) number n, as numbered by gibi (LIST shows node numbers).", example: "p = noeud 5 ;", f: noeu },
-    OpDef { name: "COOR", signature: "COOR POINT | COOR n POINT | COOR n MAILLAGE", doc: "Coordinates of a point (one result per dimension), one of them, or a coordinate field on a mesh.", example: "x y = coor p ;", f: coor },
+    OpDef { name: "COOR", signature: "COOR POINT | COOR n POINT | COOR (n) MAILLAGE", doc: "Coordinates of a point (one result per dimension), one of them, or coordinate fields (SCAL) on a mesh: one per dimension, or the n-th.", example: "x y = coor p ;", f: coor },
     OpDef { name: "NBNO", signature: "NBNO MAILLAGE", doc: "Number of nodes of a mesh.", example: "n = nbno l ;", f: nbno },
     OpDef { name: "NBEL", signature: "NBEL MAILLAGE", doc: "Number of elements of a mesh.", example: "n = nbel s ;", f: nbel },
     OpDef { name: "POIN", signature: "POIN x (y) (z) | MAILLAGE POIN n | MAILLAGE POIN ('INIT'|'FINAL') | MAILLAGE POIN 'PROC' POINT | MAILLAGE POIN ('DROIT' P1 P2 | 'PLAN' P1 P2 P3) (crit) | CHPOINT POIN 'MAXI'|'MINI' ('ABS') | CHPOINT POIN 'SUPE'|'INFE'|'EGSU'|'EGIN'|'EGAL' v", doc: "A point, or nodes of a mesh, or the nodes where a field meets a test (a POI1 mesh).", example: "p = l poin 'FINAL' ;", f: poin },
@@ -27,6 +27,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "ELEM", signature: "GEO ELEM TYPE | GEO ELEM n|LISTENTI | GEO ELEM 'APPU' ('STRI'|'LARG') GEO2", doc: "Elements of a mesh by type, by number, or resting on another mesh.", example: "q = s elem qua4 ;", f: elem },
     OpDef { name: "COTE", signature: "COTE n SURFACE", doc: "Side n of a structured (DALL/TRAN) surface.", example: "b = cote 1 s ;", f: cote },
     OpDef { name: "FACE", signature: "FACE n VOLUME", doc: "Face n of a volume made by VOLU, TRAN or ROTA: 1 the base, 2 the opposite face, 3 the lateral surface.", example: "haut = face 2 v ;", f: face },
+    OpDef { name: "ENVE", signature: "ENVE VOLUME", doc: "The envelope of a volume mesh: the faces that belong to one element only (TRI3/QUA4), oriented outwards as in their elements.", example: "peau = enve v ;", f: enve },
     OpDef { name: "CONT", signature: "CONT GEO", doc: "Contour: boundary edges of a surface, end points of a line.", example: "c = cont s ;", f: cont },
     OpDef { name: "ELIM", signature: "ELIM (crit) GEO (GEO2 …)", doc: "Merge nodes closer than crit, in every object (several meshes: their nodes with each other's).", example: "elim 1.e-5 l ;", f: elim },
     OpDef { name: "INTE", signature: "GEO1 INTE GEO2", doc: "Elements common to two meshes.", example: "c = s1 inte s2 ;", f: inte },
@@ -52,18 +53,22 @@ fn coor(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         };
     }
     if let Some(m) = a.opt::<Rc<Mesh>>() {
-        let k = which.ok_or_else(|| a.missing("the coordinate number"))?;
         let dim = it.opts.dime.max(1) as i64;
-        if !(1..=dim + 1).contains(&k) {
-            return Err(a.err(format!("coordinate {} does not exist in dimension {}", k, dim)));
-        }
-        let c = Chpoint::from_entries(
-            Nature::Diffus,
-            m.node_list()
-                .into_iter()
-                .map(|n| (n, "SCAL", if k == dim + 1 { it.nodes.density[n] } else { it.nodes.get(n)[k as usize - 1] })),
-        );
-        return Ok(vec![Value::Chpo(Rc::new(c))]);
+        let field = |k: i64| {
+            let c = Chpoint::from_entries(
+                Nature::Diffus,
+                m.node_list().into_iter().map(|n| {
+                    (n, "SCAL", if k == dim + 1 { it.nodes.density[n] } else { it.nodes.get(n)[k as usize - 1] })
+                }),
+            );
+            Value::Chpo(Rc::new(c))
+        };
+        return match which {
+            // Like the POINT form: one field per coordinate (`x y = COOR s`).
+            None => Ok((1..=dim).map(field).collect()),
+            Some(k) if (1..=dim + 1).contains(&k) => Ok(vec![field(k)]),
+            Some(k) => Err(a.err(format!("coordinate {} does not exist in dimension {}", k, dim))),
+        };
     }
     Err(a.missing("POINT or MAILLAGE"))
 }
@@ -341,6 +346,42 @@ fn cote(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let n = a.req::<i64>()?;
     let s = a.req::<Rc<Mesh>>()?;
     Ok(mesh_val(mg::cote(&s, n)?))
+}
+
+/// ENVE: the faces of the volume elements that no other element shares
+/// (same node set), in element order, each with its element's outward
+/// orientation (`shape::faces`).
+fn enve(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let m = a.req::<Rc<Mesh>>()?;
+    let mut faces: Vec<(ElemType, Vec<usize>)> = Vec::new();
+    let mut count: std::collections::HashMap<Vec<usize>, usize> = std::collections::HashMap::new();
+    for part in m.parts.iter().filter(|p| p.ty.dim() == 3) {
+        for e in part.elems() {
+            for (fty, loc) in crate::fem::shape::faces(part.ty) {
+                let nodes: Vec<usize> = loc.iter().map(|&k| e[k]).collect();
+                let mut key = nodes.clone();
+                key.sort_unstable();
+                *count.entry(key).or_default() += 1;
+                faces.push((fty, nodes));
+            }
+        }
+    }
+    if faces.is_empty() {
+        return Err(a.err("ENVE needs a volume mesh (the boundary of a surface or a line is CONT)"));
+    }
+    let mut parts: Vec<(ElemType, Vec<usize>)> = Vec::new();
+    for (fty, nodes) in faces {
+        let mut key = nodes.clone();
+        key.sort_unstable();
+        if count[&key] != 1 {
+            continue;
+        }
+        match parts.iter_mut().find(|(t, _)| *t == fty) {
+            Some((_, c)) => c.extend(nodes),
+            None => parts.push((fty, nodes)),
+        }
+    }
+    Ok(mesh_val(mg::mesh_of(parts)))
 }
 
 fn cont(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {

@@ -16,8 +16,8 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "SIGM", signature: "SIGM ('LINE') MMODEL MCHAML (MCHAML) CHPOINT", doc: "Elastic stresses (SMXX … for massive elements, EFFX … MOMZ resultants for bars and beams, N11 N22 N12 M11 M22 M12 V1 V2 for shells) at the element points.", example: "sig = sigm mo ma u ;", f: sigm },
     OpDef { name: "EPSI", signature: "EPSI ('LINE') MMODEL (MCHAML) CHPOINT", doc: "Strains (EPXX … GAXY; generalised strains for bars and beams; EPSS EPTT GAST RTSS RTTT RTST for shells).", example: "eps = epsi mo ma u ;", f: epsi },
     OpDef { name: "VMIS", signature: "VMIS MMODEL MCHAML_STRESS (MCHAML)", doc: "Von Mises equivalent stress (the beam formula for bars and beams).", example: "vm = vmis mo sig ma ;", f: vmis },
-    OpDef { name: "CHAN", signature: "CHAN 'POI1'|QUA8|TRI6|SEG3|QUA4|TRI3|SEG2 GEO | CHAN 'CHPO'|'NOEUD' MMODEL MCHAML | CHAN 'INCO' RIGIDITE LISTMOTS LISTMOTS | CHAN 'ATTRIBUT' CHPOINT 'NATURE' word", doc: "Change the type or attributes of an object.", example: "pts = chan 'POI1' l ;", f: chan },
-    OpDef { name: "PRES", signature: "PRES 'MASS' MMODEL VALUE GEO | PRES 'COQU' MMODEL VALUE", doc: "Nodal forces equivalent to a pressure on edges/faces of a massive model (positive towards the solid), or on every element of a shell model (positive along the element normal).", example: "f = pres 'MASS' mo 10. haut ;", f: pres },
+    OpDef { name: "CHAN", signature: "CHAN 'POI1'|QUA8|TRI6|SEG3|QUA4|TRI3|SEG2 GEO | CHAN 'CHPO'|'NOEUD'|'GRAVITE' MMODEL MCHAML | CHAN 'INCO' RIGIDITE LISTMOTS LISTMOTS | CHAN 'ATTRIBUT' CHPOINT 'NATURE' word | CHAN 'TYPE' MCHAML word", doc: "Change the type or attributes of an object.", example: "pts = chan 'POI1' l ;", f: chan },
+    OpDef { name: "PRES", signature: "PRES 'MASS' MMODEL VALUE GEO | PRES 'COQU' MMODEL VALUE ('NORM')", doc: "Nodal forces equivalent to a pressure on edges/faces of a massive model (positive towards the solid), or on every element of a shell model (positive along the element normal).", example: "f = pres 'MASS' mo 10. haut ;", f: pres },
     OpDef { name: "MASS", signature: "MASS MMODEL MCHAML (MCHAML) ('LUMP')", doc: "Mass matrix (consistent, or lumped with 'LUMP').", example: "m = mass mo ma ;", f: mass },
 ];
 
@@ -159,8 +159,10 @@ fn vmis(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    const KW: &[&str] =
-        &["POI1", "QUA8", "TRI6", "SEG3", "QUA4", "TRI3", "SEG2", "CHPO", "NOEUD", "INCO", "ATTRIBUT", "COMP"];
+    const KW: &[&str] = &[
+        "POI1", "QUA8", "TRI6", "SEG3", "QUA4", "TRI3", "SEG2", "CHPO", "NOEUD", "INCO", "ATTRIBUT", "COMP", "TYPE",
+        "GRAVITE",
+    ];
     let k = a.req_keyword(KW)?;
     match k {
         "POI1" => Ok(vec![Value::Mesh(Rc::new(mg::change_to_poi1(&super::mesh::req_geo(a)?)))]),
@@ -216,8 +218,19 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             Ok(vec![Value::Chpo(Rc::new(c))])
         }
         "COMP" => Err(a.err("CHAN 'COMP' is not supported; use NOMC to rename components")),
+        "TYPE" => {
+            // Relabel a field by element (chan.notice): a field built by
+            // arithmetic becomes CONTRAINTES again for VMIS or PRIN, which
+            // look for stresses by this label.
+            let m = a.req::<Rc<Mchaml>>()?;
+            let w = a.req::<String>()?;
+            let mut c = (*m).clone();
+            c.subtype = w.trim().to_uppercase();
+            Ok(vec![Value::Mchaml(Rc::new(c))])
+        }
         _ => {
-            // CHPO / NOEUD: element values to nodes.
+            // CHPO / NOEUD / GRAVITE: element values to nodes (averaged over
+            // the elements for CHPO), or to each element's centre.
             let model = a.req::<Rc<Model>>()?;
             let m = a.req::<Rc<Mchaml>>()?;
             let mut sum = Chpoint::new(Nature::Diffus);
@@ -234,8 +247,22 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                     at_nodes: true,
                     ..Default::default()
                 };
+                // The element centre in reference coordinates (the mean of
+                // the reference nodes), for CHAN 'GRAVITE'.
+                let refs = crate::fem::shape::ref_nodes(part.ty);
+                let centre = refs.iter().fold([0.0; 3], |acc, p| [0, 1, 2].map(|i| acc[i] + p[i] / refs.len() as f64));
+                let at_centre = crate::fem::shape::eval(part.ty, centre).n;
+                let npts = crate::fem::element::gauss_points(form, part.ty).len();
                 for (e, nodes) in part.elems().enumerate() {
-                    let g = crate::fem::stress::to_nodes(form, part.ty, &to_gauss(z, e)).map_err(fem_err)?;
+                    let g = match z.values.get(e) {
+                        // A field at the element centres (CHAN 'GRAVITE'):
+                        // the one value holds for every node.
+                        Some(v) if v.len() == 1 && npts != 1 && !z.at_nodes => crate::fem::element::GaussField {
+                            comps: to_gauss(z, e).comps,
+                            values: vec![v[0].clone(); part.ty.nodes()],
+                        },
+                        _ => crate::fem::stress::to_nodes(form, part.ty, &to_gauss(z, e)).map_err(fem_err)?,
+                    };
                     for (k, n) in nodes.iter().enumerate() {
                         for (c, name) in z.comps.iter().enumerate() {
                             let v = g.values[k][c];
@@ -243,11 +270,23 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                             *count.entry((*n, name.clone())).or_insert(0.0) += 1.0;
                         }
                     }
-                    nz.values.push(g.values);
+                    if k == "GRAVITE" {
+                        // One point per element: the field interpolated from
+                        // its nodal values at the centre.
+                        let v: Vec<f64> = (0..z.comps.len())
+                            .map(|c| at_centre.iter().zip(&g.values).map(|(w, row)| w * row[c]).sum())
+                            .collect();
+                        nz.values.push(vec![v]);
+                    } else {
+                        nz.values.push(g.values);
+                    }
+                }
+                if k == "GRAVITE" {
+                    nz.at_nodes = false;
                 }
                 out_m.zones.push(nz);
             }
-            if k == "NOEUD" {
+            if k == "NOEUD" || k == "GRAVITE" {
                 return Ok(vec![Value::Mchaml(Rc::new(out_m))]);
             }
             let avg = Chpoint::from_entries(
@@ -290,6 +329,9 @@ fn pres(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 fn pres_shell(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let model = a.req::<Rc<Model>>()?;
     let p = a.req_num()?;
+    // 'NORM' names the default direction, the element normal (pres.notice);
+    // decks write it explicitly, so it must not be left over as a result.
+    a.keyword(&["NORM"]);
     let mut out = Chpoint::new(Nature::Discret);
     let mut any = false;
     for zone in &model.zones {

@@ -228,7 +228,7 @@ fn solve_direct(it: &mut Interp, r: &Rigidite, asm: &Assembled, loads: &[Load], 
         it.timers.phase("RESO solve", solve_s);
         if it.opts.echo >= 1 {
             it.println(&format!(
-                "RESO: {} unknowns, {} conditions, {} right-hand side(s); factorisation {} ({:.3} s), solve {:.3} s",
+                "RESO: {} unknowns, {} conditions, {} right-hand side(s); matrix {} ({:.3} s), solve {:.3} s",
                 asm.problem.k.n,
                 asm.problem.conditions.len(),
                 loads.len(),

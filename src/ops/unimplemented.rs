@@ -60,7 +60,6 @@ pub const MISSING: &[Missing] = &[
     proc("DYNA", "DYNAMIC", STATICS),
     op("DYNE", "DYNE", STATICS),
     op("ECOU", "ECOULEMENT", STATICS),
-    op("ENVE", "ENVELOPPE", "FACE gives the faces of a volume made by VOLU, TRAN or ROTA"),
     op("EQEX", "EQEX", ""),
     op("EQPR", "EQPR", ""),
     op("EXCI", "EXCITER", "UNIL runs the unilateral status iteration natively"),
@@ -86,7 +85,6 @@ pub const MISSING: &[Missing] = &[
     op("SAUV", "SAUVER", FILES),
     op("TIRE", "TIRER", ""),
     op("VARI", "VARIABLE", ""),
-    op("VECT", "VECTEUR", "TRAC draws a deformed mesh (PLUS or DEFO) or a field"),
     op("VIBR", "VIBRATION", STATICS),
 ];
 
