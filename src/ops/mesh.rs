@@ -263,7 +263,19 @@ fn tran(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let mut sp = spacing(a)?;
     let v = vector(it, a).ok_or_else(|| a.missing("a vector (POINT)"))?;
     merge(&mut sp, spacing(a)?);
-    Ok(mesh_val(mg::tran(&mut it.nodes, &geo, &sp, v)?))
+    let m = mg::tran(&mut it.nodes, &geo, &sp, v)?;
+    Ok(mesh_val(swept_surface(it, m)))
+}
+
+/// A line swept under `OPTI ELEM TRI3` gives triangles, as DALL does (each
+/// quadrangle cut along its first diagonal); volumes are left as swept.
+fn swept_surface(it: &Interp, m: Mesh) -> Mesh {
+    let tri = ElemType::from_name(&it.opts.elem) == Some(ElemType::Tri3);
+    if tri && m.parts.iter().any(|p| p.ty == ElemType::Qua4) {
+        mg::change_to_triangles(&m)
+    } else {
+        m
+    }
 }
 
 fn rota(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
@@ -273,7 +285,8 @@ fn rota(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let c = vector(it, a).ok_or_else(|| a.missing("the centre (POINT)"))?;
     let axis = vector(it, a);
     merge(&mut sp, spacing(a)?);
-    Ok(mesh_val(mg::rota(&mut it.nodes, &geo, &sp, angle, c, axis)?))
+    let m = mg::rota(&mut it.nodes, &geo, &sp, angle, c, axis)?;
+    Ok(mesh_val(swept_surface(it, m)))
 }
 
 /// `VOLU (n) S1 S2`, or the sweeps of volu.notice written with VOLU:
