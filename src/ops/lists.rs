@@ -56,6 +56,20 @@ pub(crate) const OPS: &[OpDef] = &[
         example: "n = dime l ;",
         f: dime,
     },
+    OpDef {
+        name: "SOMM",
+        signature: "SOMM LISTREEL|LISTENTI",
+        doc: "Sum of the items of a list (FLOTTANT for a LISTREEL, ENTIER for a LISTENTI).",
+        example: "s = somm (prog 1. 2. 3.) ;",
+        f: somm,
+    },
+    OpDef {
+        name: "POSI",
+        signature: "POSI OBJ LISTMOTS|LISTENTI|LISTREEL",
+        doc: "Place (from 1) of the first item of the list equal to OBJ, 0 when it is absent.",
+        example: "i = posi 'UY' (mots 'UX' 'UY') ;",
+        f: posi,
+    },
 ];
 
 /// Sequence builder shared by PROG and LECT. Everything is read in the
@@ -161,26 +175,20 @@ fn extr(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     if let Some(v) = crate::ops::fieldfn::extr(it, a)? {
         return Ok(v);
     }
-    if let Some(l) = a.opt::<Rc<Vec<f64>>>() {
-        if let Some(idx) = a.opt::<Rc<Vec<i64>>>() {
-            return Ok(vec![Value::ListReel(Rc::new(sublist(a, &l, &idx)?))]);
-        }
-        let i = a.req_index(l.len())?;
-        return Ok(vec![Value::Float(l[i])]);
-    }
-    if let Some(l) = a.opt::<Rc<Vec<i64>>>() {
-        if let Some(idx) = a.opt::<Rc<Vec<i64>>>() {
-            return Ok(vec![Value::ListEnti(Rc::new(sublist(a, &l, &idx)?))]);
-        }
-        let i = a.req_index(l.len())?;
-        return Ok(vec![Value::Int(l[i])]);
-    }
-    if let Some(l) = a.opt::<Rc<Vec<String>>>() {
-        if let Some(idx) = a.opt::<Rc<Vec<i64>>>() {
-            return Ok(vec![Value::ListMots(Rc::new(sublist(a, &l, &idx)?))]);
-        }
-        let i = a.req_index(l.len())?;
-        return Ok(vec![Value::mot(&l[i])]);
+    // The list is the first list operand in the order written, whatever its
+    // type: `EXTR (MOTS 'A' 'B') (LECT 2)` must not take the LISTENTI of
+    // places for the list because LISTENTI is tried before LISTMOTS.
+    if let Some(AnyList(l)) = a.opt::<AnyList>() {
+        let idx = a.opt::<Rc<Vec<i64>>>();
+        return Ok(vec![match (l, idx) {
+            (Value::ListReel(l), Some(idx)) => Value::ListReel(Rc::new(sublist(a, &l, &idx)?)),
+            (Value::ListEnti(l), Some(idx)) => Value::ListEnti(Rc::new(sublist(a, &l, &idx)?)),
+            (Value::ListMots(l), Some(idx)) => Value::ListMots(Rc::new(sublist(a, &l, &idx)?)),
+            (Value::ListReel(l), None) => Value::Float(l[a.req_index(l.len())?]),
+            (Value::ListEnti(l), None) => Value::Int(l[a.req_index(l.len())?]),
+            (Value::ListMots(l), None) => Value::mot(&l[a.req_index(l.len())?]),
+            (other, _) => other,
+        }]);
     }
     if let Some(l) = a.opt::<Rc<Vec<Rc<Chpoint>>>>() {
         let i = a.req_index(l.len())?;
@@ -299,6 +307,32 @@ pub(crate) fn enle(a: &mut Args) -> Result<Option<Vec<Value>>> {
         Value::ListMots(l) => Value::ListMots(Rc::new((0..n).filter(pick).map(|k| l[k].clone()).collect())),
         other => other,
     }]))
+}
+
+fn somm(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    if let Some(l) = a.opt::<Rc<Vec<f64>>>() {
+        return Ok(vec![Value::Float(l.iter().sum())]);
+    }
+    let l = a.req::<Rc<Vec<i64>>>()?;
+    let s = l.iter().try_fold(0i64, |s, &x| s.checked_add(x)).ok_or_else(|| a.err("the sum overflows an ENTIER"))?;
+    Ok(vec![Value::Int(s)])
+}
+
+/// POSI: the object is the first operand written (`POSI 'UY' LM`), read
+/// before the list so that a MOT list never stands for the object.
+fn posi(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    if let Some(l) = a.opt::<Rc<Vec<String>>>() {
+        let w = a.req::<String>()?;
+        let w = short(&w);
+        return Ok(vec![Value::Int(l.iter().position(|x| *x == w).map_or(0, |i| i as i64 + 1))]);
+    }
+    if let Some(l) = a.opt::<Rc<Vec<i64>>>() {
+        let x = a.req::<i64>()?;
+        return Ok(vec![Value::Int(l.iter().position(|y| *y == x).map_or(0, |i| i as i64 + 1))]);
+    }
+    let l = a.req::<Rc<Vec<f64>>>()?;
+    let x = a.req_num()?;
+    Ok(vec![Value::Int(l.iter().position(|y| *y == x).map_or(0, |i| i as i64 + 1))])
 }
 
 fn dime(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {

@@ -85,6 +85,13 @@ pub(crate) const OPS: &[OpDef] = &[
         example: "x = flot 3 ;",
         f: flot,
     },
+    OpDef {
+        name: "MULT",
+        signature: "MULT I J",
+        doc: "VRAI when the ENTIER I is a multiple of J (unilater.procedur: `'MULT' &BOUCL1 100`).",
+        example: "si (mult &b 10) ; mess &b ; finsi ;",
+        f: mult,
+    },
     OpDef { name: "PI", signature: "PI", doc: "The number pi.", example: "l = 2. * pi ;", f: pi },
     OpDef {
         name: "MAXI",
@@ -263,6 +270,15 @@ fn flot(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         Value::ListEnti(l) => Value::ListReel(Rc::new(l.iter().map(|i| *i as f64).collect())),
         other => other,
     }])
+}
+
+fn mult(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let i = a.req::<i64>()?;
+    let j = a.req::<i64>()?;
+    if j == 0 {
+        return Err(a.err("MULT: no multiple of 0"));
+    }
+    Ok(vec![Value::Bool(i % j == 0)])
 }
 
 fn pi(_: &mut Interp, _: &mut Args) -> Result<Vec<Value>> {

@@ -34,6 +34,13 @@ pub(crate) const OPS: &[OpDef] = &[
         f: pvec,
     },
     OpDef {
+        name: "DIST",
+        signature: "DIST POINT POINT",
+        doc: "Distance between two points.",
+        example: "d = p1 dist p2 ;",
+        f: dist,
+    },
+    OpDef {
         name: "COLI",
         signature: "COLI OBJ1 a1 (OBJ2 a2 …)",
         doc: "Linear combination a1 OBJ1 + a2 OBJ2 + … of CHPOINTs (or MCHAMLs), each weighed by the number after it.",
@@ -52,6 +59,14 @@ fn pvec(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let w = [x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]];
     let d = it.opts.dens;
     Ok(vec![Value::Point(it.nodes.push(w, d))])
+}
+
+fn dist(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let p = a.req::<PointId>()?;
+    let q = a.req::<PointId>()?;
+    let (x, y) = (it.nodes.get(p.0), it.nodes.get(q.0));
+    let d = (0..it.opts.dime.clamp(1, 3)).map(|i| (x[i] - y[i]).powi(2)).sum::<f64>().sqrt();
+    Ok(vec![Value::Float(d)])
 }
 
 /// Σ a_i OBJ_i with the field algebra of `*` and `+` (supports united,
