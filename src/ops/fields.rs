@@ -605,7 +605,13 @@ fn extr_chpo(it: &Interp, a: &mut Args, ch: &Chpoint) -> Result<Vec<Value>> {
 }
 
 fn extr_rigi(a: &mut Args, r: &Rigidite) -> Result<Vec<Value>> {
-    match a.req_keyword(&["MAIL", "COMP", "DIAG"])? {
+    match a.req_keyword(&["MAIL", "COMP", "DIAG", "CONT"])? {
+        // The unilateral solver's table of the last RESO/UNIL of this
+        // object (the TABLE UNIL returns).
+        "CONT" => match r.cache.borrow().last_unil.clone() {
+            Some(t) => Ok(vec![t]),
+            None => Err(a.err("this RIGIDITE has not been through a unilateral RESO or UNIL yet: no contact table")),
+        },
         "MAIL" => {
             let which = a.keyword(&["NOMU", "MULT", "UNIL"]);
             let mut phys = Vec::new();

@@ -1,6 +1,6 @@
 //! RESO, REAC and UNIL: the bridge between RIGIDITE objects and `solve`.
 
-use super::assemble::{describe_condition, Assembled};
+use super::assemble::Assembled;
 use super::{Args, OpDef};
 use crate::error::{Error, Result};
 use crate::eval::Interp;
@@ -393,6 +393,7 @@ fn solve_unil(
             changing.join("; ")
         ));
     }
+    r.cache.borrow_mut().last_unil = Some(diagnostics(r, &sol, &report));
     Ok((sol, report))
 }
 
@@ -430,19 +431,9 @@ fn reaction(r: &Rigidite, u: &Chpoint) -> Chpoint {
     out
 }
 
-/// UNIL: the unilateral solver called directly, with its diagnostics.
-fn unil(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let r = a.req::<Rc<Rigidite>>()?;
-    let mut o = read_options(it, a, &r)?;
-    let f = a.req::<Rc<Chpoint>>()?;
-    merge(&mut o, read_options(it, a, &r)?);
-    if r.n_unilateral() == 0 {
-        return Err(a.err("the RIGIDITE holds no unilateral condition"));
-    }
-    let asm = assembled(&r);
-    let load = asm.load(it, &[&f]).map_err(|e| a.err(e.message))?;
-    let (sol, rep) = solve_unil(it, &r, &asm, &load, &o)?;
-    record(it, &rep);
+/// The diagnostics TABLE of one unilateral solve: what UNIL returns, and
+/// what `EXTR RIG 'CONT'` gives back afterwards.
+fn diagnostics(r: &Rigidite, sol: &crate::solve::Solution, rep: &UnilReport) -> Value {
     let mut t = Table::with_subtype("UNILATERAL");
     let set = |t: &mut Table, k: &str, v: Value| t.set(Key::Mot(k.into()), v);
     set(&mut t, "METHODE", Value::mot(rep.method));
@@ -470,15 +461,26 @@ fn unil(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let statuses: Vec<i64> =
         r.conds.iter().enumerate().filter(|(_, c)| c.kind.is_unilateral()).map(|(k, _)| sol.active[k] as i64).collect();
     set(&mut t, "STATUTS", Value::ListEnti(Rc::new(statuses)));
-    let mut names = Vec::new();
-    for (k, c) in r.conds.iter().enumerate() {
-        if c.kind.is_unilateral() && sol.active[k] {
-            names.push(describe_condition(it, &r, k, load.d[k]));
-        }
+    Value::Table(Rc::new(RefCell::new(t)))
+}
+
+/// UNIL: the unilateral solver called directly, with its diagnostics.
+fn unil(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let r = a.req::<Rc<Rigidite>>()?;
+    let mut o = read_options(it, a, &r)?;
+    let f = a.req::<Rc<Chpoint>>()?;
+    merge(&mut o, read_options(it, a, &r)?);
+    if r.n_unilateral() == 0 {
+        return Err(a.err("the RIGIDITE holds no unilateral condition"));
     }
-    let _ = names;
+    let asm = assembled(&r);
+    let load = asm.load(it, &[&f]).map_err(|e| a.err(e.message))?;
+    let (sol, rep) = solve_unil(it, &r, &asm, &load, &o)?;
+    record(it, &rep);
+    // solve_unil kept the diagnostics with the RIGIDITE (EXTR RIG 'CONT').
+    let t = r.cache.borrow().last_unil.clone().unwrap_or_else(|| diagnostics(&r, &sol, &rep));
     let field = asm.field(&r, &sol);
-    Ok(vec![Value::Chpo(Rc::new(field)), Value::Table(Rc::new(RefCell::new(t)))])
+    Ok(vec![Value::Chpo(Rc::new(field)), t])
 }
 
 #[allow(dead_code)]

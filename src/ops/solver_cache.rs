@@ -26,6 +26,9 @@ pub struct SolverCache {
     /// Structure key of the direct system, computed once per object.
     pub key: Option<u64>,
     pub unil: UnilCache,
+    /// The diagnostics TABLE of the last unilateral solve of this object
+    /// (what UNIL returns), for `EXTR RIG 'CONT'`.
+    pub last_unil: Option<crate::value::Value>,
 }
 
 impl Default for SolverCache {
@@ -35,6 +38,7 @@ impl Default for SolverCache {
             assembled: None,
             key: None,
             unil: Default::default(),
+            last_unil: None,
         }
     }
 }
