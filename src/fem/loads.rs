@@ -6,7 +6,7 @@
 //! [`super::shape::faces`]); the normal is turned towards it.
 //!
 //! Edges (SEG2, SEG3) in the 2D modes: PLAN CONT/DEFO forces are per unit
-//! thickness (PRES receives no DIM3); AXIS forces are per radian, i.e. the
+//! thickness (the caller scales p by DIM3 when it has one); AXIS forces are per radian, i.e. the
 //! integral of p·N·n·r along the edge (no 2π), matching the per-radian
 //! stiffness. Faces (TRI3, TRI6, QUA4, QUA8) in TRID.
 

@@ -17,7 +17,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "EPSI", signature: "EPSI ('LINE') MMODEL (MCHAML) CHPOINT", doc: "Strains (EPXX … GAXY; generalised strains for bars and beams; EPSS EPTT GAST RTSS RTTT RTST for shells).", example: "eps = epsi mo ma u ;", f: epsi },
     OpDef { name: "VMIS", signature: "VMIS MMODEL MCHAML_STRESS (MCHAML)", doc: "Von Mises equivalent stress (the beam formula for bars and beams).", example: "vm = vmis mo sig ma ;", f: vmis },
     OpDef { name: "CHAN", signature: "CHAN 'POI1'|QUA8|TRI6|SEG3|QUA4|TRI3|SEG2 GEO | CHAN 'CHPO'|'NOEUD'|'GRAVITE' MMODEL MCHAML | CHAN 'INCO' RIGIDITE LISTMOTS LISTMOTS | CHAN 'ATTRIBUT' CHPOINT 'NATURE' word | CHAN 'TYPE' MCHAML word | CHAN 'MAJU'|'MINU' MOT", doc: "Change the type or attributes of an object.", example: "pts = chan 'POI1' l ;", f: chan },
-    OpDef { name: "PRES", signature: "PRES 'MASS' MMODEL VALUE GEO | PRES 'COQU' MMODEL VALUE ('NORM')", doc: "Nodal forces equivalent to a pressure on edges/faces of a massive model (positive towards the solid), or on every element of a shell model (positive along the element normal).", example: "f = pres 'MASS' mo 10. haut ;", f: pres },
+    OpDef { name: "PRES", signature: "PRES 'MASS' MMODEL (MCHAML) VALUE GEO | PRES 'COQU' MMODEL VALUE ('NORM')", doc: "Nodal forces equivalent to a pressure on edges/faces of a massive model (positive towards the solid; in plane stress for the DIM3 thickness of the characteristics MCHAML when given, else per unit thickness), or on every element of a shell model (positive along the element normal).", example: "f = pres 'MASS' mo 10. haut ;", f: pres },
     OpDef { name: "MASS", signature: "MASS MMODEL MCHAML (MCHAML) ('LUMP')", doc: "Mass matrix (consistent, or lumped with 'LUMP').", example: "m = mass mo ma ;", f: mass },
 ];
 
@@ -305,18 +305,35 @@ fn pres(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         return pres_shell(it, a);
     }
     let model = a.req::<Rc<Model>>()?;
+    // Optional characteristics (CARA … DIM3): in plane stress the forces are
+    // then for the thickness, as RIGI's stiffness is; without them they are
+    // per unit thickness.
+    let mut fields: Vec<Rc<Mchaml>> = Vec::new();
+    while let Some(f) = a.opt::<Rc<Mchaml>>() {
+        fields.push(f);
+    }
     let p = a.req_num()?;
     let geo = super::mesh::req_geo(a)?;
+    while let Some(f) = a.opt::<Rc<Mchaml>>() {
+        fields.push(f);
+    }
     let mode = model.zones.first().map(zone_mode).transpose()?.ok_or_else(|| a.err("empty model"))?;
     let names = dofs::forces(it);
     let mut out = Chpoint::new(Nature::Discret);
     for part in &geo.parts {
         for face in part.elems() {
-            let inside = inside_point(it, &model, face).ok_or_else(|| {
+            let (zone, inside) = inside_point(it, &model, face).ok_or_else(|| {
                 a.err(format!("the face through node {} belongs to no element of the model", face[0] + 1))
             })?;
+            let t = if fields.is_empty() {
+                1.0
+            } else {
+                super::model::material_for(&model.zones[zone], &fields)
+                    .thickness(mode, part.ty.name())
+                    .map_err(fem_err)?
+            };
             let x: Vec<[f64; 3]> = face.iter().map(|n| it.nodes.get(*n)).collect();
-            let f = crate::fem::loads::pressure_load(part.ty, mode, &x, p, inside).map_err(fem_err)?;
+            let f = crate::fem::loads::pressure_load(part.ty, mode, &x, p * t, inside).map_err(fem_err)?;
             for (n, v) in face.iter().zip(f) {
                 for (k, c) in names.iter().enumerate() {
                     out.add(*n, c, v[k], true);
@@ -361,9 +378,10 @@ fn pres_shell(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     Ok(vec![Value::Chpo(Rc::new(out))])
 }
 
-/// The centroid of a model element holding every node of `face`.
-fn inside_point(it: &Interp, model: &Model, face: &[usize]) -> Option<[f64; 3]> {
-    for z in &model.zones {
+/// The zone and the centroid of a model element holding every node of
+/// `face`.
+fn inside_point(it: &Interp, model: &Model, face: &[usize]) -> Option<(usize, [f64; 3])> {
+    for (zi, z) in model.zones.iter().enumerate() {
         for p in &z.mesh.parts {
             for e in p.elems() {
                 if face.iter().all(|n| e.contains(n)) && e.len() > face.len() {
@@ -374,7 +392,7 @@ fn inside_point(it: &Interp, model: &Model, face: &[usize]) -> Option<[f64; 3]> 
                             c[k] += x[k] / e.len() as f64;
                         }
                     }
-                    return Some(c);
+                    return Some((zi, c));
                 }
             }
         }
