@@ -1,7 +1,7 @@
 //! Bounded "no panic on random input" test (runs in CI). Longer runs use
 //! the cargo-fuzz target in `fuzz/`.
 
-use gibi::Interpreter;
+use gibi::{FilePolicy, Interpreter};
 
 /// A tiny deterministic generator (xorshift): no dependency, same inputs
 /// on every run.
@@ -12,6 +12,9 @@ impl Rng {
         self.0 ^= self.0 >> 7;
         self.0 ^= self.0 << 17;
         self.0
+    }
+    fn below(&mut self, n: usize) -> usize {
+        (self.next() % n as u64) as usize
     }
     fn pick<'a>(&mut self, xs: &[&'a str]) -> &'a str {
         xs[(self.next() % xs.len() as u64) as usize]
@@ -114,4 +117,69 @@ fn random_programs_never_panic() {
             .unwrap_or_else(|_| panic!("panic on input: {:?}", src));
         let _ = gibi::syntax::check_complete(&src);
     }
+}
+
+// Every registered operator, called with random arguments drawn from a
+// pool of objects of every type (and keywords, numbers, words), must
+// answer with a value or an error, never a panic: this fuzzes the
+// operators rather than the language.
+
+/// Objects of every type, in a 2D plane-stress setting with a contact pair.
+const SETUP: &str = "
+opti echo 0 dime 2 elem qua4 mode plan cont ;
+p1 = 0. 0. ; p2 = 1. 0. ; p3 = 1. 1. ; p4 = 0. 1. ;
+l1 = droi 2 p1 p2 ; l2 = droi 2 p2 p3 ; l3 = droi 2 p3 p4 ; l4 = droi 2 p4 p1 ;
+s = dall l1 l2 l3 l4 ;
+mo = mode s mecanique elastique ;
+ma = mate mo youn 100. nu 0.3 ;
+k = rigi mo ma ;
+cl = bloq 'UX' 'UY' l4 ;
+cu = bloq 'MINI' 'UY' l1 ;
+u = reso (k et cl) (forc 'FX' 1. p3) ;
+sg = sigm mo ma u ;
+ep = epsi mo ma u ;
+lr = prog 1. 2. 3. ; le = lect 1 2 3 ; lm = mots 'UX' 'UY' ;
+t = table ; t . 1 = 2. ;
+ev = evol manu lr lr ;
+n = 3 ; x = 2.5 ; w = 'ABCD' ; b = vrai ;
+";
+
+const POOL: &[&str] = &[
+    "p1", "p3", "l1", "s", "mo", "ma", "k", "cl", "cu", "u", "sg", "ep", "lr", "le", "lm", "t", "ev", "n", "x", "w",
+    "b", "0", "-1", "2", "0.", "1.e300", "'UX'", "'FX'", "'MINI'", "'MAXI'", "'MAIL'", "'TRAN'", "'COMP'", "'CONT'",
+    "'CHPO'", "'ABS'", "'SOMM'", "'NOEC'", "'VALE'", "(0. 0.)", "(1. 2.)",
+];
+
+/// Operators that change the session itself (dimension, files, the end of
+/// the run, object removal) rather than compute from their arguments.
+const SKIP: &[&str] = &["OPTI", "FIN", "ERRE", "OUBL", "DETR", "SORT", "LIRE", "TEMP", "MENA"];
+
+#[test]
+fn every_operator_survives_random_arguments() {
+    let mut g = Interpreter::builder().files(FilePolicy::Nothing).step_limit(100_000).build();
+    g.run_str("setup", SETUP).expect("setup runs");
+    let names: Vec<String> = g.registry().all().iter().map(|o| o.name.to_string()).collect();
+    assert!(names.len() > 120, "only {} operators", names.len());
+    let mut rng = Rng(0x2545_f491_4f6c_dd1d);
+    let (mut calls, mut ok) = (0, 0);
+    for name in names.iter().filter(|n| !SKIP.contains(&n.as_str())) {
+        for _ in 0..300 {
+            let mut src = format!("zz = {name}");
+            for _ in 0..rng.below(5) {
+                src.push(' ');
+                src.push_str(POOL[rng.below(POOL.len())]);
+            }
+            src.push_str(" ;");
+            let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| g.run_str("fuzz", &src).is_ok()));
+            match r {
+                Ok(true) => ok += 1,
+                Ok(false) => {}
+                Err(_) => panic!("panic on: {src}"),
+            }
+            calls += 1;
+        }
+    }
+    // The pool must make real calls, not only argument errors.
+    assert!(ok * 50 > calls, "{ok} of {calls} calls succeeded");
+    eprintln!("{ok} of {calls} calls succeeded");
 }

@@ -315,14 +315,12 @@ impl Bordered {
         self.factor.forward_partial(y.as_mut(), nsub);
         let mut r = Mat::from_fn(self.tail.len(), cols.len(), |q, j| cols[j][self.tail[q]]);
         let d = self.factor.pivots();
+        let yd = Mat::from_fn(nsub, cols.len(), |k, j| y[(k, j)] / d[k]);
         self.each_block(|start, width, js, xs| {
             for (c, &q) in js.iter().enumerate() {
+                let x = xs.col(c);
                 for j in 0..cols.len() {
-                    let mut acc = 0.0;
-                    for rr in 0..width {
-                        acc += xs[(rr, c)] * y[(start + rr, j)] / d[start + rr];
-                    }
-                    r[(q, j)] -= acc;
+                    r[(q, j)] -= (0..width).map(|rr| x[rr] * yd[(start + rr, j)]).sum::<f64>();
                 }
             }
         });

@@ -321,13 +321,8 @@ fn grid(nx: usize) -> Matrix {
 #[test]
 fn border_path_matches_the_whole_matrix_path() {
     let nx = 24;
-    let mut seed = 0x9e37_79b9_u64;
-    let mut rnd = move |k: usize| {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed % k as u64) as usize
-    };
+    let mut rng = crate::solve::status_testkit::Rng(0x9e37_79b9);
+    let mut rnd = move |k: usize| rng.below(k);
     let mut conditions = Vec::new();
     for q in 0..60 {
         let j = rnd(nx * nx);
