@@ -8,9 +8,10 @@ mod common;
 
 use std::time::Instant;
 
-use gibi::solve::lagrange::Doubled;
-use gibi::solve::linear::SymFactor;
-use gibi::solve::{ordering, Condition, Kind, Problem};
+use gibi::solve::bilateral::lagrange::Doubled;
+use gibi::solve::bilateral::linear::SymFactor;
+use gibi::solve::bilateral::ordering;
+use gibi::solve::{Condition, Kind, Problem};
 
 fn main() {
     let nx = common::grid();
@@ -148,10 +149,10 @@ fn main() {
     gibi::solve::direct::check_structure(&p).unwrap();
     println!("check_structure {:.3}", t.elapsed().as_secs_f64());
     let t = Instant::now();
-    gibi::solve::lagrange::validate(&p).unwrap();
+    gibi::solve::bilateral::lagrange::validate(&p).unwrap();
     println!("validate {:.3}", t.elapsed().as_secs_f64());
     let t = Instant::now();
-    let c = gibi::solve::condense::Condenser::new(&p).unwrap();
+    let c = gibi::solve::unilateral::condensed::condenser::Condenser::new(&p).unwrap();
     println!("Condenser::new {:.3}", t.elapsed().as_secs_f64());
     let d: Vec<f64> = (0..m).map(|q| -200.0 * (1.0 - (std::f64::consts::TAU * q as f64 / m as f64).cos())).collect();
     let load = gibi::solve::Load { f: vec![-1.0 / nx as f64; n], d };
@@ -159,13 +160,13 @@ fn main() {
     let cd = c.condensed(&load).unwrap();
     println!("condensed {:.3}", t.elapsed().as_secs_f64());
     let t = Instant::now();
-    let _ = gibi::solve::dense_ldlt::DenseLdlt::factor(cd.g.as_ref().as_ref());
+    let _ = gibi::solve::unilateral::dense_ldlt::DenseLdlt::factor(cd.g.as_ref().as_ref());
     println!("dense ldlt {:.3}", t.elapsed().as_secs_f64());
     let t = Instant::now();
-    let _ = gibi::solve::dense_ldlt::DenseLdlt::factor(cd.g.as_ref().as_ref());
+    let _ = gibi::solve::unilateral::dense_ldlt::DenseLdlt::factor(cd.g.as_ref().as_ref());
     println!("dense ldlt again {:.3}", t.elapsed().as_secs_f64());
     let t = Instant::now();
-    let r = gibi::solve::status::run(&cd, &Default::default(), &mut |_| {});
+    let r = gibi::solve::unilateral::condensed::operator::run(&cd, &Default::default(), &mut |_| {});
     println!("status run {:.3} {:?}", t.elapsed().as_secs_f64(), r.map(|r| r.records.len()));
     if std::env::var("GIBI_BENCH_SHORT").is_ok() {
         return;

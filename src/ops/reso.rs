@@ -179,7 +179,7 @@ fn solve_direct(it: &mut Interp, r: &Rigidite, asm: &Assembled, loads: &[Load], 
         let key = {
             let mut cache = r.cache.borrow_mut();
             let id = cache.id;
-            let k = *cache.key.get_or_insert_with(|| crate::solve::lagrange::structure_hash(&asm.problem));
+            let k = *cache.key.get_or_insert_with(|| crate::solve::bilateral::lagrange::structure_hash(&asm.problem));
             // STAB changes the values factorised: keep it in the key.
             (k ^ (o.stab as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15), id)
         };

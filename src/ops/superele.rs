@@ -1,5 +1,5 @@
 //! SUPER: static condensation (Guyan super-elements) by the same
-//! interrupted factorisation RESO uses (`solve::condense::schur_onto`).
+//! interrupted factorisation RESO uses (`solve::bilateral::schur::schur_onto`).
 //! The SUPERELE type is a host object: it shows how new object types plug
 //! in without touching the evaluator.
 
@@ -8,7 +8,7 @@ use super::{dofs, Args, OpDef};
 use crate::error::{Error, Result};
 use crate::eval::Interp;
 use crate::fem::mesh::Mesh;
-use crate::solve::condense::{schur_onto, SchurOnto};
+use crate::solve::bilateral::schur::{schur_onto, SchurOnto};
 use crate::solve::Load;
 use crate::value::rigidity::{Block, Subtype, Symmetry};
 use crate::value::{Chpoint, HostObject, Nature, Rigidite, Value};

@@ -85,34 +85,3 @@ pub struct Solution {
     pub lambda: Vec<f64>,
     pub active: Vec<bool>,
 }
-
-/// The problem condensed onto the second multipliers of the `m` unilateral
-/// conditions (unilateral.md §3.2, negated quarter-scaled form):
-/// `T x = h` with `T = G − A·P_I`, where `P_I` is the 0/1 diagonal of the
-/// inactive conditions. Produced by `condense`, consumed by `status`.
-/// Indices `0..m` here are positions among the unilateral conditions only.
-#[derive(Debug, Clone)]
-pub struct Condensed {
-    /// `G = ΣC H⁻¹ CᵀΣ` (m×m, symmetric; positive definite when the rows
-    /// are independent).
-    pub g: std::rc::Rc<faer::Mat<f64>>,
-    /// The packed LDLᵀ of `g` (D on the diagonal, unit L strictly below)
-    /// when the condensation produced it (an unshifted interrupted
-    /// factorisation): the status loop's factor while every condition is
-    /// active, with no dense factorisation.
-    pub g_factor: Option<std::rc::Rc<faer::Mat<f64>>>,
-    /// `h = ½ (ΣC H⁻¹ (F + CᵀW d) − Σd)`.
-    pub h: Vec<f64>,
-    /// Multiplier-block scaling α_i (the diagonal change on release is α_i).
-    pub alpha: Vec<f64>,
-    /// Coupling scaling σ_i (physical λ_i = 2 σ_i x_i when active).
-    pub sigma: Vec<f64>,
-    /// s_i: +1 for MINI, −1 for MAXI.
-    pub sense: Vec<f64>,
-    /// `XᵀF = ΣC H⁻¹ F`, for the work of the load along a rigid mode (§7.5).
-    pub xtf: Vec<f64>,
-    /// The rows c_i (primal unknown, coefficient), to group proportional rows.
-    pub rows: Vec<Vec<(usize, f64)>>,
-    /// The limits d_i.
-    pub d: Vec<f64>,
-}
