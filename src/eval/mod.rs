@@ -48,8 +48,9 @@ pub struct Interp {
     /// The text each procedure was defined in (by definition identity),
     /// so errors in its body point into the right file.
     pub proc_sources: rustc_hash::FxHashMap<usize, Rc<Source>>,
-    /// The last direct factorisations, reused by RESO (see ops::solver_cache).
-    pub factors: crate::ops::solver_cache::FactorPool,
+    /// The last direct factorisations, reused by RESO (see
+    /// `solve::bilateral::pool`).
+    pub factors: crate::solve::FactorPool,
 }
 
 /// How deep blocks, parenthesised groups and procedure calls may run

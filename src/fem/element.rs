@@ -155,6 +155,20 @@ pub fn dual_of(dof: &str) -> Option<&'static str> {
     })
 }
 
+/// Pairs the element library does not produce: multipliers, thermal and
+/// Fourier unknowns.
+const OTHER_DUALS: &[(&str, &str)] =
+    &[("UT", "FT"), ("RT", "MT"), ("LX", "FLX"), ("T", "Q"), ("TH", "QH"), ("P", "FP"), ("PI", "FPI")];
+
+/// The dual (force) name of any unknown: the element pairs of [`dual_of`],
+/// the other known pairs, else `F` before the name.
+pub fn dual_name(primal: &str) -> String {
+    if let Some(d) = dual_of(primal) {
+        return d.to_string();
+    }
+    OTHER_DUALS.iter().find(|(p, _)| *p == primal).map_or_else(|| format!("F{}", primal), |(_, d)| d.to_string())
+}
+
 /// Which geometries each formulation accepts.
 fn check(f: Formulation, ty: ElemType, mode: Mode) -> Result<(), FemError> {
     let ok = match f {

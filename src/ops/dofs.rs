@@ -50,16 +50,6 @@ pub fn moments(it: &Interp) -> &'static [&'static str] {
     }
 }
 
-/// Pairs the element library does not know: multipliers, thermal and
-/// Fourier unknowns. Mechanical pairs (UX ↔ FX …) come from
-/// `fem::element::dual_of`, the one table the elements use too.
-const EXTRA: &[(&str, &str)] =
-    &[("UT", "FT"), ("RT", "MT"), ("LX", "FLX"), ("T", "Q"), ("TH", "QH"), ("P", "FP"), ("PI", "FPI")];
-
-/// The dual (force) name of a primal unknown.
-pub fn dual_of(primal: &str) -> String {
-    if let Some(d) = crate::fem::element::dual_of(primal) {
-        return d.to_string();
-    }
-    EXTRA.iter().find(|(p, _)| *p == primal).map_or_else(|| format!("F{}", primal), |(_, d)| d.to_string())
-}
+/// The dual (force) name of a primal unknown (one table for the elements
+/// and the language: `fem::element::dual_name`).
+pub use crate::fem::element::dual_name as dual_of;

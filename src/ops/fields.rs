@@ -7,9 +7,7 @@ use super::{dofs, Args, OpDef, PointId};
 use crate::error::{Error, Result};
 use crate::eval::Interp;
 use crate::fem::mesh::Mesh;
-use crate::value::rigidity::Subtype;
 use crate::value::{Chpoint, Mchaml, Model, Nature, Rigidite, Value};
-use std::collections::HashMap;
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
@@ -232,7 +230,7 @@ fn enle(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 fn xtmx(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let r = a.req::<Rc<Rigidite>>()?;
     let u = a.req::<Rc<Chpoint>>()?;
-    let ku = matvec(&r, &u);
+    let ku = r.matvec(&u);
     // Each unknown against the force (dual) component of K u.
     let s: f64 = u.entries().map(|(n, c, v)| v * ku.get(n, &dofs::dual_of(c)).unwrap_or(0.0)).sum();
     Ok(vec![Value::Float(s)])
@@ -321,46 +319,6 @@ fn product(x: &Chpoint, y: &Chpoint, div: bool) -> Chpoint {
     out
 }
 
-fn scale_rigi(r: &Rigidite, s: f64) -> Rigidite {
-    let mut out = Rigidite::new(r.subtype);
-    out.blocks = r.blocks.clone();
-    for b in out.blocks.iter_mut() {
-        for v in b.mats.iter_mut() {
-            *v *= s;
-        }
-    }
-    out.conds = r.conds.clone();
-    out
-}
-
-/// `RIGIDITE * CHPOINT`: K u on the primal rows (dual names), and for the
-/// conditions c·u on FLX and cᵀλ on the primal rows (λ = LX of the field).
-pub(crate) fn matvec(r: &Rigidite, u: &Chpoint) -> Chpoint {
-    let mut out = Chpoint::new(Nature::Discret);
-    for b in &r.blocks {
-        let nd = b.ndof();
-        for e in 0..b.n_elem() {
-            let conn = &b.conn[e * b.nodes_per_elem..(e + 1) * b.nodes_per_elem];
-            let m = b.mat(e);
-            let ue: Vec<f64> = b.dofs.iter().map(|(l, c)| u.get(conn[*l], c).unwrap_or(0.0)).collect();
-            for i in 0..nd {
-                let s: f64 = (0..nd).map(|j| m[i * nd + j] * ue[j]).sum();
-                out.add(conn[b.dofs[i].0], &b.duals[i], s, true);
-            }
-        }
-    }
-    for c in &r.conds {
-        let cu: f64 = c.terms.iter().map(|(n, comp, k)| k * u.get(*n, comp).unwrap_or(0.0)).sum();
-        out.add(c.mult_node, "FLX", cu, true);
-        if let Some(l) = u.get(c.mult_node, "LX") {
-            for (n, comp, k) in c.reaction_terms() {
-                out.add(*n, &dofs::dual_of(comp), k * l, true);
-            }
-        }
-    }
-    out
-}
-
 pub(crate) fn binary(op: Bin, x: &Value, y: &Value) -> Option<std::result::Result<Value, String>> {
     use Value::*;
     let f = |p: f64, q: f64| super::arith::float_op(op, p, q);
@@ -378,24 +336,13 @@ pub(crate) fn binary(op: Bin, x: &Value, y: &Value) -> Option<std::result::Resul
             let s = x.as_f64().unwrap_or(0.0);
             Chpo(Rc::new(b.map(|v| f(s, v))))
         }
-        (Rigi(r), Chpo(u)) | (Chpo(u), Rigi(r)) if op == Bin::Mul => Chpo(Rc::new(matvec(r, u))),
-        (Rigi(r), Int(_) | Float(_)) if op == Bin::Mul => Rigi(Rc::new(scale_rigi(r, y.as_f64().unwrap_or(0.0)))),
-        (Int(_) | Float(_), Rigi(r)) if op == Bin::Mul => Rigi(Rc::new(scale_rigi(r, x.as_f64().unwrap_or(0.0)))),
-        (Rigi(r), Rigi(s)) if op == Bin::Add => Rigi(Rc::new(assemble(r, s))),
-        (Rigi(r), Rigi(s)) if op == Bin::Sub => Rigi(Rc::new(assemble(r, &scale_rigi(s, -1.0)))),
+        (Rigi(r), Chpo(u)) | (Chpo(u), Rigi(r)) if op == Bin::Mul => Chpo(Rc::new(r.matvec(u))),
+        (Rigi(r), Int(_) | Float(_)) if op == Bin::Mul => Rigi(Rc::new(r.scaled(y.as_f64().unwrap_or(0.0)))),
+        (Int(_) | Float(_), Rigi(r)) if op == Bin::Mul => Rigi(Rc::new(r.scaled(x.as_f64().unwrap_or(0.0)))),
+        (Rigi(r), Rigi(s)) if op == Bin::Add => Rigi(Rc::new(r.union(s))),
+        (Rigi(r), Rigi(s)) if op == Bin::Sub => Rigi(Rc::new(r.union(&s.scaled(-1.0)))),
         _ => return None,
     }))
-}
-
-/// `ET` of two rigidities: the lists are concatenated (lazy assembly). The
-/// result is a new object, so it starts with a fresh solver cache (no warm
-/// start after re-assembly, as in Cast3M).
-pub(crate) fn assemble(r: &Rigidite, s: &Rigidite) -> Rigidite {
-    let subtype = if r.subtype == Subtype::Blocage { s.subtype } else { r.subtype };
-    let mut out = Rigidite::new(subtype);
-    out.blocks = r.blocks.iter().chain(s.blocks.iter()).cloned().collect();
-    out.conds = r.conds.iter().chain(s.conds.iter()).cloned().collect();
-    out
 }
 
 pub(crate) fn union(x: &Value, y: &Value, noer: bool) -> Option<std::result::Result<Value, String>> {
@@ -405,7 +352,7 @@ pub(crate) fn union(x: &Value, y: &Value, noer: bool) -> Option<std::result::Res
             Ok(c) => Chpo(Rc::new(c)),
             Err(e) => return Some(Err(e)),
         },
-        (Rigi(a), Rigi(b)) => Rigi(Rc::new(assemble(a, b))),
+        (Rigi(a), Rigi(b)) => Rigi(Rc::new(a.union(b))),
         (Model(a), Model(b)) => {
             Model(Rc::new(crate::value::Model { zones: a.zones.iter().chain(b.zones.iter()).cloned().collect() }))
         }
@@ -608,84 +555,28 @@ fn extr_rigi(a: &mut Args, r: &Rigidite) -> Result<Vec<Value>> {
     match a.req_keyword(&["MAIL", "COMP", "DIAG", "CONT"])? {
         // The unilateral solver's table of the last RESO/UNIL of this
         // object (the TABLE UNIL returns).
-        "CONT" => match r.cache.borrow().last_unil.clone() {
-            Some(t) => Ok(vec![t]),
+        "CONT" => match &r.cache.borrow().last_unil {
+            Some((report, statuses)) => Ok(vec![super::reso::diagnostics(report, statuses)]),
             None => Err(a.err("this RIGIDITE has not been through a unilateral RESO or UNIL yet: no contact table")),
         },
         "MAIL" => {
-            let which = a.keyword(&["NOMU", "MULT", "UNIL"]);
-            let mut phys = Vec::new();
-            for b in &r.blocks {
-                phys.extend_from_slice(&b.conn);
-            }
-            for c in &r.conds {
-                phys.extend(c.terms.iter().map(|t| t.0));
-            }
-            let mut seen = std::collections::HashSet::new();
-            phys.retain(|n| seen.insert(*n));
-            let nodes: Vec<usize> = match which {
-                Some("NOMU") => phys,
-                Some("MULT") => r.conds.iter().map(|c| c.mult_node).collect(),
-                Some(_) => r.conds.iter().filter(|c| c.kind.is_unilateral()).map(|c| c.mult_node).collect(),
-                None => phys.into_iter().chain(r.conds.iter().map(|c| c.mult_node)).collect(),
+            let nodes: Vec<usize> = match a.keyword(&["NOMU", "MULT", "UNIL"]) {
+                Some("NOMU") => r.physical_nodes(),
+                Some("MULT") => r.multiplier_nodes(false),
+                Some(_) => r.multiplier_nodes(true),
+                None => r.physical_nodes().into_iter().chain(r.multiplier_nodes(false)).collect(),
             };
             Ok(vec![Value::Mesh(Rc::new(Mesh::points(&nodes)))])
         }
-        "COMP" => {
-            let mut comps: Vec<String> = Vec::new();
-            for b in &r.blocks {
-                for (_, c) in &b.dofs {
-                    if !comps.contains(c) {
-                        comps.push(c.clone());
-                    }
-                }
-            }
-            if !r.conds.is_empty() {
-                comps.push("LX".into());
-            }
-            Ok(vec![Value::ListMots(Rc::new(comps))])
-        }
-        _ => {
-            let mut diag: HashMap<(usize, String), f64> = HashMap::new();
-            let mut order = Vec::new();
-            for b in &r.blocks {
-                let nd = b.ndof();
-                for e in 0..b.n_elem() {
-                    let conn = &b.conn[e * b.nodes_per_elem..(e + 1) * b.nodes_per_elem];
-                    for (i, (l, c)) in b.dofs.iter().enumerate() {
-                        let key = (conn[*l], c.clone());
-                        if !diag.contains_key(&key) {
-                            order.push(key.clone());
-                        }
-                        *diag.entry(key).or_insert(0.0) += b.mat(e)[i * nd + i];
-                    }
-                }
-            }
-            let c = Chpoint::from_entries(Nature::Diffus, order.iter().map(|k| (k.0, k.1.as_str(), diag[k])));
-            Ok(vec![Value::Chpo(Rc::new(c))])
-        }
+        "COMP" => Ok(vec![Value::ListMots(Rc::new(r.component_names()))]),
+        _ => Ok(vec![Value::Chpo(Rc::new(r.diagonal()))]),
     }
 }
 
 /// DIME of a RIGIDITE: the number of its unknowns (primal and LX).
 pub(crate) fn dime(v: &Value) -> Option<i64> {
     match v {
-        Value::Rigi(r) => {
-            let mut set = std::collections::HashSet::new();
-            for b in &r.blocks {
-                for e in 0..b.n_elem() {
-                    for (l, c) in &b.dofs {
-                        set.insert((b.conn[e * b.nodes_per_elem + l], c.clone()));
-                    }
-                }
-            }
-            for c in &r.conds {
-                for (n, comp, _) in &c.terms {
-                    set.insert((*n, comp.clone()));
-                }
-            }
-            Some((set.len() + r.conds.len()) as i64)
-        }
+        Value::Rigi(r) => Some(r.n_unknowns() as i64),
         Value::Chpo(c) => Some(c.len() as i64),
         Value::Evol(e) => Some(e.curves.len() as i64),
         _ => None,

@@ -31,7 +31,6 @@ mod principal;
 mod products;
 mod reso;
 mod restrict;
-pub mod solver_cache;
 mod superele;
 mod tables;
 mod thermo;

@@ -1,13 +1,15 @@
 //! RESO, REAC and UNIL: the bridge between RIGIDITE objects and `solve`.
 
-use super::assemble::Assembled;
+use super::assemble::{self, explain, solution_field, Assembled};
 use super::{Args, OpDef};
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::eval::Interp;
-use crate::solve::direct::{DirectOptions, Factorization};
+use crate::solve::bilateral::pool::Phase;
+use crate::solve::bilateral::rigid_modes::hold_rigid_modes;
+use crate::solve::direct::DirectOptions;
 use crate::solve::unilateral::{solve_unilateral, Method, UnilOptions, UnilReport};
-use crate::solve::Load;
-use crate::value::{fmt_float, Chpoint, Key, Nature, Rigidite, Table, Value};
+use crate::solve::{Load, SolveError};
+use crate::value::{fmt_float, Chpoint, Key, Rigidite, Table, Value};
 use std::cell::RefCell;
 use std::rc::Rc;
 
@@ -82,12 +84,6 @@ fn read_options(it: &Interp, a: &mut Args, r: &Rigidite) -> Result<Opts> {
     Ok(o)
 }
 
-/// The numbering of a RIGIDITE, computed once per object.
-fn assembled(r: &Rigidite) -> Rc<Assembled> {
-    let mut cache = r.cache.borrow_mut();
-    cache.assembled.get_or_insert_with(|| Rc::new(Assembled::new(r))).clone()
-}
-
 /// A right-hand side as written: a CHPOINT gives one solution CHPOINT, a
 /// LISTCHPO a LISTCHPO of solutions in the same order. All of them are
 /// solved together, on one factorisation.
@@ -145,9 +141,9 @@ fn reso(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         // Only empty LISTCHPOs: nothing to solve, nothing to factorise.
         return Ok(regroup(&given, Vec::new()));
     }
-    let asm = assembled(&r);
+    let asm = r.numbered();
     let loads: Vec<Load> =
-        rhs.iter().map(|c| asm.load(it, &[c])).collect::<Result<_>>().map_err(|e| a.err(e.message))?;
+        rhs.iter().map(|c| assemble::load(it, &asm, &[c])).collect::<Result<_>>().map_err(|e| a.err(e.message))?;
     let unilateral = r.n_unilateral() > 0 && !o.nounil;
     if o.ense && !unilateral {
         let (sols, extra) = reso_ense(it, &r, &asm, &loads, &o)?;
@@ -160,7 +156,7 @@ fn reso(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         let mut sols = Vec::new();
         for load in &loads {
             let (sol, report) = solve_unil(it, &r, &asm, load, &o)?;
-            sols.push(Rc::new(asm.field(&r, &sol)));
+            sols.push(Rc::new(solution_field(&asm, &sol)));
             record(it, &report);
         }
         sols
@@ -174,75 +170,51 @@ fn reso(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 /// RIGIDITE (or one of the same pattern) was factorised before.
 fn solve_direct(it: &mut Interp, r: &Rigidite, asm: &Assembled, loads: &[Load], o: &Opts) -> Result<Vec<Rc<Chpoint>>> {
     let t = std::time::Instant::now();
-    let mut warnings: Vec<String> = Vec::new();
-    let sols = {
-        let key = {
-            let mut cache = r.cache.borrow_mut();
-            let id = cache.id;
-            let k = *cache.key.get_or_insert_with(|| crate::solve::bilateral::lagrange::structure_hash(&asm.problem));
-            // STAB changes the values factorised: keep it in the key.
-            (k ^ (o.stab as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15), id)
-        };
-        let (key, id) = key;
-        let opts = DirectOptions { check_residual: !o.noid, stab: o.stab };
-        let mut phase = "reused";
-        let entry = match it.factors.get(key) {
-            Some(e) if e.owner == id => e,
-            Some(e) if e.fact.same_pattern(&asm.problem) => {
-                // Same pattern, new values: numeric factorisation only.
-                let res = e.fact.refactor(&asm.problem);
-                e.owner = id;
-                phase = "numeric refactorisation";
-                if let Err(err) = res {
-                    return soft_singular(it, r, asm, loads, o, err);
-                }
-                it.factors.get(key).expect("present")
-            }
-            _ => {
-                let f = match Factorization::new(&asm.problem, &opts) {
-                    Ok(f) => f,
-                    Err(e) => return soft_singular(it, r, asm, loads, o, e),
-                };
-                phase = "factorisation";
-                it.factors.insert(crate::ops::solver_cache::PoolEntry { key, owner: id, fact: f })
-            }
-        };
-        let fact_s = t.elapsed().as_secs_f64();
-        let t = std::time::Instant::now();
-        let s = match entry.fact.solve_checked(loads, !o.noid) {
-            // 'SOUC': an inaccurate solution is a warning, not a failure.
-            Err(crate::solve::SolveError::Inaccurate { residual, .. }) if o.soft => {
-                let s = entry.fact.solve_checked(loads, false);
-                warnings.push(format!(
-                    "RESO 'SOUC': warning: inaccurate solution (relative residual {}) returned anyway",
-                    crate::value::fmt_float(residual)
-                ));
-                s.map_err(|e| asm.explain(it, r, e, loads))
-            }
-            other => other.map_err(|e| asm.explain(it, r, e, loads)),
-        };
-        let solve_s = t.elapsed().as_secs_f64();
-        if phase != "reused" {
-            it.timers.phase(&format!("RESO {}", phase), fact_s);
-        }
-        it.timers.phase("RESO solve", solve_s);
-        if it.opts.echo >= 1 {
-            it.println(&format!(
-                "RESO: {} unknowns, {} conditions, {} right-hand side(s); matrix {} ({:.3} s), solve {:.3} s",
-                asm.problem.k.n,
-                asm.problem.conditions.len(),
-                loads.len(),
-                phase,
-                fact_s,
-                solve_s
-            ));
-        }
-        s
+    let opts = DirectOptions { check_residual: !o.noid, stab: o.stab };
+    let factored = {
+        let mut cache = r.cache.borrow_mut();
+        let cache = &mut *cache;
+        it.factors.factor(cache.id, &mut cache.key, &asm.problem, &opts)
     };
+    let (fact, phase) = match factored {
+        Ok(f) => f,
+        Err(e) => return soft_singular(it, r, asm, loads, o, e),
+    };
+    let fact_s = t.elapsed().as_secs_f64();
+    let t = std::time::Instant::now();
+    let mut warnings: Vec<String> = Vec::new();
+    let sols = match fact.solve_checked(loads, !o.noid) {
+        // 'SOUC': an inaccurate solution is a warning, not a failure.
+        Err(SolveError::Inaccurate { residual, .. }) if o.soft => {
+            warnings.push(format!(
+                "RESO 'SOUC': warning: inaccurate solution (relative residual {}) returned anyway",
+                fmt_float(residual)
+            ));
+            fact.solve_checked(loads, false)
+        }
+        other => other,
+    };
+    let sols = sols.map_err(|e| explain(it, r, asm, e, loads));
+    let solve_s = t.elapsed().as_secs_f64();
+    if phase != Phase::Reused {
+        it.timers.phase(&format!("RESO {}", phase.name()), fact_s);
+    }
+    it.timers.phase("RESO solve", solve_s);
+    if it.opts.echo >= 1 {
+        it.println(&format!(
+            "RESO: {} unknowns, {} conditions, {} right-hand side(s); matrix {} ({:.3} s), solve {:.3} s",
+            asm.problem.k.n,
+            asm.problem.conditions.len(),
+            loads.len(),
+            phase.name(),
+            fact_s,
+            solve_s
+        ));
+    }
     for w in warnings {
         it.println(&w);
     }
-    Ok(sols?.iter().map(|s| Rc::new(asm.field(r, s))).collect())
+    Ok(sols?.iter().map(|s| Rc::new(solution_field(asm, s))).collect())
 }
 
 /// A factorisation error: with 'SOUC' a singular system is solved as
@@ -254,10 +226,10 @@ fn soft_singular(
     asm: &Assembled,
     loads: &[Load],
     o: &Opts,
-    e: crate::solve::SolveError,
+    e: SolveError,
 ) -> Result<Vec<Rc<Chpoint>>> {
-    if !(o.soft && matches!(e, crate::solve::SolveError::Singular { .. })) {
-        return Err(asm.explain(it, r, e, loads));
+    if !(o.soft && matches!(e, SolveError::Singular { .. })) {
+        return Err(explain(it, r, asm, e, loads));
     }
     let (sols, extra) = reso_ense(it, r, asm, loads, o)?;
     let held = match &extra[..] {
@@ -282,38 +254,18 @@ fn reso_ense(
     loads: &[Load],
     o: &Opts,
 ) -> Result<(Vec<Rc<Chpoint>>, Vec<Value>)> {
-    use crate::solve::{Condition, Kind, SolveError};
     let opts = DirectOptions { check_residual: !o.noid, stab: o.stab };
-    let mut p = asm.problem.clone();
-    let mut held: Vec<usize> = Vec::new();
-    let fact = loop {
-        match Factorization::new(&p, &opts) {
-            Ok(f) => break f,
-            Err(SolveError::Singular { dofs }) if !dofs.is_empty() && !held.contains(&dofs[0]) && held.len() < 64 => {
-                held.push(dofs[0]);
-                p.conditions.push(Condition { terms: vec![(dofs[0], 1.0)], kind: Kind::Equal, dual: None });
-            }
-            Err(e) => return Err(asm.explain(it, r, e, loads)),
-        }
-    };
-    let extended: Vec<Load> = loads
-        .iter()
-        .map(|l| {
-            let mut d = l.d.clone();
-            d.resize(p.conditions.len(), 0.0);
-            Load { f: l.f.clone(), d }
-        })
-        .collect();
-    let sols = fact.solve(&extended).map_err(|e| asm.explain(it, r, e, loads))?;
-    let fields: Vec<Rc<Chpoint>> = sols.iter().map(|s| Rc::new(asm.field(r, s))).collect();
+    let held = hold_rigid_modes(&asm.problem, &opts).map_err(|e| explain(it, r, asm, e, loads))?;
+    let sols = held.solve(loads).map_err(|e| explain(it, r, asm, e, loads))?;
+    let fields: Vec<Rc<Chpoint>> = sols.iter().map(|s| Rc::new(solution_field(asm, s))).collect();
     let mut nodes: Vec<usize> = Vec::new();
-    for &j in &held {
+    for &j in &held.held {
         let n = asm.dofs[j].0;
         if !nodes.contains(&n) {
             nodes.push(n);
         }
     }
-    let extra = vec![Value::Int(held.len() as i64), Value::Mesh(Rc::new(crate::fem::mesh::Mesh::points(&nodes)))];
+    let extra = vec![Value::Int(held.held.len() as i64), Value::Mesh(Rc::new(crate::fem::mesh::Mesh::points(&nodes)))];
     Ok((fields, extra))
 }
 
@@ -375,7 +327,7 @@ fn solve_unil(
     for l in lines {
         it.println(&l);
     }
-    let (sol, report) = res.map_err(|e| asm.explain(it, r, e, std::slice::from_ref(load)))?;
+    let (sol, report) = res.map_err(|e| explain(it, r, asm, e, std::slice::from_ref(load)))?;
     if !report.converged {
         // 'SOUC': Cast3M's UNILATER returns its last iterate with a warning.
         let last = report.records.last().expect("an unconverged iteration has records");
@@ -393,7 +345,8 @@ fn solve_unil(
             changing.join("; ")
         ));
     }
-    r.cache.borrow_mut().last_unil = Some(diagnostics(r, &sol, &report));
+    let statuses = r.conds.iter().enumerate().filter(|(_, c)| c.kind.is_unilateral()).map(|(k, _)| sol.active[k]);
+    r.cache.borrow_mut().last_unil = Some((report.clone(), statuses.collect()));
     Ok((sol, report))
 }
 
@@ -413,27 +366,15 @@ fn record(it: &mut Interp, report: &UnilReport) {
 fn reac(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let r = a.req::<Rc<Rigidite>>()?;
     Ok(vec![match a.req::<Rhs>()? {
-        Rhs::One(u) => Value::Chpo(Rc::new(reaction(&r, &u))),
-        Rhs::List(l) => Value::ListChpo(Rc::new(l.iter().map(|u| Rc::new(reaction(&r, u))).collect())),
+        Rhs::One(u) => Value::Chpo(Rc::new(r.reactions(&u))),
+        Rhs::List(l) => Value::ListChpo(Rc::new(l.iter().map(|u| Rc::new(r.reactions(u))).collect())),
     }])
-}
-
-fn reaction(r: &Rigidite, u: &Chpoint) -> Chpoint {
-    let mut out = Chpoint::new(Nature::Discret);
-    for c in &r.conds {
-        // An inactive unilateral condition has no LX: its reaction is 0
-        // (reac.notice), written explicitly so EXTR finds it.
-        let l = u.get(c.mult_node, "LX").unwrap_or(0.0);
-        for (n, comp, coef) in c.reaction_terms() {
-            out.add(*n, &super::dofs::dual_of(comp), -coef * l, true);
-        }
-    }
-    out
 }
 
 /// The diagnostics TABLE of one unilateral solve: what UNIL returns, and
 /// what `EXTR RIG 'CONT'` gives back afterwards.
-fn diagnostics(r: &Rigidite, sol: &crate::solve::Solution, rep: &UnilReport) -> Value {
+/// `statuses`: the final status of each unilateral condition, in order.
+pub(crate) fn diagnostics(rep: &UnilReport, statuses: &[bool]) -> Value {
     let mut t = Table::with_subtype("UNILATERAL");
     let set = |t: &mut Table, k: &str, v: Value| t.set(Key::Mot(k.into()), v);
     set(&mut t, "METHODE", Value::mot(rep.method));
@@ -458,8 +399,7 @@ fn diagnostics(r: &Rigidite, sol: &crate::solve::Solution, rep: &UnilReport) -> 
         phases.set(Key::Mot(name.to_uppercase()), Value::Float(*s));
     }
     set(&mut t, "TEMPS", Value::Table(Rc::new(RefCell::new(phases))));
-    let statuses: Vec<i64> =
-        r.conds.iter().enumerate().filter(|(_, c)| c.kind.is_unilateral()).map(|(k, _)| sol.active[k] as i64).collect();
+    let statuses: Vec<i64> = statuses.iter().map(|&s| s as i64).collect();
     set(&mut t, "STATUTS", Value::ListEnti(Rc::new(statuses)));
     Value::Table(Rc::new(RefCell::new(t)))
 }
@@ -473,15 +413,13 @@ fn unil(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     if r.n_unilateral() == 0 {
         return Err(a.err("the RIGIDITE holds no unilateral condition"));
     }
-    let asm = assembled(&r);
-    let load = asm.load(it, &[&f]).map_err(|e| a.err(e.message))?;
+    let asm = r.numbered();
+    let load = assemble::load(it, &asm, &[&f]).map_err(|e| a.err(e.message))?;
     let (sol, rep) = solve_unil(it, &r, &asm, &load, &o)?;
     record(it, &rep);
-    // solve_unil kept the diagnostics with the RIGIDITE (EXTR RIG 'CONT').
-    let t = r.cache.borrow().last_unil.clone().unwrap_or_else(|| diagnostics(&r, &sol, &rep));
-    let field = asm.field(&r, &sol);
+    // solve_unil kept the report with the RIGIDITE (EXTR RIG 'CONT').
+    let statuses: Vec<bool> = r.cache.borrow().last_unil.as_ref().map(|l| l.1.clone()).unwrap_or_default();
+    let t = diagnostics(&rep, &statuses);
+    let field = solution_field(&asm, &sol);
     Ok(vec![Value::Chpo(Rc::new(field)), t])
 }
-
-#[allow(dead_code)]
-fn unused(_: Error) {}

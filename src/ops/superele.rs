@@ -3,7 +3,7 @@
 //! The SUPERELE type is a host object: it shows how new object types plug
 //! in without touching the evaluator.
 
-use super::assemble::Assembled;
+use super::assemble::{self, explain, solution_field, Assembled};
 use super::{dofs, Args, OpDef};
 use crate::error::{Error, Result};
 use crate::eval::Interp;
@@ -25,7 +25,6 @@ pub(crate) const OPS: &[OpDef] = &[OpDef {
 
 /// A super-element: the condensed operator and how to expand it.
 pub struct SuperElem {
-    source: Rc<Rigidite>,
     asm: Assembled,
     schur: SchurOnto,
     /// Master unknowns (node, component), in the order of the condensed matrix.
@@ -69,7 +68,7 @@ fn supe(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             let h = req_super(a)?;
             let s = h.as_any().downcast_ref::<SuperElem>().expect("checked");
             let f = a.req::<Rc<Chpoint>>()?;
-            let load = s.asm.load(it, &[&f]).map_err(|e| a.err(e.message))?;
+            let load = assemble::load(it, &s.asm, &[&f]).map_err(|e| a.err(e.message))?;
             let fc = s.schur.load(&load);
             let mut out = Chpoint::new(Nature::Discret);
             for ((n, c), v) in s.masters.iter().zip(fc) {
@@ -82,12 +81,12 @@ fn supe(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             let s = h.as_any().downcast_ref::<SuperElem>().expect("checked");
             let um = a.req::<Rc<Chpoint>>()?;
             let load = match a.opt::<Rc<Chpoint>>() {
-                Some(f) => s.asm.load(it, &[&f]).map_err(|e| a.err(e.message))?,
-                None => s.asm.load(it, &[]).map_err(|e| a.err(e.message))?,
+                Some(f) => assemble::load(it, &s.asm, &[&f]).map_err(|e| a.err(e.message))?,
+                None => assemble::load(it, &s.asm, &[]).map_err(|e| a.err(e.message))?,
             };
             let tail: Vec<f64> = s.masters.iter().map(|(n, c)| um.get(*n, c).unwrap_or(0.0)).collect();
             let sol = s.schur.expand(&load, &tail);
-            Ok(vec![Value::Chpo(Rc::new(s.asm.field(&s.source, &sol)))])
+            Ok(vec![Value::Chpo(Rc::new(solution_field(&s.asm, &sol)))])
         }
         _ => Err(a.err("SUPER 'MASSE' is not supported yet")),
     }
@@ -96,11 +95,11 @@ fn supe(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 fn build(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     a.keyword(&["NOMU"]);
     let r = a.req::<Rc<Rigidite>>()?;
-    let asm = Assembled::new(&r);
+    let asm = r.number();
     // Masters: every unknown of the rigidity at the nodes of a mesh, the
     // unknowns of a second rigidity, or the (node, component) of a field.
     let wanted: Vec<(usize, String)> = if let Some(r2) = a.opt::<Rc<Rigidite>>() {
-        Assembled::new(&r2).dofs.clone()
+        r2.number().dofs
     } else if let Some(ch) = a.opt::<Rc<Chpoint>>() {
         ch.entries().map(|(n, c, _)| (n, c.to_string())).collect()
     } else {
@@ -112,13 +111,13 @@ fn build(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     if keep.is_empty() {
         return Err(a.err("no master unknown: the masters share no unknown with the rigidity"));
     }
-    let schur = schur_onto(&asm.problem, &keep).map_err(|e| asm.explain(it, &r, e, &[]))?;
+    let schur = schur_onto(&asm.problem, &keep).map_err(|e| explain(it, &r, &asm, e, &[]))?;
     let n = asm.problem.k.n;
     if schur.unknowns().iter().any(|&j| j >= n) {
         return Err(a.err("conditions acting on master unknowns are not supported: impose them after condensation"));
     }
     let masters: Vec<(usize, String)> = schur.unknowns().iter().map(|&j| asm.dofs[j].clone()).collect();
-    let s = SuperElem { source: r.clone(), asm, schur, masters };
+    let s = SuperElem { asm, schur, masters };
     Ok(vec![Value::Host(Rc::new(s))])
 }
 

@@ -15,15 +15,22 @@
 //!   factorisation, elimination, static condensation;
 //! * [`unilateral`]: MINI/MAXI conditions: the driver, the one status
 //!   loop, and its backends (condensed, old method, sparse, iterative,
-//!   non-symmetric), built on the bilateral half.
+//!   non-symmetric), built on the bilateral half;
+//! * [`numbering`] and [`cache`], shared: the numbering of a system over
+//!   named unknowns, and what one object keeps between solves.
 //!
 //! `unilateral` uses `bilateral`, never the other way round.
 
 pub mod bilateral;
+pub mod cache;
 pub mod error;
+pub mod numbering;
 pub mod problem;
 pub mod unilateral;
 
 pub use bilateral::direct;
+pub use bilateral::pool::FactorPool;
+pub use cache::SolverCache;
 pub use error::SolveError;
+pub use numbering::{Assembled, LoadError};
 pub use problem::{Condition, Kind, Load, Matrix, Problem, Solution};

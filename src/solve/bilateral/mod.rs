@@ -23,6 +23,8 @@ pub mod lagrange;
 pub mod linear;
 mod nd;
 pub mod ordering;
+pub mod pool;
+pub mod rigid_modes;
 pub mod schur;
 
 #[cfg(test)]

@@ -1,10 +1,17 @@
 //! RIGIDITE: a list of elementary matrices over named unknowns, plus
 //! condition rows (BLOQ, RELA), exactly as Cast3M keeps it: assembly is lazy
-//! and happens in RESO. The solver cache lives in the object so a later RESO
-//! on the same object reuses the symbolic analysis and warm-starts the
-//! status of unilateral conditions.
+//! and happens in RESO. The solver cache (a `solve` type) lives in the
+//! object so a later RESO on the same object reuses the numbering and the
+//! symbolic analysis, and warm-starts the status of unilateral conditions.
+//!
+//! [`algebra`]: what the generic operators do with one (scaling, K u,
+//! union, extraction); [`numbering`]: the numbered `solve` problem and the
+//! field of a solution.
 
-use crate::solve::Kind;
+pub mod algebra;
+pub mod numbering;
+
+use crate::solve::{Kind, SolverCache};
 use std::cell::RefCell;
 use std::rc::Rc;
 
@@ -88,7 +95,7 @@ pub struct Rigidite {
     pub conds: Vec<CondRow>,
     /// Shared by copies with the same pattern (`FLOT * RIGIDITE`), so new
     /// values reuse the symbolic analysis.
-    pub cache: Rc<RefCell<crate::ops::solver_cache::SolverCache>>,
+    pub cache: Rc<RefCell<SolverCache>>,
 }
 
 impl Rigidite {
