@@ -33,8 +33,9 @@ pub mod syntax;
 pub mod value;
 
 pub use error::{Error, ErrorKind, Result};
+pub use eval::args::Args;
+pub use eval::registry::{OpSpec, Registry};
 pub use eval::FilePolicy;
-pub use ops::{Args, OpSpec, Registry};
 pub use value::Value;
 
 use eval::Interp;
@@ -204,7 +205,7 @@ impl Interpreter {
     }
 
     /// Read an object as a typed Rust value.
-    pub fn get_as<T: ops::FromArg>(&self, name: &str) -> Result<T> {
+    pub fn get_as<T: eval::args::FromArg>(&self, name: &str) -> Result<T> {
         let v = self.get(name).ok_or_else(|| Error::runtime(format!("no object named {}", name.to_uppercase())))?;
         T::from_value(&v).ok_or_else(|| {
             Error::runtime(format!("{} is a {}, not a {}", name.to_uppercase(), v.type_name(), T::EXPECT))

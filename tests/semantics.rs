@@ -338,3 +338,22 @@ fn a_mot_naming_an_operator_without_arguments_is_an_operand() {
     assert!(matches!(g.get("b"), Some(Value::Bool(true))));
     assert_eq!(g.get("c").unwrap().as_mot(), Some("RIGIDITE"));
 }
+
+/// The evaluator's fast path for numeric instructions and the machine
+/// agree, including the integer rules.
+#[test]
+fn fast_path_gives_the_answers_of_the_machine() {
+    let src = "a = 7 ; b = 2. ; x1 = a / 2 * b + 1 ; x2 = (a - 10) / 2 ; x3 = 2 ** 10 ; x4 = 2 ** -1 ;\n\
+               x5 = a * 1000000000 * 1000000000 * 1000 ; x6 = ((a)) ; x7 = a + b ** 2 ;";
+    let mut g = Interpreter::new();
+    g.run_str("t", src).unwrap();
+    assert!(matches!(g.get("x1"), Some(Value::Float(f)) if f == 7.0));
+    assert!(matches!(g.get("x2"), Some(Value::Int(-1))));
+    assert!(matches!(g.get("x3"), Some(Value::Int(1024))));
+    assert!(matches!(g.get("x4"), Some(Value::Float(f)) if f == 0.5));
+    assert!(matches!(g.get("x5"), Some(Value::Float(_))));
+    assert!(matches!(g.get("x6"), Some(Value::Int(7))));
+    assert!(matches!(g.get("x7"), Some(Value::Float(f)) if f == 81.0));
+    // A division by zero still raises the machine's error.
+    assert!(g.run_str("t", "z = a / 0 ;").is_err());
+}

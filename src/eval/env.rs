@@ -6,7 +6,7 @@
 use crate::value::Value;
 use rustc_hash::FxHashMap as HashMap;
 
-use super::machine::GroupState;
+use super::tokens::GroupState;
 
 #[derive(Debug, Default)]
 pub struct Frame {

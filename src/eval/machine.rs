@@ -6,46 +6,15 @@
 //! are pushed, operators run and read their arguments by type among the
 //! pushed values and further right, and their results are pushed back.
 
+use super::args::{ends_window, takes_no_argument, Args};
+use super::registry::OpSpec;
+pub use super::tokens::{GroupState, Tok, TokKind};
 use super::Interp;
 use crate::error::{Error, Result};
-use crate::ops::{Args, OpSpec};
 use crate::source::Span;
 use crate::syntax::ast::{Item, ItemKind};
 use crate::value::{Key, Value};
-use std::collections::VecDeque;
 use std::rc::Rc;
-
-#[derive(Debug, Clone)]
-pub enum TokKind {
-    /// A value: literal number, object, group result, loop counter.
-    Val(Value),
-    /// Quoted text: a MOT, unless it names an operator in operator position.
-    Quoted(Rc<str>),
-    /// An unquoted word that names no object: an operator, else a MOT.
-    Word(String),
-    /// An operator that takes no argument (`PI`), already evaluated: a
-    /// value for whoever reads an operand, still a word for whoever reads
-    /// a keyword.
-    Nullary { word: String, value: Value },
-    /// `+ - * / ** < > <EG >EG %`.
-    Sym(&'static str),
-}
-
-#[derive(Debug, Clone)]
-pub struct Tok {
-    pub kind: TokKind,
-    pub span: Span,
-    /// Whether the token was written as a name (OUBL and LIST recover the
-    /// name from the source text at `span`; no copy on the hot path).
-    pub named: bool,
-}
-
-/// Operands already pushed (left) and tokens not yet read (right).
-#[derive(Debug, Default)]
-pub struct GroupState {
-    pub left: Vec<Value>,
-    pub right: VecDeque<Tok>,
-}
 
 /// A quoted text can act as an operator only if it looks like a word.
 fn wordlike(s: &str) -> bool {
@@ -139,7 +108,7 @@ impl Interp {
     /// `PROG 0. PI`.
     fn word_token(&mut self, w: String, span: Span, out: &mut Vec<Tok>) -> Result<()> {
         let op = match self.registry.find(&w) {
-            Some(op) if crate::ops::takes_no_argument(&op) => op,
+            Some(op) if takes_no_argument(&op) => op,
             _ => {
                 out.push(Tok { kind: TokKind::Word(w), span, named: true });
                 return Ok(());
@@ -209,7 +178,7 @@ impl Interp {
             // Followed by an operator or by nothing, it stays an operand:
             // `TY = TYPE K ; SI (TY EGA 'RIGIDITE')` must not run RIGI.
             if let TokKind::Val(Value::Mot(s)) = &t.kind {
-                let has_argument = st.right.front().is_some_and(|n| !crate::ops::ends_window(n, &self.registry));
+                let has_argument = st.right.front().is_some_and(|n| !ends_window(n, &self.registry));
                 if t.named && has_argument && wordlike(s) {
                     if let Some(op) = self.registry.find(s) {
                         self.invoke(op, &mut st, t.span)?;

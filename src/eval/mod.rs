@@ -1,21 +1,26 @@
 //! The evaluator: runs a [`Program`] statement by statement on the stack
-//! machine of [`machine`], with the object store of [`env`].
+//! machine of [`machine`], with the object store of [`env`]. Operators are
+//! looked up in the [`registry`] and read their arguments through
+//! [`args`]; their bodies live in `ops`, which this layer never names.
 
+pub mod args;
 mod control;
 pub mod env;
 mod fast;
 pub mod machine;
 mod options;
 mod proc;
+pub mod registry;
+pub mod tokens;
 
 pub use options::{FilePolicy, Options, Timers};
 
 use crate::error::{Error, ErrorKind, Result};
 use crate::fem::mesh::Nodes;
-use crate::ops::Registry;
 use crate::source::{Source, Span};
 use crate::syntax::ast::Program;
 use env::Store;
+use registry::Registry;
 use std::io::Write;
 use std::rc::Rc;
 

@@ -10,7 +10,7 @@ use crate::value::{Ty, Value};
 use std::rc::Rc;
 
 use super::env::Frame;
-use super::machine::GroupState;
+use super::tokens::GroupState;
 
 impl Interp {
     pub fn call_proc(&mut self, p: Rc<ProcDef>, st: &mut GroupState, span: Span) -> Result<Vec<Value>> {
@@ -132,7 +132,7 @@ fn missing(proc_name: &str, p: &Param) -> Error {
 
 /// One argument of a given type, read like an operator's: among the
 /// pushed operands first (oldest first), else in the right window.
-fn take_param(st: &mut GroupState, p: &Param, registry: &crate::ops::Registry) -> Result<Option<Value>> {
+fn take_param(st: &mut GroupState, p: &Param, registry: &super::registry::Registry) -> Result<Option<Value>> {
     let want = match &p.ty {
         Some(t) => Some(Ty::from_name(t).ok_or_else(|| Error::runtime(format!("unknown type {} for {}", t, p.name)))?),
         None => None,
@@ -142,7 +142,7 @@ fn take_param(st: &mut GroupState, p: &Param, registry: &crate::ops::Registry) -
         Some(Ty::Flottant) => v.is_number(),
         Some(t) => v.ty() == t,
     };
-    Ok(crate::ops::take_typed(st, registry, |v| fits(v).then(|| v.clone())).map(|v| coerce(v, want)))
+    Ok(super::args::take_typed(st, registry, |v| fits(v).then(|| v.clone())).map(|v| coerce(v, want)))
 }
 
 fn coerce(v: Value, want: Option<Ty>) -> Value {

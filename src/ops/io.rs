@@ -194,7 +194,7 @@ fn list(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let name = a.next_name_span().map(|sp| it.source.slice(sp).to_uppercase());
     match a.opt::<Value>() {
         Some(v) => {
-            let text = list_value(it, name.as_deref(), &v);
+            let text = list_value(&it.nodes, it.opts.dime, name.as_deref(), &v);
             it.println(&text);
         }
         None => {

@@ -1,13 +1,12 @@
 //! LIST text for the finite-element objects.
 
 use super::{fmt_float, Value};
-use crate::eval::Interp;
 
 /// At most this many lines of values per object, so LIST of a big field
 /// stays readable.
 const MAX_LINES: usize = 20;
 
-pub fn describe(it: &Interp, v: &Value) -> String {
+pub fn describe(v: &Value) -> String {
     match v {
         Value::Mesh(m) => {
             let parts: Vec<String> = m
@@ -99,10 +98,7 @@ pub fn describe(it: &Interp, v: &Value) -> String {
             }
             s
         }
-        other => {
-            let _ = it;
-            other.type_name()
-        }
+        other => other.type_name(),
     }
 }
 

@@ -2,7 +2,7 @@
 //! format, so transcripts can be snapshotted.
 
 use super::{Table, Value};
-use crate::eval::Interp;
+use crate::fem::mesh::Nodes;
 
 /// Cast3M's 1PE12.5 layout without padding: `1.23457E+02`.
 pub fn fmt_float(x: f64) -> String {
@@ -36,8 +36,9 @@ fn floats(l: &[f64]) -> String {
     l.iter().map(|x| fmt_float(*x)).collect::<Vec<_>>().join(" ")
 }
 
-/// What LIST prints for one object.
-pub fn list_value(it: &Interp, name: Option<&str>, v: &Value) -> String {
+/// What LIST prints for one object (a POINT by its coordinates in the
+/// node table, the first `dime` of them).
+pub fn list_value(nodes: &Nodes, dime: usize, name: Option<&str>, v: &Value) -> String {
     let head = match name {
         Some(n) => format!("{} ({})", n, v.type_name()),
         None => v.type_name(),
@@ -45,8 +46,8 @@ pub fn list_value(it: &Interp, name: Option<&str>, v: &Value) -> String {
     let body = match v {
         Value::Int(_) | Value::Float(_) | Value::Mot(_) | Value::Bool(_) => list_value_short(v),
         Value::Point(p) => {
-            let x = it.nodes.get(*p);
-            let d = it.opts.dime.max(1);
+            let x = nodes.get(*p);
+            let d = dime.max(1);
             format!("node {}: {}", p + 1, floats(&x[..d]))
         }
         Value::ListReel(l) => format!("{} value(s): {}", l.len(), floats(l)),
@@ -58,7 +59,7 @@ pub fn list_value(it: &Interp, name: Option<&str>, v: &Value) -> String {
         Value::Proc(p) => format!("procedure {} ({} parameter(s))", p.name, p.params.len()),
         Value::Bloc(n) => format!("block {}", n),
         Value::Host(h) => h.describe(),
-        other => super::describe::describe(it, other),
+        other => super::describe::describe(other),
     };
     format!("{}: {}", head, body)
 }

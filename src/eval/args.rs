@@ -12,9 +12,9 @@
 //! The `_right` and `_next` readers look at the next token only, for
 //! operators that read a sequence in order (PROG, MOTS).
 
-use super::{OpSpec, Registry};
+use super::registry::{OpSpec, Registry};
+use super::tokens::{GroupState, Tok, TokKind};
 use crate::error::{Error, Result};
-use crate::eval::machine::{GroupState, Tok, TokKind};
 use crate::fem::mesh::Mesh;
 use crate::source::Span;
 use crate::value::{Chpoint, Evolution, Mchaml, Model, Rigidite, Table, Value};
@@ -68,7 +68,7 @@ from_arg!(Rc<Evolution>, "EVOLUTIO", Value::Evol(e) => e.clone());
 pub struct Num(pub f64);
 from_arg!(Num, "FLOTTANT", Value::Float(f) => Num(*f));
 impl Num {
-    fn accept(v: &Value) -> Option<Num> {
+    pub(crate) fn accept(v: &Value) -> Option<Num> {
         v.as_f64().map(Num)
     }
 }
