@@ -65,3 +65,28 @@ fn float_division_by_zero_and_nan_powers() {
     assert_eq!(g.get_f64("x"), Some(64.0));
     assert_eq!(g.get_f64("z"), Some(0.5));
 }
+
+/// The evaluator's fast path (purely numeric instructions) and the
+/// operators (the same instruction with an operator call in it) give the
+/// same error: same message and notes, at the same operator.
+#[test]
+fn fast_path_and_operators_give_the_same_errors() {
+    for (fast, machine) in [
+        ("x = 1.e308 * 10. ;", "x = 1.e308 * (flot 10) ;"),
+        ("x = 7. / 0. ;", "x = 7. / (flot 0) ;"),
+        ("x = 7 / 0 ;", "x = 7 / (enti 0) ;"),
+        ("x = (-8.) ** 0.5 ;", "x = (-8.) ** (flot 0.5) ;"),
+        ("x = 1.e309 ; y = x - x ;", "x = 1.e309 ; y = x - (flot x) ;"),
+        ("x = 2 ** 5000 ;", "x = 2 ** (enti 5000) ;"),
+    ] {
+        let err = |src: &str| Interpreter::new().run_str("t", src).expect_err(src);
+        let (f, m) = (err(fast), err(machine));
+        assert_eq!(f.message, m.message, "{fast}");
+        assert_eq!(f.notes, m.notes, "{fast}");
+        let at = |src: &str, e: &gibi::Error| {
+            let s = e.span.unwrap();
+            src[s.start as usize..s.end as usize].to_string()
+        };
+        assert_eq!(at(fast, &f), at(machine, &m), "{fast}");
+    }
+}

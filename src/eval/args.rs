@@ -105,7 +105,7 @@ impl<'a> Args<'a> {
 
     /// `OP: message` with the operator's usage as a note.
     pub fn err(&self, msg: impl std::fmt::Display) -> Error {
-        Error::runtime(format!("{}: {}", self.op.name, msg)).note(format!("usage: {}", self.op.signature))
+        operator_error(self.op, msg)
     }
 
     /// A required argument is missing: says what was found instead.
@@ -340,6 +340,12 @@ impl<'a> Args<'a> {
     pub fn opt_mot(&mut self) -> Option<String> {
         self.opt::<String>()
     }
+}
+
+/// The error of an operator: `OP: message`, with its usage as a note. The
+/// evaluator's fast path words the errors of `+ - * / **` through it too.
+pub fn operator_error(op: &OpSpec, msg: impl std::fmt::Display) -> Error {
+    Error::runtime(format!("{}: {}", op.name, msg)).note(format!("usage: {}", op.signature))
 }
 
 /// Whether a right token ends an operator's window: a symbol, an operator

@@ -135,9 +135,15 @@ impl Interp {
         self.echo(ins);
         if let [t] = ins.targets.as_slice() {
             if t.keys.is_empty() && t.typed.is_none() {
-                if let Some(v) = self.fast_value(&ins.items) {
-                    self.store.set(&t.name, v);
-                    return Ok(());
+                match self.fast_value(&ins.items) {
+                    Some(Ok(v)) => {
+                        self.store.set(&t.name, v);
+                        return Ok(());
+                    }
+                    Some(Err(e)) => {
+                        return Err(self.with_objects(e.with_span_if_missing(ins.span, &self.source), &ins.items))
+                    }
+                    None => {}
                 }
             }
         }

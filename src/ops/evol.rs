@@ -94,11 +94,7 @@ fn along_line(it: &Interp, a: &mut Args) -> Result<Curve> {
 
 /// EXTR on an EVOLUTIO: `'ABSC' (n)`, `'ORDO' (n)` (lists of curve n,
 /// 1 by default), `'LEGE' (n)` (its legend), `'COUR' n` (curve n alone).
-/// None when the argument is not an EVOLUTIO.
-pub(crate) fn extr(a: &mut Args) -> Result<Option<Vec<Value>>> {
-    let Some(ev) = a.opt::<Rc<Evolution>>() else {
-        return Ok(None);
-    };
+pub(crate) fn extr(a: &mut Args, ev: &Evolution) -> Result<Vec<Value>> {
     let k = a.req_keyword(&["ABSC", "ORDO", "LEGE", "COUR"])?;
     let n = a.opt::<i64>();
     if k == "COUR" && n.is_none() {
@@ -111,10 +107,10 @@ pub(crate) fn extr(a: &mut Args) -> Result<Option<Vec<Value>>> {
         .and_then(|i| i.checked_sub(1))
         .and_then(|i| ev.curves.get(i))
         .ok_or_else(|| a.err(format!("curve {} does not exist (the object has {})", n, count)))?;
-    Ok(Some(vec![match k {
+    Ok(vec![match k {
         "ABSC" => Value::ListReel(Rc::new(c.x.clone())),
         "ORDO" => Value::ListReel(Rc::new(c.y.clone())),
         "LEGE" => Value::mot(&c.legend),
         _ => Value::Evol(Rc::new(Evolution { curves: vec![c.clone()] })),
-    }]))
+    }])
 }

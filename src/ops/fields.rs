@@ -1,10 +1,9 @@
 //! Node fields (CHPOINT): loads, extraction, renaming, algebra, and the
 //! matrix-vector product `RIGIDITE * CHPOINT`.
 
-use super::arith::Bin;
 use super::mesh::req_geo;
 use super::{dofs, Args, OpDef, PointId};
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::eval::Interp;
 use crate::fem::mesh::Mesh;
 use crate::value::{Chpoint, Mchaml, Model, Nature, Rigidite, Value};
@@ -38,14 +37,6 @@ pub(crate) const OPS: &[OpDef] = &[
         doc: "Rename components.",
         example: "c = nomc 'UX' (coor 1 l) ;",
         f: nomc,
-    },
-    OpDef {
-        name: "ENLE",
-        signature: "ENLE CHPOINT COMP|LISTMOTS | ENLE LISTREEL|LISTENTI|LISTMOTS I|LISTENTI | ENLE TABLE KEY",
-        doc:
-            "Remove components of a field, the items of a list at the given places, or a key (in a copy of the table).",
-        example: "u2 = enle u 'LX' ;",
-        f: enle,
     },
     OpDef { name: "XTX", signature: "XTX CHPOINT", doc: "Squared norm of a field.", example: "n = xtx r ;", f: xtx },
     OpDef {
@@ -212,16 +203,8 @@ fn nomc(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     Ok(vec![Value::Chpo(Rc::new(out))])
 }
 
-fn enle(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let Some(ch) = a.find::<Rc<Chpoint>>() else {
-        if let Some(r) = super::lists::enle(a)? {
-            return Ok(r);
-        }
-        if let Some(r) = super::tables::enle(a)? {
-            return Ok(r);
-        }
-        return Err(a.missing("CHPOINT, a list or a TABLE"));
-    };
+/// `ENLE CHPOINT COMP|LISTMOTS`: the field without those components.
+pub(crate) fn enle_components(a: &mut Args, ch: &Chpoint) -> Result<Vec<Value>> {
     let comps = comp_list(a).ok_or_else(|| a.missing("components to remove"))?;
     let out = Chpoint::from_entries(ch.nature, ch.entries().filter(|(_, c, _)| !comps.iter().any(|x| x == c)));
     Ok(vec![Value::Chpo(Rc::new(out))])
@@ -275,131 +258,6 @@ fn resu(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     Ok(vec![Value::Chpo(Rc::new(out))])
 }
 
-// ---- algebra reached through the generic operators ----------------------
-
-fn combine(x: &Chpoint, y: &Chpoint, f: impl Fn(f64, f64) -> f64) -> Chpoint {
-    let nature = if x.nature == Nature::Discret && y.nature == Nature::Discret { Nature::Discret } else { x.nature };
-    let mut out = Chpoint::new(nature);
-    for (n, c, v) in x.entries() {
-        out.add(n, c, f(v, y.get(n, c).unwrap_or(0.0)), false);
-    }
-    for (n, c, v) in y.entries() {
-        if x.get(n, c).is_none() {
-            out.add(n, c, f(0.0, v), false);
-        }
-    }
-    out
-}
-
-/// Product of two fields: a single-component SCAL field multiplies every
-/// component of the other (aaa2.notice); otherwise component by component.
-fn product(x: &Chpoint, y: &Chpoint, div: bool) -> Chpoint {
-    let op = |p: f64, q: f64| if div { p / q } else { p * q };
-    let scal = |c: &Chpoint| c.components() == ["SCAL"];
-    let mut out = Chpoint::new(x.nature);
-    if scal(y) && !scal(x) {
-        for (n, c, v) in x.entries() {
-            if let Some(s) = y.get(n, "SCAL") {
-                out.add(n, c, op(v, s), false);
-            }
-        }
-    } else if scal(x) && !scal(y) && !div {
-        for (n, c, v) in y.entries() {
-            if let Some(s) = x.get(n, "SCAL") {
-                out.add(n, c, s * v, false);
-            }
-        }
-    } else {
-        for (n, c, v) in x.entries() {
-            if let Some(w) = y.get(n, c) {
-                out.add(n, c, op(v, w), false);
-            }
-        }
-    }
-    out
-}
-
-pub(crate) fn binary(op: Bin, x: &Value, y: &Value) -> Option<std::result::Result<Value, String>> {
-    use Value::*;
-    let f = |p: f64, q: f64| super::arith::float_op(op, p, q);
-    Some(Ok(match (x, y) {
-        (Chpo(a), Chpo(b)) => match op {
-            Bin::Add | Bin::Sub => Chpo(Rc::new(combine(a, b, f))),
-            Bin::Mul | Bin::Div => Chpo(Rc::new(product(a, b, op == Bin::Div))),
-            Bin::Pow => return Some(Err("no power of two fields".into())),
-        },
-        (Chpo(a), Int(_) | Float(_)) => {
-            let s = y.as_f64().unwrap_or(0.0);
-            Chpo(Rc::new(a.map(|v| f(v, s))))
-        }
-        (Int(_) | Float(_), Chpo(b)) => {
-            let s = x.as_f64().unwrap_or(0.0);
-            Chpo(Rc::new(b.map(|v| f(s, v))))
-        }
-        (Rigi(r), Chpo(u)) | (Chpo(u), Rigi(r)) if op == Bin::Mul => Chpo(Rc::new(r.matvec(u))),
-        (Rigi(r), Int(_) | Float(_)) if op == Bin::Mul => Rigi(Rc::new(r.scaled(y.as_f64().unwrap_or(0.0)))),
-        (Int(_) | Float(_), Rigi(r)) if op == Bin::Mul => Rigi(Rc::new(r.scaled(x.as_f64().unwrap_or(0.0)))),
-        (Rigi(r), Rigi(s)) if op == Bin::Add => Rigi(Rc::new(r.union(s))),
-        (Rigi(r), Rigi(s)) if op == Bin::Sub => Rigi(Rc::new(r.union(&s.scaled(-1.0)))),
-        _ => return None,
-    }))
-}
-
-pub(crate) fn union(x: &Value, y: &Value, noer: bool) -> Option<std::result::Result<Value, String>> {
-    use Value::*;
-    Some(Ok(match (x, y) {
-        (Chpo(a), Chpo(b)) => match merge_fields(a, b, noer) {
-            Ok(c) => Chpo(Rc::new(c)),
-            Err(e) => return Some(Err(e)),
-        },
-        (Rigi(a), Rigi(b)) => Rigi(Rc::new(a.union(b))),
-        (Model(a), Model(b)) => {
-            Model(Rc::new(crate::value::Model { zones: a.zones.iter().chain(b.zones.iter()).cloned().collect() }))
-        }
-        (Mchaml(a), Mchaml(b)) => Mchaml(Rc::new(merge_mchaml(a, b))),
-        _ => return None,
-    }))
-}
-
-fn merge_fields(a: &Chpoint, b: &Chpoint, noer: bool) -> std::result::Result<Chpoint, String> {
-    let diffus = a.nature != Nature::Discret || b.nature != Nature::Discret;
-    let nature =
-        if diffus && (a.nature == Nature::Diffus || b.nature == Nature::Diffus) { Nature::Diffus } else { a.nature };
-    let mut out = a.clone();
-    out.nature = nature;
-    for (n, c, v) in b.entries() {
-        match a.get(n, c) {
-            Some(w) if diffus => {
-                if !noer && (v - w).abs() > 1e-10 * v.abs().max(w.abs()).max(1e-300) {
-                    return Err(format!(
-                        "DIFFUS fields disagree at node {} on {} ({} and {}); use 'NOER' to keep the first",
-                        n + 1,
-                        c,
-                        w,
-                        v
-                    ));
-                }
-            }
-            _ => out.add(n, c, v, !diffus),
-        }
-    }
-    Ok(out)
-}
-
-fn merge_mchaml(a: &Mchaml, b: &Mchaml) -> Mchaml {
-    let mut out = a.clone();
-    for z in &b.zones {
-        match out.zones.iter_mut().find(|x| x.mesh == z.mesh && x.values.is_empty() && z.values.is_empty()) {
-            Some(x) => {
-                x.constants.extend(z.constants.clone());
-                x.vectors.extend(z.vectors.clone());
-            }
-            None => out.zones.push(z.clone()),
-        }
-    }
-    out
-}
-
 /// MAXI/MINI of a field ('ABS', 'AVEC'/'SANS' components).
 pub(crate) fn extremum(a: &mut Args, max: bool, use_abs: bool) -> Result<Option<Value>> {
     let vals: Vec<f64> = if let Some(ch) = a.opt::<Rc<Chpoint>>() {
@@ -440,68 +298,54 @@ pub(crate) fn extremum(a: &mut Args, max: bool, use_abs: bool) -> Result<Option<
     r.map(|v| Some(Value::Float(v))).ok_or_else(|| a.err("the field is empty"))
 }
 
-/// EXTR on a field, a rigidity, an element field or a model.
-pub(crate) fn extr(it: &mut Interp, a: &mut Args) -> Result<Option<Vec<Value>>> {
-    // `EXTR 'UX' u p` as well as `EXTR u 'UX' p`.
-    if let Some(ch) = a.find::<Rc<Chpoint>>() {
-        return extr_chpo(it, a, &ch).map(Some);
-    }
-    if let Some(h) = a.peek_right().filter(|v| matches!(v, Value::Host(_))) {
-        a.right_any();
-        return super::superele::extr(a, &h);
-    }
-    if let Some(ch) = a.opt::<Rc<Chpoint>>() {
-        return extr_chpo(it, a, &ch).map(Some);
-    }
-    if let Some(r) = a.opt::<Rc<Rigidite>>() {
-        return extr_rigi(a, &r).map(Some);
-    }
-    if let Some(m) = a.opt::<Rc<Mchaml>>() {
-        if a.keyword_next(&["COMP"]).is_some() {
-            // The component names, every zone's, each once.
-            let mut names: Vec<String> = Vec::new();
-            for z in &m.zones {
-                for c in z.comps.iter().chain(z.constants.keys()) {
-                    if !names.contains(c) {
-                        names.push(c.clone());
-                    }
+/// EXTR on an element field: `'COMP'` (the component names), or one value
+/// `COMP (zone (element (point)))`.
+pub(crate) fn extr_mchaml(a: &mut Args, m: &Mchaml) -> Result<Vec<Value>> {
+    if a.keyword_next(&["COMP"]).is_some() {
+        // The component names, every zone's, each once.
+        let mut names: Vec<String> = Vec::new();
+        for z in &m.zones {
+            for c in z.comps.iter().chain(z.constants.keys()) {
+                if !names.contains(c) {
+                    names.push(c.clone());
                 }
             }
-            return Ok(Some(vec![Value::ListMots(Rc::new(names))]));
         }
-        let comp = a.word_not_operator().ok_or_else(|| a.missing("a component"))?;
-        let mut idx = [1i64; 3];
-        for k in idx.iter_mut() {
-            match a.opt::<i64>() {
-                Some(v) => *k = v,
-                None => break,
-            }
-        }
-        let z = m.zones.get((idx[0] - 1).max(0) as usize).ok_or_else(|| a.err(format!("no zone {}", idx[0])))?;
-        if let Some(v) = z.constants.get(&comp) {
-            return Ok(Some(vec![Value::Float(*v)]));
-        }
-        let c = z
-            .comps
-            .iter()
-            .position(|x| *x == comp)
-            .ok_or_else(|| a.err(format!("the field has no component {} (it has {})", comp, z.comps.join(" "))))?;
-        let e = z.values.get((idx[1] - 1).max(0) as usize).ok_or_else(|| a.err(format!("no element {}", idx[1])))?;
-        let p = e.get((idx[2] - 1).max(0) as usize).ok_or_else(|| a.err(format!("no point {}", idx[2])))?;
-        return Ok(Some(vec![Value::Float(p[c])]));
+        return Ok(vec![Value::ListMots(Rc::new(names))]);
     }
-    if let Some(m) = a.opt::<Rc<Model>>() {
-        a.keyword(&["MAIL"]);
-        let mut mesh = Mesh::default();
-        for z in &m.zones {
-            mesh = mesh.union(&z.mesh);
+    let comp = a.word_not_operator().ok_or_else(|| a.missing("a component"))?;
+    let mut idx = [1i64; 3];
+    for k in idx.iter_mut() {
+        match a.opt::<i64>() {
+            Some(v) => *k = v,
+            None => break,
         }
-        return Ok(Some(vec![Value::Mesh(Rc::new(mesh))]));
     }
-    Ok(None)
+    let z = m.zones.get((idx[0] - 1).max(0) as usize).ok_or_else(|| a.err(format!("no zone {}", idx[0])))?;
+    if let Some(v) = z.constants.get(&comp) {
+        return Ok(vec![Value::Float(*v)]);
+    }
+    let c = z
+        .comps
+        .iter()
+        .position(|x| *x == comp)
+        .ok_or_else(|| a.err(format!("the field has no component {} (it has {})", comp, z.comps.join(" "))))?;
+    let e = z.values.get((idx[1] - 1).max(0) as usize).ok_or_else(|| a.err(format!("no element {}", idx[1])))?;
+    let p = e.get((idx[2] - 1).max(0) as usize).ok_or_else(|| a.err(format!("no point {}", idx[2])))?;
+    Ok(vec![Value::Float(p[c])])
 }
 
-fn extr_chpo(it: &Interp, a: &mut Args, ch: &Chpoint) -> Result<Vec<Value>> {
+/// EXTR on a model: its mesh (`'MAIL'`).
+pub(crate) fn extr_model(a: &mut Args, m: &Model) -> Result<Vec<Value>> {
+    a.keyword(&["MAIL"]);
+    let mut mesh = Mesh::default();
+    for z in &m.zones {
+        mesh = mesh.union(&z.mesh);
+    }
+    Ok(vec![Value::Mesh(Rc::new(mesh))])
+}
+
+pub(crate) fn extr_chpo(it: &Interp, a: &mut Args, ch: &Chpoint) -> Result<Vec<Value>> {
     if let Some(k) = a.keyword(&["MAIL", "VALE", "COMP", "NATU"]) {
         return Ok(vec![match k {
             "MAIL" => {
@@ -551,7 +395,7 @@ fn extr_chpo(it: &Interp, a: &mut Args, ch: &Chpoint) -> Result<Vec<Value>> {
     Ok(vec![Value::Float(v.unwrap_or(0.0))])
 }
 
-fn extr_rigi(a: &mut Args, r: &Rigidite) -> Result<Vec<Value>> {
+pub(crate) fn extr_rigi(a: &mut Args, r: &Rigidite) -> Result<Vec<Value>> {
     match a.req_keyword(&["MAIL", "COMP", "DIAG", "CONT"])? {
         // The unilateral solver's table of the last RESO/UNIL of this
         // object (the TABLE UNIL returns).
@@ -572,20 +416,3 @@ fn extr_rigi(a: &mut Args, r: &Rigidite) -> Result<Vec<Value>> {
         _ => Ok(vec![Value::Chpo(Rc::new(r.diagonal()))]),
     }
 }
-
-/// DIME of a RIGIDITE: the number of its unknowns (primal and LX).
-pub(crate) fn dime(v: &Value) -> Option<i64> {
-    match v {
-        Value::Rigi(r) => Some(r.n_unknowns() as i64),
-        Value::Chpo(c) => Some(c.len() as i64),
-        Value::Evol(e) => Some(e.curves.len() as i64),
-        _ => None,
-    }
-}
-
-pub(crate) fn to_err(a: &Args, r: std::result::Result<Value, String>) -> Result<Value> {
-    r.map_err(|e| a.err(e))
-}
-
-#[allow(dead_code)]
-fn unused(_: Error) {}

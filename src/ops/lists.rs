@@ -1,4 +1,5 @@
-//! Lists: PROG, LECT, MOTS, SUIT (LISTCHPO), EXTR, ORDO, DIME.
+//! Lists: PROG, LECT, MOTS, SUIT (LISTCHPO), ORDO, DIME, SOMM, POSI, and
+//! what EXTR and ENLE do with a list or a word (`extract.rs` dispatches).
 
 use super::{limits, Args, FromArg, OpDef};
 use crate::error::Result;
@@ -34,13 +35,6 @@ pub(crate) const OPS: &[OpDef] = &[
         doc: "Build a LISTCHPO (ordered list of fields, e.g. load cases for RESO); empty without arguments. Grow it with ET, read it with DIME and EXTR.",
         example: "lf = suit f1 f2 f3 ;",
         f: suit,
-    },
-    OpDef {
-        name: "EXTR",
-        signature: "EXTR LISTREEL|LISTENTI|LISTMOTS|LISTCHPO I | LIST LISTENTI | MOT I J | CHPOINT COMP POINT | EVOLUTIO 'ABSC'|'ORDO' (N) | …",
-        doc: "Extract a part of an object (list element, I from 1; sub-list at the places of a LISTENTI; substring; field value; curve N's lists; …).",
-        example: "x = extr l 2 ;",
-        f: extr,
     },
     OpDef {
         name: "ORDO",
@@ -171,44 +165,35 @@ fn short(w: &str) -> String {
     w.chars().take(4).collect::<String>().trim_end().to_string()
 }
 
-fn extr(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    if let Some(v) = crate::ops::fieldfn::extr(it, a)? {
-        return Ok(v);
-    }
-    // The list is the first list operand in the order written, whatever its
-    // type: `EXTR (MOTS 'A' 'B') (LECT 2)` must not take the LISTENTI of
-    // places for the list because LISTENTI is tried before LISTMOTS.
-    if let Some(AnyList(l)) = a.opt::<AnyList>() {
-        let idx = a.opt::<Rc<Vec<i64>>>();
-        return Ok(vec![match (l, idx) {
-            (Value::ListReel(l), Some(idx)) => Value::ListReel(Rc::new(sublist(a, &l, &idx)?)),
-            (Value::ListEnti(l), Some(idx)) => Value::ListEnti(Rc::new(sublist(a, &l, &idx)?)),
-            (Value::ListMots(l), Some(idx)) => Value::ListMots(Rc::new(sublist(a, &l, &idx)?)),
-            (Value::ListReel(l), None) => Value::Float(l[a.req_index(l.len())?]),
-            (Value::ListEnti(l), None) => Value::Int(l[a.req_index(l.len())?]),
-            (Value::ListMots(l), None) => Value::mot(&l[a.req_index(l.len())?]),
-            (other, _) => other,
-        }]);
-    }
-    if let Some(l) = a.opt::<Rc<Vec<Rc<Chpoint>>>>() {
-        let i = a.req_index(l.len())?;
-        return Ok(vec![Value::Chpo(l[i].clone())]);
-    }
-    if let Some(m) = a.opt::<String>() {
-        let chars: Vec<char> = m.chars().collect();
-        let i = a.req_index(chars.len())?;
-        let j = match a.opt::<i64>() {
-            Some(j) if j as usize > i && j as usize <= chars.len() => j as usize,
-            Some(j) => return Err(a.err(format!("end index {} is outside {}..{}", j, i + 1, chars.len()))),
-            None => i + 1,
-        };
-        return Ok(vec![Value::mot(chars[i..j].iter().collect::<String>())]);
-    }
-    Err(a.missing("an object to extract from"))
+/// EXTR on a list: the item at a place, or the sub-list at the places of
+/// a LISTENTI.
+pub(crate) fn extr_list(a: &mut Args, l: Value) -> Result<Vec<Value>> {
+    let idx = a.opt::<Rc<Vec<i64>>>();
+    Ok(vec![match (l, idx) {
+        (Value::ListReel(l), Some(idx)) => Value::ListReel(Rc::new(sublist(a, &l, &idx)?)),
+        (Value::ListEnti(l), Some(idx)) => Value::ListEnti(Rc::new(sublist(a, &l, &idx)?)),
+        (Value::ListMots(l), Some(idx)) => Value::ListMots(Rc::new(sublist(a, &l, &idx)?)),
+        (Value::ListReel(l), None) => Value::Float(l[a.req_index(l.len())?]),
+        (Value::ListEnti(l), None) => Value::Int(l[a.req_index(l.len())?]),
+        (Value::ListMots(l), None) => Value::mot(&l[a.req_index(l.len())?]),
+        (other, _) => other,
+    }])
+}
+
+/// EXTR on a word: the characters I (to J).
+pub(crate) fn extr_word(a: &mut Args, m: &str) -> Result<Vec<Value>> {
+    let chars: Vec<char> = m.chars().collect();
+    let i = a.req_index(chars.len())?;
+    let j = match a.opt::<i64>() {
+        Some(j) if j as usize > i && j as usize <= chars.len() => j as usize,
+        Some(j) => return Err(a.err(format!("end index {} is outside {}..{}", j, i + 1, chars.len()))),
+        None => i + 1,
+    };
+    Ok(vec![Value::mot(chars[i..j].iter().collect::<String>())])
 }
 
 /// A LISTREEL, LISTENTI or LISTMOTS argument.
-struct AnyList(Value);
+pub(crate) struct AnyList(pub Value);
 impl FromArg for AnyList {
     const EXPECT: &'static str = "LISTREEL, LISTENTI or LISTMOTS";
     fn from_value(v: &Value) -> Option<Self> {
@@ -285,9 +270,7 @@ fn sublist<T: Clone>(a: &Args, l: &[T], idx: &[i64]) -> Result<Vec<T>> {
 }
 
 /// `ENLE LIST I|LISTENTI`: the list without the items at those places.
-/// None when the argument is not a list.
-pub(crate) fn enle(a: &mut Args) -> Result<Option<Vec<Value>>> {
-    let Some(AnyList(l)) = a.opt::<AnyList>() else { return Ok(None) };
+pub(crate) fn enle(a: &mut Args, l: Value) -> Result<Vec<Value>> {
     let n = list_len(&l).unwrap_or(0);
     let places: Vec<i64> = match a.opt::<i64>() {
         Some(i) => vec![i],
@@ -301,12 +284,12 @@ pub(crate) fn enle(a: &mut Args) -> Result<Option<Vec<Value>>> {
         }
     }
     let pick = |k: &usize| keep[*k];
-    Ok(Some(vec![match l {
+    Ok(vec![match l {
         Value::ListReel(l) => Value::ListReel(Rc::new((0..n).filter(pick).map(|k| l[k]).collect())),
         Value::ListEnti(l) => Value::ListEnti(Rc::new((0..n).filter(pick).map(|k| l[k]).collect())),
         Value::ListMots(l) => Value::ListMots(Rc::new((0..n).filter(pick).map(|k| l[k].clone()).collect())),
         other => other,
-    }]))
+    }])
 }
 
 fn somm(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
@@ -344,9 +327,10 @@ fn dime(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         Value::ListChpo(l) => l.len() as i64,
         Value::Mot(s) => s.chars().count() as i64,
         Value::Table(t) => t.borrow().len() as i64,
-        other => {
-            crate::ops::fieldfn::dime(other).ok_or_else(|| a.err(format!("no size for a {}", other.type_name())))?
-        }
+        Value::Chpo(c) => c.len() as i64,
+        Value::Rigi(r) => r.n_unknowns() as i64,
+        Value::Evol(e) => e.curves.len() as i64,
+        other => return Err(a.err(format!("no size for a {}", other.type_name()))),
     };
     Ok(vec![Value::Int(n)])
 }

@@ -285,7 +285,7 @@ fn pi(_: &mut Interp, _: &mut Args) -> Result<Vec<Value>> {
     Ok(vec![Value::Float(std::f64::consts::PI)])
 }
 
-fn extremum(it: &mut Interp, a: &mut Args, max: bool) -> Result<Vec<Value>> {
+fn extremum(a: &mut Args, max: bool) -> Result<Vec<Value>> {
     let use_abs = a.keyword(&["ABS"]).is_some();
     let pick = |x: f64, y: f64| if max { x.max(y) } else { x.min(y) };
     let conv = |x: f64| if use_abs { x.abs() } else { x };
@@ -298,7 +298,7 @@ fn extremum(it: &mut Interp, a: &mut Args, max: bool) -> Result<Vec<Value>> {
         let v = if max { v.max() } else { v.min() };
         return Ok(vec![Value::Int(v.ok_or_else(|| a.err("empty list"))?)]);
     }
-    if let Some(r) = crate::ops::fieldfn::extremum(it, a, max, use_abs)? {
+    if let Some(r) = super::fields::extremum(a, max, use_abs)? {
         return Ok(vec![r]);
     }
     // Numbers: ENTIER when every one is (as for a LISTENTI), else FLOTTANT.
@@ -324,9 +324,9 @@ fn extremum(it: &mut Interp, a: &mut Args, max: bool) -> Result<Vec<Value>> {
     }
     Ok(vec![Value::Float(nums.iter().filter_map(Value::as_f64).map(conv).reduce(pick).unwrap_or(0.0))])
 }
-fn maxi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    extremum(it, a, true)
+fn maxi(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    extremum(a, true)
 }
-fn mini(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    extremum(it, a, false)
+fn mini(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    extremum(a, false)
 }

@@ -11,7 +11,7 @@ mod curves;
 mod dofs;
 mod evol;
 mod export;
-mod fieldfn;
+mod extract;
 mod fields;
 mod format;
 mod integrate;
@@ -54,6 +54,7 @@ impl Registry {
             arith::OPS,
             math::OPS,
             lists::OPS,
+            extract::OPS,
             objects::OPS,
             io::OPS,
             union::OPS,

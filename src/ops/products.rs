@@ -3,10 +3,11 @@
 //! over paired component lists; PVEC (vector product of two vectors); COLI
 //! (linear combination of fields).
 
-use super::arith::{self, Bin};
+use super::arith;
 use super::{Args, OpDef, PointId};
 use crate::error::Result;
 use crate::eval::Interp;
+use crate::value::arith::Bin;
 use crate::value::model::MchamlZone;
 use crate::value::{Chpoint, Mchaml, Value};
 use std::rc::Rc;
@@ -76,14 +77,14 @@ fn coli(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let mut sum: Option<Value> = None;
     while let Some(obj) = a.opt_with(field) {
         let w = a.opt_num().ok_or_else(|| a.missing("FLOTTANT (the weight of the field before it)"))?;
-        let term = arith::apply(it, a, Bin::Mul, Value::Float(w), obj)?;
+        let term = arith::apply(it, a, Bin::Mul, &Value::Float(w), &obj)?;
         sum = Some(match sum {
             None => term,
             Some(s) => {
                 if s.ty() != term.ty() {
                     return Err(a.err(format!("cannot combine a {} with a {}", s.type_name(), term.type_name())));
                 }
-                arith::apply(it, a, Bin::Add, s, term)?
+                arith::apply(it, a, Bin::Add, &s, &term)?
             }
         });
     }

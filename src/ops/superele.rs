@@ -122,8 +122,8 @@ fn build(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 /// EXTR SUP 'RIGI': the condensed stiffness as a RIGIDITE over the masters.
-pub(crate) fn extr(a: &mut Args, v: &Value) -> Result<Option<Vec<Value>>> {
-    let Some(s) = as_super(v) else { return Ok(None) };
+pub(crate) fn extr(a: &mut Args, v: &Value) -> Result<Vec<Value>> {
+    let Some(s) = as_super(v) else { return Err(a.err(format!("cannot extract from a {}", v.type_name()))) };
     let k = a.req_keyword(&["RIGI", "MAIL"])?;
     {
         let mut nodes: Vec<usize> = Vec::new();
@@ -133,7 +133,7 @@ pub(crate) fn extr(a: &mut Args, v: &Value) -> Result<Option<Vec<Value>>> {
             }
         }
         if k == "MAIL" {
-            return Ok(Some(vec![Value::Mesh(Rc::new(Mesh::points(&nodes)))]));
+            return Ok(vec![Value::Mesh(Rc::new(Mesh::points(&nodes)))]);
         }
         let m = s.schur.matrix();
         let d = s.masters.len();
@@ -152,7 +152,7 @@ pub(crate) fn extr(a: &mut Args, v: &Value) -> Result<Option<Vec<Value>>> {
             mats,
             symmetry: Symmetry::Symmetric,
         });
-        Ok(Some(vec![Value::Rigi(Rc::new(rig))]))
+        Ok(vec![Value::Rigi(Rc::new(rig))])
     }
 }
 

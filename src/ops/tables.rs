@@ -1,8 +1,7 @@
-//! Table utilities: INDE (the keys, so decks can loop over a table),
-//! entry-by-entry arithmetic on tables of subtype VECTEUR (aaa5.notice),
-//! ENLE of a key, and COPI (a new table with the same entries).
+//! Table utilities: INDE (the keys, so decks can loop over a table), ENLE
+//! of a key, and COPI (a new table with the same entries). The arithmetic
+//! of VECTEUR tables is a row of the `+ - * /` table (`arith::table`).
 
-use super::arith::{self, Bin};
 use super::{Args, OpDef};
 use crate::error::Result;
 use crate::eval::Interp;
@@ -93,100 +92,14 @@ fn inde(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     Ok(vec![Value::Table(Rc::new(RefCell::new(out)))])
 }
 
-fn subtype(t: &Table) -> Option<String> {
-    t.get(&Key::Mot("SOUSTYPE".into())).and_then(|v| v.as_mot()).map(|s| s.trim().to_uppercase())
-}
-
-fn is_vecteur(t: &Table) -> bool {
-    subtype(t).as_deref() == Some("VECTEUR")
-}
-
-/// `+ - * /` with a TABLE on either side; None when neither side is one.
-/// Two VECTEUR tables combine entry by entry (same keys); a VECTEUR table
-/// and a number scale or divide every entry. Entries combine by the same
-/// rules as any operands (numbers, fields, lists…).
-pub(crate) fn binary(it: &mut Interp, a: &Args, op: Bin, x: &Value, y: &Value) -> Option<Result<Value>> {
-    let (tx, ty) = match (x, y) {
-        (Value::Table(t), _) => (Some(t), if let Value::Table(u) = y { Some(u) } else { None }),
-        (_, Value::Table(u)) => (None, Some(u)),
-        _ => return None,
-    };
-    Some(vector_op(it, a, op, x, y, tx, ty))
-}
-
-fn vector_op(
-    it: &mut Interp,
-    a: &Args,
-    op: Bin,
-    x: &Value,
-    y: &Value,
-    tx: Option<&Rc<RefCell<Table>>>,
-    ty: Option<&Rc<RefCell<Table>>>,
-) -> Result<Value> {
-    for t in [tx, ty].into_iter().flatten() {
-        if !is_vecteur(&t.borrow()) {
-            return Err(a.err("arithmetic on tables needs tables of subtype VECTEUR (TABLE 'VECTEUR')"));
-        }
-    }
-    let soustype = Key::Mot("SOUSTYPE".into());
-    let mut out = Table::with_subtype("VECTEUR");
-    match (tx, ty) {
-        (Some(p), Some(q)) => {
-            if op == Bin::Pow {
-                return Err(a.err("no power of two tables"));
-            }
-            let (p, q) = (p.borrow().clone(), q.borrow().clone());
-            let keys = |t: &Table| t.iter().filter(|(k, _)| *k != soustype).map(|(k, _)| k.clone()).collect::<Vec<_>>();
-            let (kp, kq) = (keys(&p), keys(&q));
-            if let Some(k) = kp.iter().find(|k| !kq.contains(k)).or_else(|| kq.iter().find(|k| !kp.contains(k))) {
-                return Err(a.err(format!(
-                    "the tables do not have the same keys: {} is in only one of them",
-                    list_value_short(&k.to_value())
-                )));
-            }
-            for k in kp {
-                let (u, v) = (p.get(&k).cloned(), q.get(&k).cloned());
-                let r = arith::apply(it, a, op, u.unwrap_or(Value::Int(0)), v.unwrap_or(Value::Int(0)))?;
-                out.set(k, r);
-            }
-        }
-        (Some(t), None) | (None, Some(t)) => {
-            let scalar = if tx.is_some() { y } else { x };
-            let allowed = match op {
-                Bin::Mul => true,
-                Bin::Div => tx.is_some(),
-                _ => false,
-            };
-            if !scalar.is_number() || !allowed {
-                return Err(a.err(format!(
-                    "a VECTEUR table combines with another one, or is multiplied or divided by a number (found {})",
-                    scalar.type_name()
-                )));
-            }
-            let t = t.borrow().clone();
-            for (k, v) in t.iter().filter(|(k, _)| *k != soustype) {
-                let r = if tx.is_some() {
-                    arith::apply(it, a, op, v.clone(), scalar.clone())?
-                } else {
-                    arith::apply(it, a, op, scalar.clone(), v.clone())?
-                };
-                out.set(k.clone(), r);
-            }
-        }
-        (None, None) => unreachable!("binary() sees a table on one side"),
-    }
-    Ok(Value::Table(Rc::new(RefCell::new(out))))
-}
-
 /// `ENLE TABLE KEY`: a copy of the table without that key (OUBL removes
-/// it in place). None when the argument is not a table.
-pub(crate) fn enle(a: &mut Args) -> Result<Option<Vec<Value>>> {
-    let Some(t) = a.opt::<Rc<RefCell<Table>>>() else { return Ok(None) };
+/// it in place).
+pub(crate) fn enle(a: &mut Args, t: &RefCell<Table>) -> Result<Vec<Value>> {
     let k = a.right_any().ok_or_else(|| a.missing("a key"))?;
     let key = Key::from_value(&k);
     let mut copy = t.borrow().clone();
     if copy.remove(&key).is_none() {
         return Err(a.err(format!("the TABLE has no entry {}", list_value_short(&k))));
     }
-    Ok(Some(vec![Value::Table(Rc::new(RefCell::new(copy)))]))
+    Ok(vec![Value::Table(Rc::new(RefCell::new(copy)))])
 }

@@ -1,8 +1,7 @@
 //! ET: the overloaded union (language.md §5): logical AND, list and word
-//! concatenation, mesh union, field merge, rigidity assembly. Also the hook
-//! through which `+ - * /` reach fields and rigidities.
+//! concatenation, mesh union, field merge, rigidity assembly: one entry,
+//! every pair of types in one match, each object's own union in `value`.
 
-use super::arith::Bin;
 use super::{Args, OpDef};
 use crate::error::Result;
 use crate::eval::Interp;
@@ -28,7 +27,7 @@ fn et(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     Ok(vec![union(it, a, x, y, noer)?])
 }
 
-pub(crate) fn union(it: &mut Interp, a: &Args, x: Value, y: Value, noer: bool) -> Result<Value> {
+pub(crate) fn union(_: &mut Interp, a: &Args, x: Value, y: Value, noer: bool) -> Result<Value> {
     use Value::*;
     // `l = l ET l` in a loop doubles each pass: check before allocating.
     super::limits::check_len(a, item_count(&x).saturating_add(item_count(&y)))?;
@@ -75,10 +74,13 @@ pub(crate) fn union(it: &mut Interp, a: &Args, x: Value, y: Value, noer: bool) -
         (Point(_) | Mesh(_), Point(_) | Mesh(_)) => {
             Mesh(Rc::new(as_mesh(&x).unwrap_or_default().union(&as_mesh(&y).unwrap_or_default())))
         }
-        _ => match crate::ops::union::fields_union(it, a, &x, &y, noer)? {
-            Some(v) => v,
-            None => return Err(a.err(format!("cannot join {} and {}", x.type_name(), y.type_name()))),
-        },
+        (Chpo(p), Chpo(q)) => Chpo(Rc::new(p.merge(q, noer).map_err(|e| a.err(e))?)),
+        (Rigi(p), Rigi(q)) => Rigi(Rc::new(p.union(q))),
+        (Model(p), Model(q)) => {
+            Model(Rc::new(crate::value::Model { zones: p.zones.iter().chain(q.zones.iter()).cloned().collect() }))
+        }
+        (Mchaml(p), Mchaml(q)) => Mchaml(Rc::new(p.merge(q))),
+        _ => return Err(a.err(format!("cannot join {} and {}", x.type_name(), y.type_name()))),
     })
 }
 
@@ -100,24 +102,5 @@ pub(crate) fn as_mesh(v: &Value) -> Option<Mesh> {
         Value::Point(p) => Some(Mesh::points(&[*p])),
         Value::Mesh(m) => Some((**m).clone()),
         _ => None,
-    }
-}
-
-/// ET of FE objects (fields, rigidities, models, element fields).
-pub(crate) fn fields_union(_it: &mut Interp, a: &Args, x: &Value, y: &Value, noer: bool) -> Result<Option<Value>> {
-    match super::fields::union(x, y, noer) {
-        Some(r) => super::fields::to_err(a, r).map(Some),
-        None => Ok(None),
-    }
-}
-
-/// `+ - * /` on FE objects, curves and VECTEUR tables.
-pub(crate) fn fields_binary(it: &mut Interp, a: &Args, op: Bin, x: &Value, y: &Value) -> Result<Option<Value>> {
-    if let Some(r) = super::tables::binary(it, a, op, x, y) {
-        return r.map(Some);
-    }
-    match super::fields::binary(op, x, y).or_else(|| super::pointwise::binary(op, x, y)) {
-        Some(r) => super::fields::to_err(a, r).map(Some),
-        None => Ok(None),
     }
 }

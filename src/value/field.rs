@@ -141,3 +141,84 @@ impl Chpoint {
             .collect()
     }
 }
+
+/// The algebra of node fields: what `+ - * /` and `ET` do with two of them.
+impl Chpoint {
+    /// `x ± y`: the union of the supports, a value missing on one side
+    /// reading as 0. DISCRET only when both are.
+    pub fn combine(&self, y: &Chpoint, f: impl Fn(f64, f64) -> f64) -> Chpoint {
+        let nature =
+            if self.nature == Nature::Discret && y.nature == Nature::Discret { Nature::Discret } else { self.nature };
+        let mut out = Chpoint::new(nature);
+        for (n, c, v) in self.entries() {
+            out.add(n, c, f(v, y.get(n, c).unwrap_or(0.0)), false);
+        }
+        for (n, c, v) in y.entries() {
+            if self.get(n, c).is_none() {
+                out.add(n, c, f(0.0, v), false);
+            }
+        }
+        out
+    }
+
+    /// Product (or quotient) of two fields: a single-component SCAL field
+    /// multiplies every component of the other (aaa2.notice); otherwise
+    /// component by component, where both are defined.
+    pub fn product(&self, y: &Chpoint, div: bool) -> Chpoint {
+        let op = |p: f64, q: f64| if div { p / q } else { p * q };
+        let scal = |c: &Chpoint| c.components() == ["SCAL"];
+        let mut out = Chpoint::new(self.nature);
+        if scal(y) && !scal(self) {
+            for (n, c, v) in self.entries() {
+                if let Some(s) = y.get(n, "SCAL") {
+                    out.add(n, c, op(v, s), false);
+                }
+            }
+        } else if scal(self) && !scal(y) && !div {
+            for (n, c, v) in y.entries() {
+                if let Some(s) = self.get(n, "SCAL") {
+                    out.add(n, c, s * v, false);
+                }
+            }
+        } else {
+            for (n, c, v) in self.entries() {
+                if let Some(w) = y.get(n, c) {
+                    out.add(n, c, op(v, w), false);
+                }
+            }
+        }
+        out
+    }
+
+    /// `ET` of two fields (et.notice): DISCRET fields add up; where a
+    /// DIFFUS field is involved the values must agree where both are
+    /// defined (`noer`: the first one wins).
+    pub fn merge(&self, b: &Chpoint, noer: bool) -> Result<Chpoint, String> {
+        let a = self;
+        let diffus = a.nature != Nature::Discret || b.nature != Nature::Discret;
+        let nature = if diffus && (a.nature == Nature::Diffus || b.nature == Nature::Diffus) {
+            Nature::Diffus
+        } else {
+            a.nature
+        };
+        let mut out = a.clone();
+        out.nature = nature;
+        for (n, c, v) in b.entries() {
+            match a.get(n, c) {
+                Some(w) if diffus => {
+                    if !noer && (v - w).abs() > 1e-10 * v.abs().max(w.abs()).max(1e-300) {
+                        return Err(format!(
+                            "DIFFUS fields disagree at node {} on {} ({} and {}); use 'NOER' to keep the first",
+                            n + 1,
+                            c,
+                            w,
+                            v
+                        ));
+                    }
+                }
+                _ => out.add(n, c, v, !diffus),
+            }
+        }
+        Ok(out)
+    }
+}

@@ -3,6 +3,7 @@
 //! cheap to clone (big objects sit behind `Rc`); assignment never mutates an
 //! object, except TABLE which Gibiane mutates in place (`T . k = v`).
 
+pub mod arith;
 mod describe;
 mod display;
 pub mod field;

@@ -61,3 +61,101 @@ pub struct Curve {
     pub x: Vec<f64>,
     pub y: Vec<f64>,
 }
+
+impl Mchaml {
+    /// `f` applied to every value (constants and point values).
+    pub fn map(&self, f: &dyn Fn(f64) -> f64) -> Mchaml {
+        let mut out = self.clone();
+        for z in out.zones.iter_mut() {
+            for v in z.constants.values_mut() {
+                *v = f(*v);
+            }
+            for v in z.values.iter_mut().flatten().flatten() {
+                *v = f(*v);
+            }
+        }
+        out
+    }
+
+    /// Two element fields combine value by value when they have the same
+    /// layout (zones, elements, points, components), as fields made on one
+    /// model do.
+    pub fn combine(&self, b: &Mchaml, f: impl Fn(f64, f64) -> f64) -> Result<Mchaml, String> {
+        let shape = |z: &MchamlZone| {
+            (
+                z.comps.clone(),
+                z.values.iter().map(|e| e.len()).collect::<Vec<_>>(),
+                z.constants.keys().cloned().collect::<Vec<_>>(),
+            )
+        };
+        if self.zones.len() != b.zones.len() || self.zones.iter().zip(&b.zones).any(|(p, q)| shape(p) != shape(q)) {
+            return Err("the element fields do not have the same zones, elements and components".into());
+        }
+        let mut out = self.clone();
+        for (z, w) in out.zones.iter_mut().zip(&b.zones) {
+            for (k, v) in z.constants.iter_mut() {
+                *v = f(*v, w.constants[k]);
+            }
+            for (p, q) in z.values.iter_mut().flatten().flatten().zip(w.values.iter().flatten().flatten()) {
+                *p = f(*p, *q);
+            }
+        }
+        Ok(out)
+    }
+
+    /// `ET`: the zones of both; material data given on the same mesh in
+    /// two fields (MATE … ET CARA …) join into one zone.
+    pub fn merge(&self, b: &Mchaml) -> Mchaml {
+        let mut out = self.clone();
+        for z in &b.zones {
+            match out.zones.iter_mut().find(|x| x.mesh == z.mesh && x.values.is_empty() && z.values.is_empty()) {
+                Some(x) => {
+                    x.constants.extend(z.constants.clone());
+                    x.vectors.extend(z.vectors.clone());
+                }
+                None => out.zones.push(z.clone()),
+            }
+        }
+        out
+    }
+}
+
+impl Evolution {
+    /// Functions of a curve act on its ordinates.
+    pub fn map(&self, f: &dyn Fn(f64) -> f64) -> Evolution {
+        let mut out = self.clone();
+        for c in out.curves.iter_mut() {
+            for y in c.y.iter_mut() {
+                *y = f(*y);
+            }
+        }
+        out
+    }
+
+    /// Two curves combine point by point: same number of curves, same
+    /// abscissae (a curve is a function sampled at its abscissae; adding
+    /// two samplings of different points would need an interpolation the
+    /// deck did not ask for).
+    pub fn combine(&self, b: &Evolution, f: impl Fn(f64, f64) -> f64) -> Result<Evolution, String> {
+        if self.curves.len() != b.curves.len() {
+            return Err(format!("the curves do not match: {} curve(s) and {}", self.curves.len(), b.curves.len()));
+        }
+        let mut out = self.clone();
+        for (k, (c, d)) in out.curves.iter_mut().zip(&b.curves).enumerate() {
+            if !c.same_abscissae(d) {
+                return Err(format!("curve {} of each side does not have the same abscissae", k + 1));
+            }
+            for (p, q) in c.y.iter_mut().zip(&d.y) {
+                *p = f(*p, *q);
+            }
+        }
+        Ok(out)
+    }
+}
+
+impl Curve {
+    fn same_abscissae(&self, d: &Curve) -> bool {
+        let scale = self.x.iter().chain(&d.x).fold(0.0f64, |m, x| m.max(x.abs())).max(1e-300);
+        self.x.len() == d.x.len() && self.x.iter().zip(&d.x).all(|(p, q)| (p - q).abs() <= 1e-12 * scale)
+    }
+}

@@ -2,11 +2,15 @@
 //! pushed operand on their left, else read two operands on their right
 //! (`'-' 10 4`), so `1 + 2 * 3` is 9: there is no precedence.
 
-use super::{pointwise, Args, OpDef};
+mod table;
+
+pub(crate) use table::apply;
+
+use super::{Args, OpDef};
 use crate::error::Result;
 use crate::eval::Interp;
+use crate::value::arith::{self, Bin};
 use crate::value::Value;
-use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
     OpDef {
@@ -70,132 +74,16 @@ fn operands(a: &mut Args) -> Result<(Value, Value)> {
     Ok((x, y))
 }
 
-#[derive(Clone, Copy, PartialEq)]
-pub(crate) enum Bin {
-    Add,
-    Sub,
-    Mul,
-    Div,
-    Pow,
-}
-
-/// The operation on two FLOTTANTs: the one definition that every
-/// operand type (numbers, lists, points, fields, curves) applies.
-pub(crate) fn float_op(op: Bin, x: f64, y: f64) -> f64 {
-    match op {
-        Bin::Add => x + y,
-        Bin::Sub => x - y,
-        Bin::Mul => x * y,
-        Bin::Div => x / y,
-        Bin::Pow => x.powf(y),
-    }
-}
-
-fn int_op(a: &Args, op: Bin, x: i64, y: i64) -> Result<Value> {
-    let r = match op {
-        Bin::Add => x.checked_add(y),
-        Bin::Sub => x.checked_sub(y),
-        Bin::Mul => x.checked_mul(y),
-        Bin::Div => {
-            if y == 0 {
-                return Err(a.err("division of an ENTIER by zero"));
-            }
-            x.checked_div(y)
-        }
-        Bin::Pow => {
-            if y < 0 {
-                return Ok(Value::Float((x as f64).powf(y as f64)));
-            }
-            u32::try_from(y).ok().and_then(|e| x.checked_pow(e))
-        }
-    };
-    Ok(r.map(Value::Int).unwrap_or_else(|| Value::Float(float_op(op, x as f64, y as f64))))
-}
-
+/// `x op y` for the infix operators: a division by the number zero is
+/// refused before it is computed, the rule comes from the table, and a
+/// result that is not finite is an error naming the operation.
 fn binary(it: &mut Interp, a: &mut Args, op: Bin) -> Result<Vec<Value>> {
     let (x, y) = operands(a)?;
-    // A FLOTTANT divided by zero or a power with no real value would give
-    // inf or NaN, and a NaN passes every `SI (err > tol)` check: both are
-    // errors, as the division of an ENTIER by zero already is. (Purely
-    // numeric instructions take eval's fast path, which does not check yet.)
-    if op == Bin::Div && y.as_f64() == Some(0.0) && !matches!((&x, &y), (Value::Int(_), Value::Int(_))) {
-        return Err(a.err(format!("division of {} by zero", pointwise::describe(&x))));
+    if let Some(e) = arith::divides_by_zero(op, &x, &y) {
+        return Err(a.err(e));
     }
-    let r = apply(it, a, op, x.clone(), y.clone())?;
-    if matches!(op, Bin::Div | Bin::Pow) && pointwise::finite(&x) && pointwise::finite(&y) && !pointwise::finite(&r) {
-        let (dx, dy) = (pointwise::describe(&x), pointwise::describe(&y));
-        return Err(a.err(match op {
-            Bin::Div => format!("{} / {} divides by zero", dx, dy),
-            _ => format!("{} ** {} has no finite real value", dx, dy),
-        }));
-    }
-    Ok(vec![r])
-}
-
-pub(crate) fn apply(it: &mut Interp, a: &Args, op: Bin, x: Value, y: Value) -> Result<Value> {
-    use Value::*;
-    Ok(match (&x, &y) {
-        (Int(i), Int(j)) => int_op(a, op, *i, *j)?,
-        (Int(_) | Float(_), Int(_) | Float(_)) => {
-            Float(float_op(op, x.as_f64().unwrap_or(0.0), y.as_f64().unwrap_or(0.0)))
-        }
-        (ListReel(l), ListReel(m)) => {
-            if l.len() != m.len() {
-                return Err(a.err(format!("lists of different lengths ({} and {})", l.len(), m.len())));
-            }
-            ListReel(Rc::new(l.iter().zip(m.iter()).map(|(p, q)| float_op(op, *p, *q)).collect()))
-        }
-        (ListReel(l), Int(_) | Float(_)) => {
-            let s = y.as_f64().unwrap_or(0.0);
-            ListReel(Rc::new(l.iter().map(|p| float_op(op, *p, s)).collect()))
-        }
-        (Int(_) | Float(_), ListReel(l)) => {
-            let s = x.as_f64().unwrap_or(0.0);
-            ListReel(Rc::new(l.iter().map(|p| float_op(op, s, *p)).collect()))
-        }
-        (ListEnti(l), ListEnti(m)) if l.len() == m.len() => {
-            let mut out = Vec::with_capacity(l.len());
-            for (p, q) in l.iter().zip(m.iter()) {
-                match int_op(a, op, *p, *q)? {
-                    Int(v) => out.push(v),
-                    _ => return Err(a.err("integer overflow in a LISTENTI")),
-                }
-            }
-            ListEnti(Rc::new(out))
-        }
-        (ListEnti(l), Int(j)) => {
-            let mut out = Vec::with_capacity(l.len());
-            for p in l.iter() {
-                match int_op(a, op, *p, *j)? {
-                    Int(v) => out.push(v),
-                    _ => return Err(a.err("integer overflow in a LISTENTI")),
-                }
-            }
-            ListEnti(Rc::new(out))
-        }
-        (Point(p), Point(q)) if matches!(op, Bin::Add | Bin::Sub) => {
-            let (u, v) = (it.nodes.get(*p), it.nodes.get(*q));
-            let w = [0, 1, 2].map(|k| float_op(op, u[k], v[k]));
-            let d = it.nodes.density[*p];
-            Point(it.nodes.push(w, d))
-        }
-        (Point(p), Int(_) | Float(_)) if matches!(op, Bin::Mul | Bin::Div) => {
-            let s = y.as_f64().unwrap_or(0.0);
-            let u = it.nodes.get(*p);
-            let d = it.nodes.density[*p];
-            Point(it.nodes.push(u.map(|c| float_op(op, c, s)), d))
-        }
-        (Int(_) | Float(_), Point(p)) if op == Bin::Mul => {
-            let s = x.as_f64().unwrap_or(0.0);
-            let u = it.nodes.get(*p);
-            let d = it.nodes.density[*p];
-            Point(it.nodes.push(u.map(|c| c * s), d))
-        }
-        _ => match super::union::fields_binary(it, a, op, &x, &y)? {
-            Some(v) => v,
-            None => return Err(a.err(format!("cannot combine {} and {}", x.type_name(), y.type_name()))),
-        },
-    })
+    let r = table::apply(it, a, op, &x, &y)?;
+    Ok(vec![arith::check(op, &x, &y, r).map_err(|e| a.err(e))?])
 }
 
 fn plus(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
