@@ -13,7 +13,7 @@ mod proc;
 pub mod registry;
 pub mod tokens;
 
-pub use options::{FilePolicy, Options, Timers};
+pub use options::{Exports, FilePolicy, Options, Timers};
 
 use crate::error::{Error, ErrorKind, Result};
 use crate::fem::mesh::Nodes;
@@ -36,6 +36,8 @@ pub struct Interp {
     pub source: Rc<Source>,
     pub files: FilePolicy,
     pub timers: Timers,
+    /// The `.pvd` collection and the picture counter of SORT and TRAC.
+    pub exports: Exports,
     pub title: String,
     /// Set by `FIN ;`: the run is over.
     pub finished: bool,
@@ -110,6 +112,7 @@ impl Interp {
             source: Source::new("<none>", ""),
             files: FilePolicy::Nothing,
             timers: Timers::default(),
+            exports: Exports::default(),
             title: String::new(),
             finished: false,
             called_proc: false,

@@ -1,4 +1,5 @@
-//! OPTI settings, the file-access policy and per-operator timing (TEMP).
+//! OPTI settings, the file-access policy, per-operator timing (TEMP) and
+//! the state the export operators keep between calls.
 
 use crate::error::{Error, Result};
 use std::collections::BTreeMap;
@@ -39,6 +40,17 @@ impl Default for Options {
             other: BTreeMap::new(),
         }
     }
+}
+
+/// What the export operators remember between calls.
+#[derive(Debug, Clone, Default)]
+pub struct Exports {
+    /// The `.pvd` collection being written by `SORT 'VTK' … 'TEMPS' t`:
+    /// its base name and its steps so far (time, `.vtu` file). A new base
+    /// name starts a new collection.
+    pub pvd: Option<(String, Vec<(f64, String)>)>,
+    /// Pictures drawn without an OPTI SORT name (`gibi_trac_N`).
+    pub pictures: u64,
 }
 
 /// Where a script may read or write files. The library allows nothing by

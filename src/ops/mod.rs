@@ -22,6 +22,8 @@ mod manu;
 mod masq;
 mod math;
 mod mesh;
+mod mesh_edit;
+mod mesh_query;
 mod model;
 mod objects;
 mod pointwise;
@@ -59,6 +61,8 @@ impl Registry {
             io::OPS,
             union::OPS,
             mesh::OPS,
+            mesh_query::OPS,
+            mesh_edit::OPS,
             transform::OPS,
             colour::OPS,
             bc::OPS,

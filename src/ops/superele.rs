@@ -5,11 +5,10 @@
 
 use super::assemble::{self, explain, solution_field, Assembled};
 use super::{dofs, Args, OpDef};
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::eval::Interp;
 use crate::fem::mesh::Mesh;
 use crate::solve::bilateral::schur::{schur_onto, SchurOnto};
-use crate::solve::Load;
 use crate::value::rigidity::{Block, Subtype, Symmetry};
 use crate::value::{Chpoint, HostObject, Nature, Rigidite, Value};
 use std::any::Any;
@@ -155,6 +154,3 @@ pub(crate) fn extr(a: &mut Args, v: &Value) -> Result<Vec<Value>> {
         Ok(vec![Value::Rigi(Rc::new(rig))])
     }
 }
-
-#[allow(dead_code)]
-fn unused(_: Error, _: Load) {}

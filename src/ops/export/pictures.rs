@@ -1,0 +1,180 @@
+//! Pictures: TRAC (meshes, or a nodal field on its mesh), DESS (curves)
+//! as SVG or PNG files, and VECT, the arrows object decks hand to TRAC.
+
+use super::{io_err, out_path, sort_base};
+use crate::error::Result;
+use crate::eval::args::Args;
+use crate::eval::{FilePolicy, Interp};
+use crate::fem::mesh::Mesh;
+use crate::io::plot;
+use crate::value::{Chpoint, Evolution, Mchaml, Value};
+use std::path::PathBuf;
+use std::rc::Rc;
+
+/// Picture format and file for the next TRAC/DESS; None when the host
+/// allows no file at all (pictures are for people: an embedded run that
+/// cannot write files must still get through decks that draw).
+fn picture_path(it: &mut Interp) -> Result<Option<(plot::Format, PathBuf)>> {
+    if matches!(it.files, FilePolicy::Nothing) {
+        return Ok(None);
+    }
+    let dev = it.opts.other.get("TRAC").map(|s| s.trim().to_uppercase()).unwrap_or_default();
+    let format = if dev.starts_with("PNG") { plot::Format::Png } else { plot::Format::Svg };
+    let name = match sort_base(it) {
+        Some(b) => format!("{}.{}", b, format.ext()),
+        None => {
+            it.exports.pictures += 1;
+            format!("gibi_trac_{}.{}", it.exports.pictures, format.ext())
+        }
+    };
+    Ok(Some((format, out_path(it, &name)?)))
+}
+
+/// Title from `'TITR' text` (`title` starts as the deck's TITR); other
+/// words, numbers and lists are options of Cast3M's graphics and are
+/// skipped. Called between arguments: a 'TITR' found ahead of them sets
+/// the title once, later calls keep it.
+fn skip_options(a: &mut Args, title: &mut String) {
+    while a.keyword(&["TITR"]).is_some() {
+        if let Some(w) = a.word_not_operator() {
+            *title = w;
+        }
+    }
+}
+
+pub(super) fn trac(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let mut title = it.title.clone();
+    let mut meshes = Vec::new();
+    let mut field: Option<(Rc<Chpoint>, Option<Mesh>)> = None;
+    loop {
+        skip_options(a, &mut title);
+        let Some(v) = a.right_any() else { break };
+        let mesh = match v {
+            Value::Mesh(m) => (*m).clone(),
+            Value::Point(p) => Mesh::points(&[p]),
+            Value::Model(m) => m.zones.iter().fold(Mesh::default(), |acc, z| acc.union(&z.mesh)),
+            Value::Chpo(c) if field.is_none() => {
+                field = Some((c, None));
+                continue;
+            }
+            _ => continue,
+        };
+        match &mut field {
+            Some((_, support @ None)) => *support = Some(mesh),
+            _ => meshes.push(mesh),
+        }
+    }
+    let field = match field {
+        Some((c, Some(m))) => Some(nodal_field(&c, m)),
+        Some((_, None)) => return Err(a.err("TRAC of a CHPOINT needs the mesh it lives on: TRAC chpo mesh")),
+        None => None,
+    };
+    if meshes.is_empty() && field.is_none() {
+        return Err(a.missing("MAILLAGE or CHPOINT"));
+    }
+    let Some((format, path)) = picture_path(it)? else { return Ok(vec![]) };
+    let pic = plot::MeshPicture { nodes: &it.nodes, meshes, field, title };
+    plot::draw_mesh(&pic, format, &path).map_err(io_err)?;
+    Ok(vec![])
+}
+
+/// The scalar TRAC shows: the only component, else the displacement
+/// magnitude, else the first component.
+fn nodal_field(c: &Chpoint, mesh: Mesh) -> plot::NodalField {
+    let comps = c.components();
+    let disp: Vec<&str> = ["UX", "UY", "UZ"].into_iter().filter(|u| comps.iter().any(|c| c == u)).collect();
+    let (name, values) = if comps.len() != 1 && !disp.is_empty() {
+        let mag = |n: usize| disp.iter().map(|u| c.get(n, u).unwrap_or(0.0).powi(2)).sum::<f64>().sqrt();
+        ("|U|".to_string(), c.nodes.iter().map(|&n| (n, mag(n))).collect())
+    } else {
+        let first = comps.first().cloned().unwrap_or_default();
+        let values = c.nodes.iter().filter_map(|&n| Some((n, c.get(n, &first)?))).collect();
+        (first, values)
+    };
+    plot::NodalField { mesh, values, name }
+}
+
+/// The VECTEUR object of VECT: what it would draw, kept for LIST and TYPE.
+#[derive(Debug)]
+pub struct Vecteur {
+    comps: Vec<String>,
+    scale: f64,
+    colour: String,
+}
+
+impl crate::value::HostObject for Vecteur {
+    fn type_name(&self) -> &str {
+        "VECTEUR"
+    }
+    fn describe(&self) -> String {
+        format!(
+            "arrows of {} scaled by {}, colour {} (TRAC does not draw them)",
+            self.comps.join(" "),
+            crate::value::fmt_float(self.scale),
+            self.colour
+        )
+    }
+    fn as_any(&self) -> &dyn std::any::Any {
+        self
+    }
+}
+
+pub(super) fn vect(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    // The field's components, to check the names the deck gives; an MCHAML
+    // comes with its model (vect.notice: stresses drawn as principal axes).
+    let comps: Vec<String> = match a.opt::<Rc<Chpoint>>() {
+        Some(c) => c.components(),
+        None => {
+            let m = a.req::<Rc<Mchaml>>()?;
+            a.req::<Rc<crate::value::Model>>()?;
+            m.zones.iter().flat_map(|z| z.comps.iter().cloned()).collect()
+        }
+    };
+    let scale = a.opt_num().unwrap_or(1.0);
+    let mut chosen = Vec::new();
+    let mut colour = crate::fem::colour::Colour::default();
+    while let Some(w) = a.word_not_operator() {
+        let w = w.trim().to_uppercase();
+        if let Some(c) = crate::fem::colour::Colour::from_name(&w) {
+            colour = c;
+        } else if comps.contains(&w) || ["DEPL", "FORC", "ROTA", "MOME"].contains(&w.as_str()) {
+            chosen.push(w);
+        } else {
+            return Err(a.err(format!("the field has no component {} (it has {})", w, comps.join(" "))));
+        }
+    }
+    if chosen.is_empty() {
+        chosen = comps;
+    }
+    let v = Vecteur { comps: chosen, scale, colour: colour.name().to_string() };
+    Ok(vec![Value::Host(Rc::new(v))])
+}
+
+pub(super) fn dess(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let mut title = it.title.clone();
+    let mut evols: Vec<Rc<Evolution>> = Vec::new();
+    loop {
+        skip_options(a, &mut title);
+        match a.right_any() {
+            Some(Value::Evol(e)) => evols.push(e),
+            Some(_) => {}
+            None => break,
+        }
+    }
+    if evols.is_empty() {
+        return Err(a.missing("EVOLUTIO"));
+    }
+    let curves: Vec<_> = evols.iter().flat_map(|e| e.curves.iter()).collect();
+    let pic = plot::CurvePicture {
+        title,
+        x_label: curves.first().map(|c| c.x_name.clone()).unwrap_or_default(),
+        y_label: curves.first().map(|c| c.y_name.clone()).unwrap_or_default(),
+        curves: curves
+            .iter()
+            .map(|c| plot::Curve { label: c.legend.clone(), x: c.x.clone(), y: c.y.clone() })
+            .collect(),
+    };
+    let Some((format, path)) = picture_path(it)? else { return Ok(vec![]) };
+    plot::draw_curves(&pic, format, &path).map_err(io_err)?;
+    Ok(vec![])
+}

@@ -1,0 +1,223 @@
+//! Operations on existing meshes: parts (ELEM, COTE, FACE, ENVE, CONT),
+//! set operations (INTE, DIFF), node merging (ELIM), and copies moved,
+//! mirrored, turned or reversed (PLUS, MOIN, SYME, TOUR, INVE).
+
+use super::mesh::{mesh_val, moved_by_field, opt_geo, req_geo, vector};
+use super::{Args, OpDef};
+use crate::error::Result;
+use crate::eval::Interp;
+use crate::fem::mesh::{ElemType, Mesh};
+use crate::fem::meshing as mg;
+use crate::value::{Chpoint, Value};
+use std::rc::Rc;
+
+pub(crate) const OPS: &[OpDef] = &[
+    OpDef { name: "ELEM", signature: "GEO ELEM TYPE | GEO ELEM n|LISTENTI | GEO ELEM 'APPU' ('STRI'|'LARG') GEO2", doc: "Elements of a mesh by type, by number, or resting on another mesh.", example: "q = s elem qua4 ;", f: elem },
+    OpDef { name: "COTE", signature: "COTE n SURFACE", doc: "Side n of a structured (DALL/TRAN) surface.", example: "b = cote 1 s ;", f: cote },
+    OpDef { name: "FACE", signature: "FACE n VOLUME", doc: "Face n of a volume made by VOLU, TRAN or ROTA: 1 the base, 2 the opposite face, 3 the lateral surface.", example: "haut = face 2 v ;", f: face },
+    OpDef { name: "ENVE", signature: "ENVE VOLUME", doc: "The envelope of a volume mesh: the faces that belong to one element only (TRI3/QUA4), oriented outwards as in their elements.", example: "peau = enve v ;", f: enve },
+    OpDef { name: "CONT", signature: "CONT GEO", doc: "Contour: boundary edges of a surface, end points of a line.", example: "c = cont s ;", f: cont },
+    OpDef { name: "ELIM", signature: "ELIM (crit) GEO (GEO2 …)", doc: "Merge nodes closer than crit, in every object (several meshes: their nodes with each other's).", example: "elim 1.e-5 l ;", f: elim },
+    OpDef { name: "INTE", signature: "GEO1 INTE GEO2", doc: "Elements common to two meshes.", example: "c = s1 inte s2 ;", f: inte },
+    OpDef { name: "DIFF", signature: "DIFF GEO1 GEO2", doc: "Symmetric difference of two meshes.", example: "d = diff s1 s2 ;", f: diff },
+    OpDef { name: "PLUS", signature: "OBJ PLUS VECTOR | GEO PLUS CHPOINT", doc: "A translated copy (geometric, not arithmetic), or the mesh moved by a displacement field.", example: "l2 = l plus (0. 1.) ;", f: plus },
+    OpDef { name: "MOIN", signature: "OBJ MOIN VECTOR", doc: "A copy translated by minus the vector.", example: "l2 = l moin (0. 1.) ;", f: moin },
+    OpDef { name: "SYME", signature: "POINT|MAILLAGE SYME ('DROIT' P1 P2 | 'PLAN' P1 P2 P3 | 'POINT' P)", doc: "Mirror image on new nodes: about a line (2D; in 3D the half-turn about it), a plane (3D) or a point. Surfaces and volumes keep their orientation.", example: "s2 = s1 syme 'DROIT' p1 p2 ;", f: syme },
+    OpDef { name: "TOUR", signature: "POINT|MAILLAGE TOUR angle P1 (P2)", doc: "A copy on new nodes turned by angle degrees about P1 (2D) or about the axis P1 P2 (3D).", example: "s2 = s1 tour 90. p0 ;", f: tour },
+    OpDef { name: "INVE", signature: "INVE GEO", doc: "Reverse the orientation of a mesh.", example: "l2 = inve l ;", f: inve },
+];
+
+fn elem(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let m = a.req::<Rc<Mesh>>()?;
+    if a.keyword(&["APPU"]).is_some() {
+        let strict = a.keyword(&["STRI", "LARG"]) != Some("LARG");
+        let support = req_geo(a)?;
+        return Ok(mesh_val(mg::elem_appui(&m, &support, strict)));
+    }
+    if let Some(n) = a.opt::<i64>() {
+        return Ok(mesh_val(mg::elem_numbers(&m, None, &[n])?));
+    }
+    if let Some(l) = a.opt::<Rc<Vec<i64>>>() {
+        return Ok(mesh_val(mg::elem_numbers(&m, None, &l)?));
+    }
+    let w = a.word().ok_or_else(|| a.missing("an element type, a number or APPU"))?;
+    let ty = ElemType::from_name(&w.to_uppercase()).ok_or_else(|| a.err(format!("unknown element type {}", w)))?;
+    Ok(mesh_val(mg::elem_type(&m, ty)))
+}
+
+fn cote(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let n = a.req::<i64>()?;
+    let s = a.req::<Rc<Mesh>>()?;
+    Ok(mesh_val(mg::cote(&s, n)?))
+}
+
+fn face(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let n = a.req::<i64>()?;
+    let v = a.req::<Rc<Mesh>>()?;
+    Ok(mesh_val(mg::face(&v, n)?))
+}
+
+/// ENVE: the faces of the volume elements that no other element shares
+/// (same node set), in element order, each with its element's outward
+/// orientation (`shape::faces`).
+fn enve(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let m = a.req::<Rc<Mesh>>()?;
+    let mut faces: Vec<(ElemType, Vec<usize>)> = Vec::new();
+    let mut count: std::collections::HashMap<Vec<usize>, usize> = std::collections::HashMap::new();
+    for part in m.parts.iter().filter(|p| p.ty.dim() == 3) {
+        for e in part.elems() {
+            for (fty, loc) in crate::fem::shape::faces(part.ty) {
+                let nodes: Vec<usize> = loc.iter().map(|&k| e[k]).collect();
+                let mut key = nodes.clone();
+                key.sort_unstable();
+                *count.entry(key).or_default() += 1;
+                faces.push((fty, nodes));
+            }
+        }
+    }
+    if faces.is_empty() {
+        return Err(a.err("ENVE needs a volume mesh (the boundary of a surface or a line is CONT)"));
+    }
+    let mut parts: Vec<(ElemType, Vec<usize>)> = Vec::new();
+    for (fty, nodes) in faces {
+        let mut key = nodes.clone();
+        key.sort_unstable();
+        if count[&key] != 1 {
+            continue;
+        }
+        match parts.iter_mut().find(|(t, _)| *t == fty) {
+            Some((_, c)) => c.extend(nodes),
+            None => parts.push((fty, nodes)),
+        }
+    }
+    Ok(mesh_val(mg::mesh_of(parts)))
+}
+
+fn cont(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let m = a.req::<Rc<Mesh>>()?;
+    Ok(mesh_val(mg::cont(&m)?))
+}
+
+/// ELIM works in place in Cast3M: every object holding a merged node sees
+/// the kept one. We rewrite every mesh and point in the store.
+fn elim(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    // The tolerance may come before or after the mesh (`ELIM 1.e-3 s`,
+    // `ELIM s 1.e-3`).
+    let tol = a.opt_num();
+    let mut m = req_geo(a)?;
+    // `ELIM crit GEO1 GEO2`: the nodes of both are merged with each other.
+    while let Some(g) = opt_geo(a) {
+        m = m.union(&g);
+    }
+    let tol = tol.or_else(|| a.opt_num()).unwrap_or(1e-6);
+    let (merged, map) = mg::elim(&it.nodes, &m, tol)?;
+    if !map.is_empty() {
+        for f in it.store.frames.iter_mut() {
+            for v in f.vars.values_mut() {
+                match v {
+                    Value::Mesh(x) => *x = Rc::new(map.apply(x)),
+                    Value::Point(p) => *p = map.get(*p),
+                    _ => {}
+                }
+            }
+        }
+    }
+    Ok(mesh_val(merged))
+}
+
+fn inte(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let x = req_geo(a)?;
+    let y = req_geo(a)?;
+    Ok(mesh_val(mg::inte(&x, &y)))
+}
+
+fn diff(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let x = req_geo(a)?;
+    let y = req_geo(a)?;
+    Ok(mesh_val(mg::diff(&x, &y)))
+}
+
+fn translate(it: &mut Interp, a: &mut Args, sign: f64) -> Result<Vec<Value>> {
+    // The object comes first; the vector after it (both may be points).
+    let obj = a.req::<Value>()?;
+    if let (Value::Mesh(m), Some(u)) = (&obj, a.opt::<Rc<Chpoint>>()) {
+        return Ok(mesh_val(moved_by_field(it, m, &u, sign)));
+    }
+    let v = vector(it, a).ok_or_else(|| a.missing("a vector (POINT)"))?.map(|c| c * sign);
+    Ok(match obj {
+        Value::Point(p) => {
+            let x = it.nodes.get(p);
+            let d = it.nodes.density[p];
+            vec![Value::Point(it.nodes.push([x[0] + v[0], x[1] + v[1], x[2] + v[2]], d))]
+        }
+        Value::Mesh(m) => mesh_val(mg::translate_copy(&mut it.nodes, &m, v)?),
+        other => return Err(a.err(format!("cannot translate a {}", other.type_name()))),
+    })
+}
+
+fn plus(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    translate(it, a, 1.0)
+}
+
+fn moin(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    translate(it, a, -1.0)
+}
+
+fn syme(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    // The object is the operand before SYME (`s2 = s1 syme …`), else the
+    // first value after it, else what follows the symmetry element.
+    let mut obj = a.left_value();
+    if obj.is_none() && a.peek_right().is_some_and(|v| matches!(v, Value::Point(_) | Value::Mesh(_))) {
+        obj = a.right_any();
+    }
+    let mirror = match a.req_keyword(&["DROIT", "PLAN", "POINT"])? {
+        "DROIT" => {
+            let p1 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
+            mg::Mirror::Line(p1, vector(it, a).ok_or_else(|| a.missing("POINT"))?)
+        }
+        "PLAN" => {
+            let p1 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
+            let p2 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
+            mg::Mirror::Plane(p1, p2, vector(it, a).ok_or_else(|| a.missing("POINT"))?)
+        }
+        _ => mg::Mirror::Point(vector(it, a).ok_or_else(|| a.missing("POINT"))?),
+    };
+    let obj = match obj {
+        Some(v) => v,
+        None => a.right_any().ok_or_else(|| a.missing("POINT or MAILLAGE"))?,
+    };
+    let dim = it.opts.dime.max(2);
+    match obj {
+        Value::Point(p) => {
+            mirror.check(dim)?;
+            let x = mirror.image(it.nodes.get(p));
+            let d = it.nodes.density[p];
+            Ok(vec![Value::Point(it.nodes.push(x, d))])
+        }
+        Value::Mesh(m) => Ok(mesh_val(mg::syme(&mut it.nodes, &m, mirror, dim)?)),
+        other => Err(a.err(format!("cannot take the symmetric of a {}", other.type_name()))),
+    }
+}
+
+fn tour(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    // The object is the operand before TOUR (`s2 = s1 tour 90. p`), else
+    // the first value after it.
+    let obj = match a.left_value() {
+        Some(v) => v,
+        None => a.right_any().ok_or_else(|| a.missing("POINT or MAILLAGE"))?,
+    };
+    let angle = a.req_num()?;
+    let centre = vector(it, a).ok_or_else(|| a.missing("POINT (the centre)"))?;
+    let axis_end =
+        if it.opts.dime >= 3 { Some(vector(it, a).ok_or_else(|| a.missing("POINT (the axis)"))?) } else { None };
+    match obj {
+        Value::Point(p) => Ok(vec![Value::Point(mg::rotate_point(&mut it.nodes, p, angle, centre, axis_end)?)]),
+        Value::Mesh(m) => Ok(mesh_val(mg::rotate_copy(&mut it.nodes, &m, angle, centre, axis_end)?)),
+        other => Err(a.err(format!("cannot turn a {}", other.type_name()))),
+    }
+}
+
+fn inve(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let m = a.req::<Rc<Mesh>>()?;
+    Ok(mesh_val(mg::inve(&m)?))
+}

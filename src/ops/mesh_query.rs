@@ -1,0 +1,149 @@
+//! Questions asked of points and meshes: NOEUD, COOR, NBNO, NBEL, POIN.
+
+use super::mesh::{mesh_val, req_geo, vector};
+use super::{Args, OpDef, PointId};
+use crate::error::Result;
+use crate::eval::Interp;
+use crate::fem::mesh::Mesh;
+use crate::fem::meshing as mg;
+use crate::value::{Chpoint, Nature, Value};
+use std::rc::Rc;
+
+pub(crate) const OPS: &[OpDef] = &[
+    OpDef { name: "NOEU", signature: "NOEUD n", doc: "The point (node) number n, as numbered by gibi (LIST shows node numbers).", example: "p = noeud 5 ;", f: noeu },
+    OpDef { name: "COOR", signature: "COOR POINT | COOR n POINT | COOR (n) MAILLAGE", doc: "Coordinates of a point (one result per dimension), one of them, or coordinate fields (SCAL) on a mesh: one per dimension, or the n-th.", example: "x y = coor p ;", f: coor },
+    OpDef { name: "NBNO", signature: "NBNO MAILLAGE", doc: "Number of nodes of a mesh.", example: "n = nbno l ;", f: nbno },
+    OpDef { name: "NBEL", signature: "NBEL MAILLAGE", doc: "Number of elements of a mesh.", example: "n = nbel s ;", f: nbel },
+    OpDef { name: "POIN", signature: "POIN x (y) (z) | MAILLAGE POIN n | MAILLAGE POIN ('INIT'|'FINAL') | MAILLAGE POIN 'PROC' POINT | MAILLAGE POIN ('DROIT' P1 P2 | 'PLAN' P1 P2 P3) (crit) | CHPOINT POIN 'MAXI'|'MINI' ('ABS') | CHPOINT POIN 'SUPE'|'INFE'|'EGSU'|'EGIN'|'EGAL' v", doc: "A point, or nodes of a mesh, or the nodes where a field meets a test (a POI1 mesh).", example: "p = l poin 'FINAL' ;", f: poin },
+];
+
+fn noeu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let n = a.req::<i64>()?;
+    if n < 1 || n as usize > it.nodes.len() {
+        return Err(a.err(format!("there is no node {} (nodes are numbered 1 to {})", n, it.nodes.len())));
+    }
+    Ok(vec![Value::Point(n as usize - 1)])
+}
+
+fn coor(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let which = a.opt::<i64>();
+    if let Some(p) = a.opt::<PointId>() {
+        let x = it.nodes.get(p.0);
+        let dim = it.opts.dime.max(1);
+        return match which {
+            None => Ok(x[..dim].iter().map(|c| Value::Float(*c)).collect()),
+            Some(k) if (1..=dim as i64).contains(&k) => Ok(vec![Value::Float(x[k as usize - 1])]),
+            Some(k) if k == dim as i64 + 1 => Ok(vec![Value::Float(it.nodes.density[p.0])]),
+            Some(k) => Err(a.err(format!("coordinate {} does not exist in dimension {}", k, dim))),
+        };
+    }
+    if let Some(m) = a.opt::<Rc<Mesh>>() {
+        let dim = it.opts.dime.max(1) as i64;
+        let field = |k: i64| {
+            let c = Chpoint::from_entries(
+                Nature::Diffus,
+                m.node_list().into_iter().map(|n| {
+                    (n, "SCAL", if k == dim + 1 { it.nodes.density[n] } else { it.nodes.get(n)[k as usize - 1] })
+                }),
+            );
+            Value::Chpo(Rc::new(c))
+        };
+        return match which {
+            // Like the POINT form: one field per coordinate (`x y = COOR s`).
+            None => Ok((1..=dim).map(field).collect()),
+            Some(k) if (1..=dim + 1).contains(&k) => Ok(vec![field(k)]),
+            Some(k) => Err(a.err(format!("coordinate {} does not exist in dimension {}", k, dim))),
+        };
+    }
+    Err(a.missing("POINT or MAILLAGE"))
+}
+
+fn nbno(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let m = req_geo(a)?;
+    Ok(vec![Value::Int(mg::nbno(&m) as i64)])
+}
+
+fn nbel(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let m = req_geo(a)?;
+    Ok(vec![Value::Int(mg::nbel(&m) as i64)])
+}
+
+fn poin(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    if let Some(ch) = a.opt::<Rc<crate::value::Chpoint>>() {
+        return poin_of_field(a, &ch);
+    }
+    if let Some(m) = a.opt::<Rc<Mesh>>() {
+        if let Some(k) = a.keyword(&["INIT", "FINAL", "PROC", "DROIT", "PLAN"]) {
+            return Ok(vec![match k {
+                "INIT" => Value::Point(mg::poin_init(&m)?),
+                "FINAL" => Value::Point(mg::poin_final(&m)?),
+                "PROC" => {
+                    let x = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
+                    Value::Point(mg::poin_proc(&it.nodes, &m, x)?)
+                }
+                "DROIT" => {
+                    let p1 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
+                    let p2 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
+                    let tol = a.opt_num().unwrap_or(1e-6 * it.opts.dens.max(1e-12));
+                    Value::Mesh(Rc::new(mg::poin_droit(&it.nodes, &m, p1, p2, tol)?))
+                }
+                _ => {
+                    let p1 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
+                    let p2 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
+                    let p3 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
+                    let tol = a.opt_num().unwrap_or(1e-6 * it.opts.dens.max(1e-12));
+                    Value::Mesh(Rc::new(mg::poin_plan(&it.nodes, &m, p1, p2, p3, tol)?))
+                }
+            }]);
+        }
+        let n = a.req::<i64>()?;
+        return Ok(vec![Value::Point(mg::poin_nth(&m, n)?)]);
+    }
+    // POIN x (y) (z): a point from numbers (the only way in DIME 1).
+    let mut x = [0.0; 3];
+    let dim = it.opts.dime.max(1);
+    for (k, c) in x.iter_mut().enumerate().take(dim) {
+        *c = if k == 0 { a.req_num()? } else { a.opt_num().unwrap_or(0.0) };
+    }
+    let d = it.opts.dens;
+    Ok(vec![Value::Point(it.nodes.push(x, d))])
+}
+
+/// `CHPO POIN 'MAXI'|'MINI' ('ABS') | 'SUPE'|'INFE'|'EGSU'|'EGIN'|'EGAL' v`:
+/// the nodes where one value of the field meets the test, as a POI1 mesh
+/// (where is the maximum?). MAXI/MINI and EGAL compare within 1e-10 of
+/// the largest value.
+fn poin_of_field(a: &mut Args, ch: &crate::value::Chpoint) -> Result<Vec<Value>> {
+    let k = a.req_keyword(&["MAXI", "MINI", "SUPE", "INFE", "EGSU", "EGIN", "EGAL"])?;
+    let abs = a.keyword(&["ABS"]).is_some();
+    let value = |v: f64| if abs { v.abs() } else { v };
+    let vals: Vec<(usize, f64)> = ch.entries().map(|(n, _, v)| (n, value(v))).collect();
+    if vals.is_empty() {
+        return Err(a.err("the field is empty"));
+    }
+    let scale = vals.iter().fold(0.0_f64, |m, e| m.max(e.1.abs()));
+    let tol = 1e-10 * scale;
+    let test: Box<dyn Fn(f64) -> bool> = match k {
+        "MAXI" => {
+            let top = vals.iter().fold(f64::NEG_INFINITY, |m, e| m.max(e.1));
+            Box::new(move |v| v >= top - tol)
+        }
+        "MINI" => {
+            let low = vals.iter().fold(f64::INFINITY, |m, e| m.min(e.1));
+            Box::new(move |v| v <= low + tol)
+        }
+        _ => {
+            let t = a.req_num()?;
+            match k {
+                "SUPE" => Box::new(move |v| v > t),
+                "INFE" => Box::new(move |v| v < t),
+                "EGSU" => Box::new(move |v| v >= t),
+                "EGIN" => Box::new(move |v| v <= t),
+                _ => Box::new(move |v| (v - t).abs() <= tol),
+            }
+        }
+    };
+    let mut seen = std::collections::HashSet::new();
+    let nodes: Vec<usize> = vals.into_iter().filter(|&(n, v)| test(v) && seen.insert(n)).map(|e| e.0).collect();
+    Ok(mesh_val(Mesh::points(&nodes)))
+}
