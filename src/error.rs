@@ -17,6 +17,9 @@ pub enum ErrorKind {
     Syntax,
     /// An operator or the evaluator refused (exit 70).
     Runtime,
+    /// An operator failed inside: a bug of gibi, not of the deck (exit 70).
+    /// The session survives it; tests fail on it.
+    Internal,
     /// `ERRE n` with a severity that aborts the run (exit 70).
     Abort,
     /// A file could not be read or written, or the host forbade it.
@@ -49,6 +52,9 @@ impl Error {
     }
     pub fn runtime(message: impl Into<String>) -> Self {
         Error::new(ErrorKind::Runtime, message)
+    }
+    pub fn internal(message: impl Into<String>) -> Self {
+        Error::new(ErrorKind::Internal, message)
     }
     pub fn syntax(message: impl Into<String>, span: Span) -> Self {
         Error::new(ErrorKind::Syntax, message).at(span)

@@ -115,3 +115,43 @@ fn reading_is_incremental() {
     assert_eq!(String::from_utf8_lossy(&out.stdout), "done\n");
     assert_eq!(gibi().arg("--check").arg(&notes).output().unwrap().status.code(), Some(0));
 }
+
+/// Every operator's catalogue example is Gibiane (it parses) and runs in a
+/// sandboxed interpreter (no file access, a step limit) without an
+/// internal error, after a setup that defines the objects examples name.
+#[test]
+fn every_catalogue_example_runs() {
+    const SETUP: &str = "
+opti echo 0 dime 2 elem qua4 mode plan cont ;
+p0 = 0. 0. ; p1 = 0. 0. ; p2 = 1. 0. ; p3 = 1. 1. ; p4 = 0. 1. ; o = 0. 0. ; p = p3 ;
+bas = droi 2 p1 p2 ; dro = droi 2 p2 p3 ; hau = droi 2 p3 p4 ; gau = droi 2 p4 p1 ;
+l = bas ; l1 = bas ; l2 = dro ; s = dall bas dro hau gau ; s1 = s ; s2 = s plus (0. 1.) ;
+mo = mode s mecanique elastique ; ma = mate mo youn 100. nu 0.3 ;
+k = rigi mo ma ; cl = bloq 'UX' 'UY' gau ; f = forc 'FX' 1. p3 ; f1 = f ; f2 = forc 'FY' 1. p3 ; f3 = f ;
+u = reso (k et cl) f ; r = reac cl u ; sig = sigm mo ma u ; eps = epsi mo ma u ;
+x = 2.5 ; i = 3 ; n = 2 ; m = 'ABC' ; lr = prog 1. 2. 3. ; le = lect 1 2 3 ; l1r = lr ; l2r = lr ;
+t = table ; t . 1 = 2. ; ev = evol 'MANU' lr lr ; ev1 = ev ; ev2 = ev ;
+u1 = u ; u2 = u ; haut = hau ; pa = p1 ; pb = p2 ; err = 0. ;
+";
+    let mut ran = 0;
+    let mut failed = Vec::new();
+    let ops = gibi::Interpreter::new().registry().all();
+    for op in &ops {
+        let ex = op.example;
+        if let Err(e) = gibi::syntax::parse(ex) {
+            panic!("{}: the example does not parse: {}\n{}", op.name, ex, e.render());
+        }
+        let mut g = gibi::Interpreter::builder().files(gibi::FilePolicy::Nothing).step_limit(10_000).build();
+        g.run_str("setup", SETUP).expect("setup runs");
+        match g.run_str("example", ex) {
+            Ok(_) => ran += 1,
+            Err(e) if e.kind == gibi::ErrorKind::Internal => {
+                panic!("{}: the example ends in an internal error: {}\n{}", op.name, ex, e.render())
+            }
+            Err(e) => failed.push(format!("{}: {} -> {}", op.name, ex, e.message)),
+        }
+    }
+    eprintln!("{} of {} examples ran; the others failed cleanly:\n{}", ran, ops.len(), failed.join("\n"));
+    // The setup must make real runs of most examples, not only errors.
+    assert!(ran * 4 > ops.len() * 3, "only {} of {} examples ran:\n{}", ran, ops.len(), failed.join("\n"));
+}

@@ -1,7 +1,12 @@
-//! Bounded "no panic on random input" test (runs in CI). Longer runs use
+//! Bounded "no panic on random input" tests (run in CI). Longer runs use
 //! the cargo-fuzz target in `fuzz/`.
+//!
+//! The evaluator turns an operator's panic into an error of kind
+//! `Internal` so that a session survives it; these tests fail on any such
+//! error, as on a panic that escapes. `a_panicking_operator_fails_both_checks`
+//! shows that they can fail.
 
-use gibi::{FilePolicy, Interpreter};
+use gibi::{ErrorKind, FilePolicy, Interpreter, OpSpec};
 
 /// A tiny deterministic generator (xorshift): no dependency, same inputs
 /// on every run.
@@ -102,21 +107,37 @@ const PIECES: &[&str] = &[
     "sin",
 ];
 
-#[test]
-fn random_programs_never_panic() {
+/// Runs one text: Ok whether it ran or failed cleanly; Err names a panic
+/// or an internal error, with the input.
+fn run_cleanly(g: &mut Interpreter, src: &str) -> Result<bool, String> {
+    match std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| g.run_str("fuzz", src))) {
+        Err(_) => Err(format!("panic on input: {src:?}")),
+        Ok(Err(e)) if e.kind == ErrorKind::Internal => Err(format!("internal error on input {src:?}: {}", e.message)),
+        Ok(r) => Ok(r.is_ok()),
+    }
+}
+
+/// Random texts from the pieces of Gibiane, run on fresh interpreters
+/// made by `new`.
+fn random_programs(new: &dyn Fn() -> Interpreter, pieces: &[&str], count: usize) -> Result<(), String> {
     let mut rng = Rng(0x9E3779B97F4A7C15);
-    for _ in 0..3000 {
+    for _ in 0..count {
         let n = 1 + rng.next() % 40;
         let mut src = String::new();
         for _ in 0..n {
-            src.push_str(rng.pick(PIECES));
+            src.push_str(rng.pick(pieces));
             src.push(' ');
         }
-        let mut g = Interpreter::builder().step_limit(10_000).build();
-        let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| g.run_str("fuzz", &src)))
-            .unwrap_or_else(|_| panic!("panic on input: {:?}", src));
+        run_cleanly(&mut new(), &src)?;
         let _ = gibi::syntax::check_complete(&src);
     }
+    Ok(())
+}
+
+#[test]
+fn random_programs_never_panic() {
+    let new = || Interpreter::builder().step_limit(10_000).build();
+    random_programs(&new, PIECES, 3000).unwrap_or_else(|e| panic!("{e}"));
 }
 
 // Every registered operator, called with random arguments drawn from a
@@ -154,12 +175,9 @@ const POOL: &[&str] = &[
 /// the run, object removal) rather than compute from their arguments.
 const SKIP: &[&str] = &["OPTI", "FIN", "ERRE", "OUBL", "DETR", "SORT", "LIRE", "TEMP", "MENA"];
 
-#[test]
-fn every_operator_survives_random_arguments() {
-    let mut g = Interpreter::builder().files(FilePolicy::Nothing).step_limit(100_000).build();
-    g.run_str("setup", SETUP).expect("setup runs");
-    let names: Vec<String> = g.registry().all().iter().map(|o| o.name.to_string()).collect();
-    assert!(names.len() > 120, "only {} operators", names.len());
+/// Each operator of `names` called 300 times with random arguments from
+/// the pool; the number of calls that succeeded and of all calls.
+fn random_calls(g: &mut Interpreter, names: &[String]) -> Result<(usize, usize), String> {
     let mut rng = Rng(0x2545_f491_4f6c_dd1d);
     let (mut calls, mut ok) = (0, 0);
     for name in names.iter().filter(|n| !SKIP.contains(&n.as_str())) {
@@ -170,16 +188,53 @@ fn every_operator_survives_random_arguments() {
                 src.push_str(POOL[rng.below(POOL.len())]);
             }
             src.push_str(" ;");
-            let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| g.run_str("fuzz", &src).is_ok()));
-            match r {
-                Ok(true) => ok += 1,
-                Ok(false) => {}
-                Err(_) => panic!("panic on: {src}"),
-            }
+            ok += run_cleanly(g, &src)? as usize;
             calls += 1;
         }
     }
+    Ok((ok, calls))
+}
+
+fn operator_session(extra: Option<OpSpec>) -> Interpreter {
+    let mut b = Interpreter::builder().files(FilePolicy::Nothing).step_limit(100_000);
+    if let Some(op) = extra {
+        b = b.operator(op);
+    }
+    let mut g = b.build();
+    g.run_str("setup", SETUP).expect("setup runs");
+    g
+}
+
+#[test]
+fn every_operator_survives_random_arguments() {
+    let mut g = operator_session(None);
+    let names: Vec<String> = g.registry().all().iter().map(|o| o.name.to_string()).collect();
+    assert!(names.len() > 120, "only {} operators", names.len());
+    let (ok, calls) = random_calls(&mut g, &names).unwrap_or_else(|e| panic!("{e}"));
     // The pool must make real calls, not only argument errors.
     assert!(ok * 50 > calls, "{ok} of {calls} calls succeeded");
     eprintln!("{ok} of {calls} calls succeeded");
+}
+
+/// The checks above fail when an operator panics: one that panics on a
+/// FLOTTANT argument is caught by both.
+#[test]
+fn a_panicking_operator_fails_both_checks() {
+    let boom = || {
+        OpSpec::host("BOOM", "BOOM (FLOTTANT)", "Panics on a FLOTTANT.", |a| match a.opt_num() {
+            Some(_) => panic!("kaboom"),
+            None => Ok(vec![]),
+        })
+    };
+    let prev = std::panic::take_hook();
+    std::panic::set_hook(Box::new(|_| {}));
+    let new = || Interpreter::builder().step_limit(10_000).operator(boom()).build();
+    let programs = random_programs(&new, &["boom", "1", "3.5", "x", ";"], 200);
+    let mut g = operator_session(Some(boom()));
+    let calls = random_calls(&mut g, &["BOOM".to_string()]);
+    std::panic::set_hook(prev);
+    let e = programs.expect_err("random programs must fail on BOOM");
+    assert!(e.contains("internal error") && e.contains("kaboom"), "{e}");
+    let e = calls.expect_err("random operator calls must fail on BOOM");
+    assert!(e.contains("BOOM: internal error (kaboom)"), "{e}");
 }

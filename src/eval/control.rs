@@ -2,7 +2,7 @@
 //! FIN, and procedure definitions.
 
 use super::{Flow, Interp};
-use crate::error::{Error, Result};
+use crate::error::{Error, ErrorKind, Result};
 use crate::syntax::ast::{Instr, Item, ItemKind, Stmt, Target};
 use crate::value::{Key, Ty, Value};
 
@@ -198,7 +198,7 @@ impl Interp {
         }
         // An error from inside a procedure already lists the objects of
         // the instruction that failed there; the call is in its trace.
-        if e.kind != crate::error::ErrorKind::Runtime || !e.trace.is_empty() {
+        if !matches!(e.kind, ErrorKind::Runtime | ErrorKind::Internal) || !e.trace.is_empty() {
             return e;
         }
         let mut names = Vec::new();

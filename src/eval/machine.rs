@@ -229,10 +229,7 @@ impl Interp {
                     .map(String::as_str)
                     .or_else(|| p.downcast_ref::<&str>().copied())
                     .unwrap_or("unknown cause");
-                Err(crate::error::Error::runtime(format!(
-                    "{}: internal error ({}); please report it with the deck",
-                    op.name, msg
-                )))
+                Err(Error::internal(format!("{}: internal error ({}); please report it with the deck", op.name, msg)))
             })
         };
         op.record(start.elapsed());

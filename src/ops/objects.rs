@@ -20,7 +20,7 @@ pub(crate) const OPS: &[OpDef] = &[
         name: "EXIS",
         signature: "EXIS NAME | TABLE KEY | CHPOINT COMP | LIST VALUE",
         doc: "Whether a name, a table key, a component or a list member exists.",
-        example: "si (exis t 'K') ;",
+        example: "si (exis t 'K') ; mess 'yes' ; finsi ;",
         f: exis,
     },
     OpDef {

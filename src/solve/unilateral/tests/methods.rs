@@ -113,54 +113,85 @@ pub(super) fn same_as_condense(name: &str, p: &Problem, l: &Load, method: Method
     }
 }
 
-/// The cases of unilateral-cases.md as sparse problems.
-pub(super) fn cases() -> Vec<(String, Problem, Load)> {
-    let mut out: Vec<(String, Dense)> = Vec::new();
+/// What a case must give, whatever the method: the answer, or the error
+/// its physics calls for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Expect {
+    Solved,
+    /// The load drives a rigid mode away from every support.
+    Infeasible,
+    /// Limits that cross (u ≥ a and u ≤ b with a > b).
+    Conflicting,
+}
+
+/// The case's outcome, as [`Expect`] names it.
+fn outcome(r: &Result<Solution, SolveError>) -> Option<Expect> {
+    match r {
+        Ok(_) => Some(Expect::Solved),
+        Err(SolveError::Infeasible { .. }) => Some(Expect::Infeasible),
+        Err(SolveError::Conflicting { .. }) => Some(Expect::Conflicting),
+        Err(_) => None,
+    }
+}
+
+/// The cases of unilateral-cases.md as sparse problems, with what each
+/// must give.
+pub(super) fn cases() -> Vec<(String, Problem, Load, Expect)> {
+    use Expect::*;
+    let mut out: Vec<(String, Dense, Expect)> = Vec::new();
     for g in [1.0, 0.2, 0.5] {
-        out.push((format!("a g={g}"), spring(10.0, 5.0).cond(&[(0, 1.0)], MAXI, g)));
+        out.push((format!("a g={g}"), spring(10.0, 5.0).cond(&[(0, 1.0)], MAXI, g), Solved));
     }
-    out.push(("a4".into(), spring(10.0, -5.0).cond(&[(0, 1.0)], MINI, -0.2)));
+    out.push(("a4".into(), spring(10.0, -5.0).cond(&[(0, 1.0)], MINI, -0.2), Solved));
     for load in [0.4, 1.0, 3.0] {
-        out.push((format!("b P={load}"), chain(load)));
+        out.push((format!("b P={load}"), chain(load), Solved));
     }
-    out.push(("c".into(), two_spans(1.0)));
-    out.push(("c2".into(), two_spans(-1.0)));
-    for p in [1.0, -1.0] {
+    out.push(("c".into(), two_spans(1.0), Solved));
+    // Uplift at every support: nothing holds the beam.
+    out.push(("c2".into(), two_spans(-1.0), Infeasible));
+    for (p, expect) in [(1.0, Solved), (-1.0, Infeasible)] {
         let mut f = vec![0.0; 6];
         f[2] = -p;
         let d = Dense::new(beam(&[0.0, 1.0, 4.0], 1.0), f).cond(&[(0, 1.0)], MINI, 0.0).cond(&[(4, 1.0)], MINI, 0.0);
-        out.push((format!("d/e2 P={p}"), d));
+        out.push((format!("d/e2 P={p}"), d, expect));
     }
-    out.push(("e1".into(), spring(0.0, 1.0).cond(&[(0, 1.0)], MINI, 0.0)));
-    out.push(("e1'".into(), spring(0.0, -1.0).cond(&[(0, 1.0)], MINI, 0.0)));
+    // A free unknown pushed away from its stop, then onto it.
+    out.push(("e1".into(), spring(0.0, 1.0).cond(&[(0, 1.0)], MINI, 0.0), Infeasible));
+    out.push(("e1'".into(), spring(0.0, -1.0).cond(&[(0, 1.0)], MINI, 0.0), Solved));
+    // A load beyond the last support tips the beam off the first one.
     let mut f = vec![0.0; 6];
     f[4] = -1.0;
     let e3 = Dense::new(beam(&[0.0, 3.0, 4.0], 1.0), f).cond(&[(0, 1.0)], MINI, 0.0).cond(&[(2, 1.0)], MINI, 0.0);
-    out.push(("e3".into(), e3));
-    out.push(("e4".into(), spring(10.0, 0.0).cond(&[(0, 1.0)], MINI, 1.0).cond(&[(0, 1.0)], MAXI, 0.0)));
-    out.push(("f".into(), cycling()));
+    out.push(("e3".into(), e3, Infeasible));
+    let crossed = spring(10.0, 0.0).cond(&[(0, 1.0)], MINI, 1.0).cond(&[(0, 1.0)], MAXI, 0.0);
+    out.push(("e4".into(), crossed, Conflicting));
+    out.push(("f".into(), cycling(), Solved));
     let k2 = Mat::from_fn(2, 2, |i, j| if i == j { [2.0, 3.0][i] } else { 0.0 });
     for load in [5.0, 1.5] {
         out.push((
             format!("g {load}"),
             Dense::new(k2.clone(), vec![load, 0.0]).cond(&[(1, 1.0), (0, -1.0)], MINI, -1.0),
+            Solved,
         ));
     }
-    out.push(("h".into(), spring(10.0, -5.0).cond(&[(0, 1.0)], MINI, -0.2).cond(&[(0, 1.0)], MINI, -0.2)));
-    out.push(("i".into(), spring(10.0, 5.0).cond(&[(0, 1.0)], MAXI, 0.5)));
+    let twice = spring(10.0, -5.0).cond(&[(0, 1.0)], MINI, -0.2).cond(&[(0, 1.0)], MINI, -0.2);
+    out.push(("h".into(), twice, Solved));
+    out.push(("i".into(), spring(10.0, 5.0).cond(&[(0, 1.0)], MAXI, 0.5), Solved));
     for scale in [1.0, 7.0, 0.01] {
         let row = [(0, 2.5 * scale), (1, -scale), (2, 3.0 * scale)];
-        out.push((format!("k {scale}"), Dense::new(Mat::identity(3, 3), vec![0.0; 3]).cond(&row, MINI, 0.3 * scale)));
+        let d = Dense::new(Mat::identity(3, 3), vec![0.0; 3]).cond(&row, MINI, 0.3 * scale);
+        out.push((format!("k {scale}"), d, Solved));
     }
     for (f, dmin, dmax) in [(5.0, -0.1, 0.2), (-5.0, -0.1, 0.2), (1.0, -0.1, 0.2), (1.0, 0.3, 0.2)] {
         let d = spring(10.0, f).cond(&[(0, 1.0)], MINI, dmin).cond(&[(0, 1.0)], MAXI, dmax);
-        out.push((format!("l F={f} [{dmin}, {dmax}]"), d));
+        let expect = if dmin > dmax { Conflicting } else { Solved };
+        out.push((format!("l F={f} [{dmin}, {dmax}]"), d, expect));
     }
-    let mut all: Vec<(String, Problem, Load)> = out
+    let mut all: Vec<(String, Problem, Load, Expect)> = out
         .into_iter()
-        .map(|(name, d)| {
+        .map(|(name, d, expect)| {
             let (p, l) = sparse(&d);
-            (name, p, l)
+            (name, p, l, expect)
         })
         .collect();
     // Mixed: a spring chain with UX blocked at 0 (bilateral) and a MAXI
@@ -178,16 +209,24 @@ pub(super) fn cases() -> Vec<(String, Problem, Load)> {
                 Condition { terms: vec![(2, 1.0), (1, -0.5)], kind: Kind::Mini, dual: None },
             ],
         };
-        all.push((format!("mixed {load}"), p, Load { f: vec![0.0, 0.0, 0.3, load], d: vec![0.1, 1.0, -0.2] }));
+        all.push((format!("mixed {load}"), p, Load { f: vec![0.0, 0.0, 0.3, load], d: vec![0.1, 1.0, -0.2] }, Solved));
     }
     all
 }
 
+/// Every case gives what it must, with CONDENSE and with `method`, and
+/// both give the same answer.
+fn check_cases(method: Method, tol: f64) {
+    for (name, p, l, expect) in cases() {
+        assert_eq!(outcome(&run(&p, &l, Method::Condense)), Some(expect), "{name}: CONDENSE");
+        assert_eq!(outcome(&run(&p, &l, method)), Some(expect), "{name}: {method:?}");
+        assert_eq!(same_as_condense(&name, &p, &l, method, tol), expect == Expect::Solved, "{name}");
+    }
+}
+
 #[test]
 fn ancien_matches_condense_on_the_cases() {
-    for (name, p, l) in cases() {
-        let _ = same_as_condense(&name, &p, &l, Method::Ancien, 1e-9);
-    }
+    check_cases(Method::Ancien, 1e-9);
 }
 
 #[test]
@@ -236,9 +275,7 @@ fn bilateral_rows_on_contact_unknowns() {
 
 #[test]
 fn creux_matches_condense_on_the_cases() {
-    for (name, p, l) in cases() {
-        let _ = same_as_condense(&name, &p, &l, Method::Creux, 1e-9);
-    }
+    check_cases(Method::Creux, 1e-9);
 }
 
 /// A random sparse problem: a banded K (sometimes with one rigid mode),
@@ -324,9 +361,7 @@ fn ancien_matches_condense_on_random_problems() {
 
 #[test]
 fn iter_matches_condense_on_the_cases() {
-    for (name, p, l) in cases() {
-        let _ = same_as_condense(&name, &p, &l, Method::Iter, 1e-8);
-    }
+    check_cases(Method::Iter, 1e-8);
 }
 
 #[test]
@@ -384,7 +419,7 @@ fn disconnected_contact_zones() {
     assert_eq!(got.active, want.active);
     assert!(want.active.iter().any(|a| *a) && want.active.iter().any(|a| !*a), "{want:?}");
     for m in [Method::Ancien, Method::Creux, Method::Iter] {
-        let _ = same_as_condense("disconnected", &p, &l, m, 1e-9);
+        assert!(same_as_condense("disconnected", &p, &l, m, 1e-9), "{m:?}");
     }
 }
 
