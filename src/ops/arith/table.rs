@@ -7,6 +7,7 @@
 use crate::error::Result;
 use crate::eval::args::Args;
 use crate::eval::Interp;
+use crate::ops::pointwise::map;
 use crate::value::arith::{float_op, numbers, Bin, Number};
 use crate::value::{list_value_short, Key, Table, Ty, Value};
 use std::cell::RefCell;
@@ -38,10 +39,9 @@ const ROWS: &[Row] = &[
     Row { x: NUM, y: &[Ty::Chpoint], rule: node_fields },
     Row { x: &[Ty::Rigidite], y: &[Ty::Chpoint, Ty::Rigidite, Ty::Entier, Ty::Flottant], rule: rigidities },
     Row { x: &[Ty::Chpoint, Ty::Entier, Ty::Flottant], y: &[Ty::Rigidite], rule: rigidities },
-    Row { x: &[Ty::Evolutio], y: &[Ty::Evolutio, Ty::Entier, Ty::Flottant], rule: curves },
-    Row { x: NUM, y: &[Ty::Evolutio], rule: curves },
-    Row { x: &[Ty::Mchaml], y: &[Ty::Mchaml, Ty::Entier, Ty::Flottant], rule: element_fields },
-    Row { x: NUM, y: &[Ty::Mchaml], rule: element_fields },
+    Row { x: &[Ty::Evolutio], y: &[Ty::Evolutio, Ty::Entier, Ty::Flottant], rule: sampled },
+    Row { x: &[Ty::Mchaml], y: &[Ty::Mchaml, Ty::Entier, Ty::Flottant], rule: sampled },
+    Row { x: NUM, y: &[Ty::Evolutio, Ty::Mchaml], rule: sampled },
     Row { x: &[Ty::Table], y: ANY, rule: tables },
     Row { x: ANY, y: &[Ty::Table], rule: tables },
 ];
@@ -160,26 +160,17 @@ fn rigidities(_: &mut Interp, _: &Args, op: Bin, x: &Value, y: &Value) -> Result
     }))
 }
 
-/// EVOLUTIO: ordinates with a number, or two curves at the same abscissae.
-fn curves(_: &mut Interp, a: &Args, op: Bin, x: &Value, y: &Value) -> Result<Option<Value>> {
+/// EVOLUTIO and MCHAML: their values with a number (the ordinates of a
+/// curve), or two of the same layout (curves at the same abscissae, element
+/// fields on the same zones) value by value.
+fn sampled(_: &mut Interp, a: &Args, op: Bin, x: &Value, y: &Value) -> Result<Option<Value>> {
     let f = |p: f64, q: f64| float_op(op, p, q);
-    Ok(Some(Value::Evol(Rc::new(match (x, y) {
-        (Value::Evol(e), Value::Evol(g)) => e.combine(g, f).map_err(|m| a.err(m))?,
-        (Value::Evol(e), s) => e.map(&|p| f(p, scalar(s))),
-        (s, Value::Evol(e)) => e.map(&|q| f(scalar(s), q)),
-        _ => return Ok(None),
-    }))))
-}
-
-/// MCHAML: values with a number, or two fields of the same layout.
-fn element_fields(_: &mut Interp, a: &Args, op: Bin, x: &Value, y: &Value) -> Result<Option<Value>> {
-    let f = |p: f64, q: f64| float_op(op, p, q);
-    Ok(Some(Value::Mchaml(Rc::new(match (x, y) {
-        (Value::Mchaml(m), Value::Mchaml(n)) => m.combine(n, f).map_err(|e| a.err(e))?,
-        (Value::Mchaml(m), s) => m.map(&|p| f(p, scalar(s))),
-        (s, Value::Mchaml(m)) => m.map(&|q| f(scalar(s), q)),
-        _ => return Ok(None),
-    }))))
+    Ok(Some(match (x, y) {
+        (Value::Evol(e), Value::Evol(g)) => Value::Evol(Rc::new(e.combine(g, f).map_err(|m| a.err(m))?)),
+        (Value::Mchaml(m), Value::Mchaml(n)) => Value::Mchaml(Rc::new(m.combine(n, f).map_err(|e| a.err(e))?)),
+        (v, s) if s.is_number() => return Ok(map(v, &|p| f(p, scalar(s)))),
+        (s, v) => return Ok(map(v, &|q| f(scalar(s), q))),
+    }))
 }
 
 fn is_vecteur(t: &Table) -> bool {

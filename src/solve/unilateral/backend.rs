@@ -2,8 +2,27 @@
 //! error type, the renumbering of conditions, and the fingerprint of a
 //! problem's values.
 
+use super::status::{IterRecord, StatusOptions};
 use crate::solve::error::SolveError;
-use crate::solve::problem::Problem;
+use crate::solve::problem::{Load, Problem};
+
+/// What the driver hands every backend: the problem, the load, the
+/// unilateral conditions (global numbers, in the order of the status
+/// vectors) and the options of the status loop.
+#[derive(Clone, Copy)]
+pub(crate) struct Job<'a> {
+    pub p: &'a Problem,
+    pub load: &'a Load,
+    pub uni: &'a [usize],
+    pub sopts: &'a StatusOptions,
+}
+
+/// Where a backend reports: each solve of the status loop (positions among
+/// `Job::uni`), and the time of each of its phases.
+pub(crate) struct Trace<'a> {
+    pub on_iter: &'a mut dyn FnMut(&IterRecord),
+    pub phases: &'a mut Vec<(&'static str, f64)>,
+}
 
 /// An error in global condition numbers, or one from the status loop in
 /// positions among the unilateral conditions.

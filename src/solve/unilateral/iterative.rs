@@ -19,13 +19,13 @@
 //! number of status iterations times that cost ratio. With a direct solver
 //! available, CONDENSE is always cheaper.
 
-use super::backend::{to_global, Outcome, StatusError};
+use super::backend::{to_global, Job, Outcome, StatusError, Trace};
 use super::condensed::{operator, Condensed};
 use super::status::{IterRecord, StatusOptions};
 use crate::solve::bilateral::eliminate::Elimination;
 use crate::solve::bilateral::lagrange;
 use crate::solve::error::SolveError;
-use crate::solve::problem::{Load, Problem, Solution};
+use crate::solve::problem::{Problem, Solution};
 
 /// Relative residual at which a CG solve stops: G must match the direct
 /// condensation to ≈ 1e-10.
@@ -216,14 +216,9 @@ fn pcg(a: &Csr, pre: &Ic0, b: &[f64]) -> Result<Vec<f64>, SolveError> {
 }
 
 /// ITER for `p` (unilateral conditions `uni`).
-pub(super) fn solve(
-    p: &Problem,
-    load: &Load,
-    uni: &[usize],
-    sopts: &StatusOptions,
-    on_iter: &mut dyn FnMut(&IterRecord),
-    phases: &mut Vec<(&'static str, f64)>,
-) -> Outcome {
+pub(super) fn solve(job: &Job, trace: &mut Trace) -> Outcome {
+    let Job { p, load, uni, sopts } = *job;
+    let Trace { on_iter, phases } = trace;
     let g = StatusError::Global;
     let t0 = std::time::Instant::now();
     lagrange::validate(p).map_err(g)?;

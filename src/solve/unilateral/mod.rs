@@ -36,7 +36,7 @@ pub mod status;
 
 use crate::solve::error::SolveError;
 use crate::solve::problem::{Load, Problem, Solution};
-use backend::{to_global, StatusError};
+use backend::{to_global, Job, StatusError, Trace};
 pub use cache::UnilCache;
 pub use condensed::Condensed;
 pub use status::{IterRecord, Rule};
@@ -166,14 +166,14 @@ pub fn solve_unilateral(
     // A non-symmetric operator has no LDLᵀ to condense or to update: every
     // method falls back to full LU solves per status (nonsym.rs).
     let nonsym = !p.k.symmetric;
+    let job = Job { p, load, uni: &uni, sopts: &sopts };
+    let trace = &mut Trace { on_iter: &mut forward, phases: &mut phases };
     let res = match method {
-        _ if nonsym => nonsymmetric::solve(p, load, &uni, &sopts, &mut forward, &mut phases),
-        Method::Auto | Method::Condense => {
-            condensed::solve(p, load, &sopts, &mut cache.condensed, &mut forward, &mut phases)
-        }
-        Method::Ancien => guyan::solve(p, load, &uni, &sopts, &mut forward, &mut phases),
-        Method::Creux => sparse::solve(p, load, &uni, &sopts, &mut cache.sparse, &mut forward, &mut phases),
-        Method::Iter => iterative::solve(p, load, &uni, &sopts, &mut forward, &mut phases),
+        _ if nonsym => nonsymmetric::solve(&job, trace),
+        Method::Auto | Method::Condense => condensed::solve(&job, &mut cache.condensed, trace),
+        Method::Ancien => guyan::solve(&job, trace),
+        Method::Creux => sparse::solve(&job, &mut cache.sparse, trace),
+        Method::Iter => iterative::solve(&job, trace),
     };
     let (sol, active) = match res {
         Ok(r) => r,

@@ -11,8 +11,8 @@
 //! symmetric positive definite operator nothing guarantees convergence:
 //! when a status set repeats in that mode too, the error says so.
 
-use super::backend::{Outcome, StatusError};
-use super::status::{IterRecord, Rule, StatusOptions, UNCONVERGED};
+use super::backend::{Job, Outcome, StatusError, Trace};
+use super::status::{IterRecord, Rule, UNCONVERGED};
 use crate::solve::bilateral::direct::{self, DirectOptions};
 use crate::solve::error::SolveError;
 use crate::solve::problem::{Condition, Kind, Load, Problem, Solution};
@@ -23,14 +23,9 @@ const EPS: f64 = 1e-10;
 /// Activation threshold of the damped rule, relative to the worst violation.
 const ACTIVATE: f64 = 0.7;
 
-pub(super) fn solve(
-    p: &Problem,
-    load: &Load,
-    uni: &[usize],
-    sopts: &StatusOptions,
-    on_iter: &mut dyn FnMut(&IterRecord),
-    phases: &mut Vec<(&'static str, f64)>,
-) -> Outcome {
+pub(super) fn solve(job: &Job, trace: &mut Trace) -> Outcome {
+    let Job { p, load, uni, sopts } = *job;
+    let Trace { on_iter, phases } = trace;
     let t0 = std::time::Instant::now();
     let m = uni.len();
     let mut active = match &sopts.start {

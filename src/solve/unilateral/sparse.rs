@@ -28,8 +28,8 @@
 
 use faer::Mat;
 
-use super::backend::{values_hash, Outcome, StatusError};
-use super::status::{iterate, Backend, IterRecord, RigidMode, StatusOptions, EPS_PIV, EPS_SING};
+use super::backend::{values_hash, Job, Outcome, StatusError, Trace};
+use super::status::{iterate, Backend, RigidMode, EPS_PIV, EPS_SING};
 use crate::solve::bilateral::direct::check_structure;
 use crate::solve::bilateral::lagrange::{self, Doubled};
 use crate::solve::bilateral::linear::SymFactor;
@@ -469,15 +469,9 @@ impl Backend for Op<'_> {
 }
 
 /// CREUX for `p` (unilateral conditions `uni`).
-pub(super) fn solve(
-    p: &Problem,
-    load: &Load,
-    uni: &[usize],
-    sopts: &StatusOptions,
-    kept: &mut Option<Creux>,
-    on_iter: &mut dyn FnMut(&IterRecord),
-    phases: &mut Vec<(&'static str, f64)>,
-) -> Outcome {
+pub(super) fn solve(job: &Job, kept: &mut Option<Creux>, trace: &mut Trace) -> Outcome {
+    let Job { p, load, uni, sopts } = *job;
+    let Trace { on_iter, phases } = trace;
     let g = StatusError::Global;
     let t0 = std::time::Instant::now();
     let structure = lagrange::structure_hash(p);

@@ -9,9 +9,7 @@ pub mod condenser;
 pub mod operator;
 
 use super::backend::values_hash;
-use super::backend::{Outcome, StatusError};
-use super::status::{IterRecord, StatusOptions};
-use crate::solve::problem::{Load, Problem};
+use super::backend::{Job, Outcome, StatusError, Trace};
 use condenser::Condenser;
 use std::time::Instant;
 
@@ -55,14 +53,9 @@ pub struct KeptCondenser {
 }
 
 /// CONDENSE: interrupted factorisation, dense status loop, recovery.
-pub(super) fn solve(
-    p: &Problem,
-    load: &Load,
-    sopts: &StatusOptions,
-    kept: &mut KeptCondenser,
-    on_iter: &mut dyn FnMut(&IterRecord),
-    phases: &mut Vec<(&'static str, f64)>,
-) -> Outcome {
+pub(super) fn solve(job: &Job, kept: &mut KeptCondenser, trace: &mut Trace) -> Outcome {
+    let Job { p, load, sopts, .. } = *job;
+    let Trace { on_iter, phases } = trace;
     let g = StatusError::Global;
     let t0 = Instant::now();
     let values = values_hash(p);

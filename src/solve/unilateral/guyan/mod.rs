@@ -12,22 +12,16 @@ pub mod reduced;
 
 pub use reduced::{ReducedProblem, ReducedResult};
 
-use super::backend::{Outcome, StatusError};
-use super::status::{IterRecord, StatusOptions};
+use super::backend::{Job, Outcome, StatusError, Trace};
 use crate::solve::bilateral::schur::schur_onto;
 use crate::solve::error::SolveError;
 use crate::solve::problem::{Load, Problem, Solution};
 
 /// Solves `p` by the old method. Records and status-loop errors use
 /// positions among the unilateral conditions (`uni`); the caller maps them.
-pub(super) fn solve(
-    p: &Problem,
-    load: &Load,
-    uni: &[usize],
-    sopts: &StatusOptions,
-    on_iter: &mut dyn FnMut(&IterRecord),
-    phases: &mut Vec<(&'static str, f64)>,
-) -> Outcome {
+pub(super) fn solve(job: &Job, trace: &mut Trace) -> Outcome {
+    let Job { p, load, uni, sopts } = *job;
+    let Trace { on_iter, phases } = trace;
     let t0 = std::time::Instant::now();
     // Indices are used below before any factorisation checks them.
     crate::solve::bilateral::lagrange::validate(p).map_err(StatusError::Global)?;

@@ -2,6 +2,7 @@
 //! status iteration and through the old method.
 
 use super::kit::*;
+use crate::solve::unilateral::condensed::operator::run;
 use crate::solve::unilateral::status::{Rule, StatusOptions};
 use crate::solve::SolveError;
 use faer::Mat;
@@ -97,7 +98,7 @@ fn b_intermediate_values_all_active() {
     let p = chain(1.0);
     let b = build(&p);
     let mut recs = Vec::new();
-    let r = crate::solve::unilateral::condensed::operator::run(&b.c, &opts(), &mut |r| recs.push(r.clone())).unwrap();
+    let r = run(&b.c, &opts(), &mut |r| recs.push(r.clone())).unwrap();
     assert_eq!(recs[0].released, vec![0]);
     assert!(recs[0].activated.is_empty());
     assert_eq!(recs.len(), 2);
@@ -126,11 +127,7 @@ fn c_continuous_beam_with_uplift() {
     assert!(a.iterations <= 3, "{} solves", a.iterations);
     // The first solve (all active) has the three-moment reactions.
     let b = build(&p);
-    let r = crate::solve::unilateral::condensed::operator::run(
-        &b.c,
-        &StatusOptions { max_iter: Some(1), ..opts() },
-        &mut |_| {},
-    );
+    let r = run(&b.c, &StatusOptions { max_iter: Some(1), ..opts() }, &mut |_| {});
     assert!(matches!(r, Err(SolveError::NoConvergence { iterations: 1, .. })));
 }
 
@@ -220,7 +217,7 @@ fn f_cycling_needs_the_single_change_fallback() {
     // Damped: {1,2,3} → {1} → {} → {3} → {1,3}, 5 solves.
     let b = build(&p);
     let mut recs = Vec::new();
-    crate::solve::unilateral::condensed::operator::run(&b.c, &opts(), &mut |r| recs.push(r.clone())).unwrap();
+    run(&b.c, &opts(), &mut |r| recs.push(r.clone())).unwrap();
     let counts: Vec<usize> = recs.iter().map(|r| r.active_count).collect();
     assert_eq!(counts, vec![3, 1, 0, 1, 2]);
     let a = both(&p, &opts(), 1e-10);
@@ -230,7 +227,7 @@ fn f_cycling_needs_the_single_change_fallback() {
     // least-index fallback finishes within 3 more.
     let pdas = StatusOptions { rule: Rule::Pdas, ..opts() };
     let mut recs = Vec::new();
-    let r = crate::solve::unilateral::condensed::operator::run(&b.c, &pdas, &mut |r| recs.push(r.clone())).unwrap();
+    let r = run(&b.c, &pdas, &mut |r| recs.push(r.clone())).unwrap();
     let first_safe = recs.iter().position(|r| r.mode == "safe").expect("cycle detected");
     assert!(first_safe < 4, "detected at solve {}", first_safe + 1);
     assert!(recs.len() <= first_safe + 1 + 3);

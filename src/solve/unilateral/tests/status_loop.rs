@@ -4,6 +4,7 @@
 
 use super::kit::*;
 use super::status::{chain, cycling, opts, two_spans, warm};
+use crate::solve::unilateral::condensed::operator::run;
 use crate::solve::unilateral::status::StatusOptions;
 use crate::solve::SolveError;
 use faer::Mat;
@@ -13,7 +14,7 @@ fn records_are_consistent() {
     let p = chain(0.4);
     let b = build(&p);
     let mut seen = Vec::new();
-    let r = crate::solve::unilateral::condensed::operator::run(&b.c, &opts(), &mut |r| seen.push(r.clone())).unwrap();
+    let r = run(&b.c, &opts(), &mut |r| seen.push(r.clone())).unwrap();
     assert_eq!(seen, r.records);
     for (k, rec) in r.records.iter().enumerate() {
         assert_eq!(rec.iteration, k + 1);
@@ -28,19 +29,13 @@ fn bad_input_is_an_error_not_a_panic() {
     let p = spring(10.0, 5.0).cond(&[(0, 1.0)], MAXI, 1.0);
     let mut b = build(&p);
     b.c.h.push(1.0);
-    assert!(matches!(
-        crate::solve::unilateral::condensed::operator::run(&b.c, &opts(), &mut |_| {}),
-        Err(SolveError::Other(_))
-    ));
+    assert!(matches!(run(&b.c, &opts(), &mut |_| {}), Err(SolveError::Other(_))));
     let b = build(&p);
-    let r = crate::solve::unilateral::condensed::operator::run(&b.c, &warm(vec![true, false]), &mut |_| {});
+    let r = run(&b.c, &warm(vec![true, false]), &mut |_| {});
     assert!(matches!(r, Err(SolveError::Other(_))));
     let mut b = build(&p);
     b.c.h[0] = f64::NAN;
-    assert!(matches!(
-        crate::solve::unilateral::condensed::operator::run(&b.c, &opts(), &mut |_| {}),
-        Err(SolveError::Other(_))
-    ));
+    assert!(matches!(run(&b.c, &opts(), &mut |_| {}), Err(SolveError::Other(_))));
 }
 
 #[test]
