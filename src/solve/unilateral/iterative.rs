@@ -5,7 +5,7 @@
 //! CONDENSE; u is recovered by one more solve.
 //!
 //! Bilateral conditions (BLOQ and RELA) are eliminated by substitution
-//! ([`super::eliminate`]): each gets a slave unknown expressed over the
+//! ([`crate::solve::bilateral::eliminate`]): each gets a slave unknown expressed over the
 //! others, and H = TᵀKT + C_UᵀWC_U on the masters is SPD whenever the
 //! problem is well posed, which CG needs (doubled multipliers would make
 //! it indefinite). Their multipliers come back from the residual forces.

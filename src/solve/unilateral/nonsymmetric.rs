@@ -4,7 +4,7 @@
 //! exists here, so this is what Cast3M itself does for a non-symmetric
 //! matrix (unilateral.md §3.6): each status iteration solves the whole
 //! system, the active unilateral conditions acting as equalities, through
-//! the sparse LU of [`super::direct`]. The decisions are the same as the
+//! the sparse LU of [`crate::solve::bilateral::direct`]. The decisions are the same as the
 //! symmetric loop's — release every wrong-sign condition first, else
 //! activate the violated ones within 70 % of the worst; a repeated status
 //! set switches to one change per iteration (least index) — but without a

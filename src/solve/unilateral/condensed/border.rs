@@ -21,7 +21,7 @@
 //! A₁₁ is the leading principal block of the elimination order, so its
 //! pivots are the ones the full factorisation would meet before the tail:
 //! a zero pivot there is the same failure, and the caller falls back to the
-//! whole-matrix path ([`super::condense`]) for its diagnostics.
+//! whole-matrix path ([`crate::solve::bilateral::schur`]) for its diagnostics.
 
 use faer::linalg::matmul::matmul;
 use faer::linalg::matmul::triangular::{matmul as tri_matmul, BlockStructure};

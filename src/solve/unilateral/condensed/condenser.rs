@@ -2,7 +2,7 @@
 //! §3.3): the unilateral problem condensed onto the second multipliers of
 //! its unilateral conditions by one interrupted factorisation.
 //!
-//! Its normal path is [`super::border`]: the sparse factor holds everything
+//! Its normal path is `border`: the sparse factor holds everything
 //! but those multipliers, and the Schur complement S of the tail is formed
 //! from the border, supernode by supernode. Its fallback is the
 //! whole-matrix path of [`crate::solve::bilateral::schur`] (a zero pivot

@@ -1,7 +1,7 @@
 //! CONDENSE, the default method (unilateral.md §3): one interrupted LDLᵀ
 //! gives the condensed operator on the second multipliers of the
 //! unilateral conditions ([`condenser`], normally through the border of
-//! [`border`]); the status loop runs on that dense m×m problem through
+//! `border`); the status loop runs on that dense m×m problem through
 //! [`operator`]; one partial substitution recovers u and the multipliers.
 
 mod border;
@@ -16,7 +16,7 @@ use std::time::Instant;
 /// The problem condensed onto the second multipliers of the `m` unilateral
 /// conditions (unilateral.md §3.2, negated quarter-scaled form):
 /// `T x = h` with `T = G − A·P_I`, where `P_I` is the 0/1 diagonal of the
-/// inactive conditions. Produced by `condense`, consumed by `status`.
+/// inactive conditions. Produced by the condenser (or by ITER), consumed by [`operator::run`].
 /// Indices `0..m` here are positions among the unilateral conditions only.
 #[derive(Debug, Clone)]
 pub struct Condensed {

@@ -67,7 +67,7 @@ pub struct StatusOptions {
 pub const UNCONVERGED: &str = "unconverged";
 
 /// What happened at one solve. Indices are positions 0..m in the
-/// [`Condensed`] data.
+/// [`crate::solve::unilateral::Condensed`] data.
 #[derive(Debug, Clone, PartialEq)]
 pub struct IterRecord {
     /// 1-based number of the solve.
