@@ -30,6 +30,7 @@ pub mod unilateral;
 
 pub use bilateral::direct;
 pub use bilateral::pool::FactorPool;
+pub use bilateral::schur::{schur_onto, SchurOnto};
 pub use cache::SolverCache;
 pub use error::SolveError;
 pub use numbering::{Assembled, LoadError};

@@ -5,11 +5,13 @@
 mod table;
 
 pub(crate) use table::apply;
+// The operator kind of the numeric core, where families have always found it.
+pub(crate) use crate::value::arith::Bin;
 
 use super::{Args, OpDef};
 use crate::error::Result;
 use crate::eval::Interp;
-use crate::value::arith::{self, Bin};
+use crate::value::arith;
 use crate::value::Value;
 
 pub(crate) const OPS: &[OpDef] = &[
