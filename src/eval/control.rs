@@ -88,6 +88,10 @@ impl Interp {
             Some(c) => match self.eval_items(&c.items)?.as_slice() {
                 [Value::Int(n)] if *n >= 0 => Some(*n),
                 [Value::Int(_)] => None,
+                // A literal of ten digits or more is a FLOTTANT (redlec.eso),
+                // and Cast3M decks count passes with one (shock2d: `NITER =
+                // 1000000000`): a whole count in a FLOTTANT is taken.
+                [Value::Float(x)] if x.fract() == 0.0 && (0.0..9.0e18).contains(x) => Some(*x as i64),
                 [v] => {
                     return Err(Error::runtime(format!(
                         "REPETER {}: the count must be an ENTIER, found {}",
