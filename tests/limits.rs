@@ -23,3 +23,68 @@ fn deep_table_chain_across_entries() {
     g.run_str("<repl#6>", "repeter b 100000 ; n = table ; n . t = 1 ; t = n ; fin b ;").unwrap();
     drop(g);
 }
+
+/// Operators that can overflow say so, by name, at their line: no
+/// infinity or NaN reaches an object (a NaN passes every `SI (x > tol)`).
+#[test]
+fn overflowing_operators_are_named() {
+    for (src, op) in [
+        ("x = somm (prog 1.e308 1.e308) ;", "SOMM"),
+        ("l = prog 1.e300 pas 1.e307 npas 30 ;", "PROG"),
+        ("ev = evol manu 'X' (prog 0. 1.e308) 'Y' (prog 1.e308 1.e308) ; i = intg ev ;", "INTG"),
+        ("opti dime 2 ; p = 1.e308 1.e308 ; d = dist p (-1.e308 -1.e308) ;", "DIST"),
+        ("opti dime 2 elem seg2 ; l = droi 2 (0. 0.) (1.e308 0.) ;", "DROI"),
+        (
+            "opti dime 2 elem seg2 ; l = droi 2 (0. 0.) (1. 0.) ; m = l plus (1.e308 0.) ; n = m plus (1.e308 0.) ;",
+            "PLUS",
+        ),
+    ] {
+        let mut g = Interpreter::new();
+        let e = g.run_str("t", src).expect_err(src);
+        assert!(e.message.starts_with(&format!("{}: ", op)), "{}: {}", src, e.message);
+        assert!(e.span.is_some(), "{}", src);
+    }
+}
+
+/// RESO refuses non-finite data. No operator makes any, so they can only
+/// come from the host (`Interpreter::set`).
+#[test]
+fn reso_refuses_non_finite_data_from_the_host() {
+    use gibi::value::{Chpoint, Nature};
+    use gibi::Value;
+    use std::rc::Rc;
+    let deck = "opti dime 2 elem seg2 mode plan cont ; p0 = 0. 0. ; p1 = 2. 0. ; l = droi 4 p0 p1 ;
+        mo = mode l mecanique elastique barr ; cl = (bloq 'UX' p0) et (bloq 'UY' l) ;
+        k = (rigi mo (mate mo youn 1. nu 0.3 sect 1.)) et cl ; d = depi cl 0.5 ;";
+    let session = || {
+        let mut g = Interpreter::new();
+        g.run_str("setup", deck).unwrap();
+        g
+    };
+    let tip = |g: &Interpreter| match g.get("P1") {
+        Some(Value::Point(n)) => n,
+        v => panic!("{:?}", v),
+    };
+    // A load of +infinity.
+    let mut g = session();
+    let f = Chpoint::from_entries(Nature::Discret, [(tip(&g), "FX", f64::INFINITY)]);
+    g.set("F", Value::Chpo(Rc::new(f)));
+    let e = g.run_str("t", "u = reso k f ;").unwrap_err();
+    assert!(e.message.contains("RESO: the loads hold an overflow"), "{}", e.message);
+    // An imposed value that is NaN.
+    let mut g = session();
+    let d: Rc<Chpoint> = g.get_as("D").unwrap();
+    let nan = Chpoint::from_entries(Nature::Discret, d.entries().map(|(n, c, _)| (n, c, f64::NAN)));
+    g.set("D", Value::Chpo(Rc::new(nan)));
+    let e = g.run_str("t", "u = reso k d ;").unwrap_err();
+    assert!(e.message.contains("RESO: the imposed values hold an undefined value (NaN)"), "{}", e.message);
+    // A matrix term that is NaN.
+    let mut g = session();
+    let k: Rc<gibi::value::Rigidite> = g.get_as("K").unwrap();
+    let mut k = (*k).clone();
+    k.cache = Default::default();
+    k.blocks[0].mats[0] = f64::NAN;
+    g.set("K", Value::Rigi(Rc::new(k)));
+    let e = g.run_str("t", "u = reso k d ;").unwrap_err();
+    assert!(e.message.contains("RESO: the matrix holds an undefined value (NaN)"), "{}", e.message);
+}

@@ -148,9 +148,11 @@ fn reso(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let asm = assembled(&r);
     let loads: Vec<Load> =
         rhs.iter().map(|c| asm.load(it, &[c])).collect::<Result<_>>().map_err(|e| a.err(e.message))?;
+    finite_data(&asm, &loads).map_err(|e| a.err(e))?;
     let unilateral = r.n_unilateral() > 0 && !o.nounil;
     if o.ense && !unilateral {
         let (sols, extra) = reso_ense(it, &r, &asm, &loads, &o)?;
+        finite_solutions(&sols).map_err(|e| a.err(e))?;
         let mut out = regroup(&given, sols);
         out.extend(extra);
         return Ok(out);
@@ -167,7 +169,42 @@ fn reso(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     } else {
         solve_direct(it, &r, &asm, &loads, &o)?
     };
+    finite_solutions(&sols).map_err(|e| a.err(e))?;
     Ok(regroup(&given, sols))
+}
+
+/// RESO's data hold finite numbers only: an infinity or a NaN in the
+/// matrix, the loads or the imposed values would come out as a NaN
+/// solution (and a NaN passes every `SI (err > tol)` check).
+fn finite_data(asm: &Assembled, loads: &[Load]) -> std::result::Result<(), String> {
+    use crate::value::finite::describe;
+    let bad = |x: &f64| !x.is_finite();
+    let p = &asm.problem;
+    let in_matrix = p.k.entries.iter().map(|e| &e.2);
+    let in_conditions = p.conditions.iter().flat_map(|c| c.terms.iter().chain(c.dual.iter().flatten())).map(|t| &t.1);
+    if let Some(x) = in_matrix.chain(in_conditions).find(|x| bad(x)) {
+        return Err(format!("the matrix holds {}", describe(*x)));
+    }
+    if let Some(x) = loads.iter().flat_map(|l| &l.f).find(|x| bad(x)) {
+        return Err(format!("the loads hold {}", describe(*x)));
+    }
+    if let Some(x) = loads.iter().flat_map(|l| &l.d).find(|x| bad(x)) {
+        return Err(format!("the imposed values hold {}", describe(*x)));
+    }
+    Ok(())
+}
+
+/// Finite data can still give an overflowing solution (a load of 1.E308
+/// on a soft structure): an error, whatever 'NOID' says.
+fn finite_solutions(sols: &[Rc<Chpoint>]) -> std::result::Result<(), String> {
+    let value = sols.iter().find_map(|c| crate::value::finite::first_non_finite(&Value::Chpo(c.clone())));
+    match value {
+        Some(x) => Err(format!(
+            "the solution holds {}: the loads or imposed values are too large for this matrix",
+            crate::value::finite::describe(x)
+        )),
+        None => Ok(()),
+    }
 }
 
 /// Every load on one factorisation, reused from the pool when the
@@ -475,12 +512,14 @@ fn unil(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     }
     let asm = assembled(&r);
     let load = asm.load(it, &[&f]).map_err(|e| a.err(e.message))?;
+    finite_data(&asm, std::slice::from_ref(&load)).map_err(|e| a.err(e))?;
     let (sol, rep) = solve_unil(it, &r, &asm, &load, &o)?;
     record(it, &rep);
     // solve_unil kept the diagnostics with the RIGIDITE (EXTR RIG 'CONT').
     let t = r.cache.borrow().last_unil.clone().unwrap_or_else(|| diagnostics(&r, &sol, &rep));
-    let field = asm.field(&r, &sol);
-    Ok(vec![Value::Chpo(Rc::new(field)), t])
+    let field = Rc::new(asm.field(&r, &sol));
+    finite_solutions(std::slice::from_ref(&field)).map_err(|e| a.err(e))?;
+    Ok(vec![Value::Chpo(field), t])
 }
 
 #[allow(dead_code)]

@@ -6,6 +6,7 @@
 mod describe;
 mod display;
 pub mod field;
+pub mod finite;
 pub mod model;
 pub mod rigidity;
 pub mod table;
