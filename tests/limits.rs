@@ -88,3 +88,34 @@ fn reso_refuses_non_finite_data_from_the_host() {
     let e = g.run_str("t", "u = reso k d ;").unwrap_err();
     assert!(e.message.contains("RESO: the matrix holds an undefined value (NaN)"), "{}", e.message);
 }
+
+/// A syntax error on a 1.3 MB line shows a window around the column, not
+/// the line and a caret line as long; control characters are escaped.
+#[test]
+fn error_excerpts_are_clipped_and_escaped() {
+    let line = format!("x = {} (2 ;", "1 + ".repeat(330_000));
+    let mut g = Interpreter::new();
+    let e = g.run_str("long", &format!("y = 1 ;\n{}\n", line)).unwrap_err();
+    let r = e.render();
+    assert!(r.starts_with(&format!("long:2:{}: syntax error", line.len())), "{}", &r[..100]);
+    assert!(r.len() < 1000, "{} bytes", r.len());
+    assert!(r.contains("… + 1 + 1"), "{}", r);
+    // The caret is under the ';' that closes nothing.
+    let lines: Vec<&str> = r.lines().collect();
+    let (shown, marks) = (lines[2], lines[3]);
+    assert_eq!(marks.find('^').and_then(|i| shown.chars().nth(i)), Some(';'), "{}", r);
+
+    // Text from the deck in the message, the line and the file name.
+    let mut g = Interpreter::new();
+    let e = g.run_str("deck\x07.dgibi", "w = extr 'a\x1b]0;T\x07' \x1b[2J ;").unwrap_err();
+    let r = e.render();
+    assert!(!r.chars().any(|c| c.is_control() && c != '\n'), "{:?}", r);
+    assert!(r.contains("deck\\x07.dgibi:1:") && r.contains("\\x1B[2J"), "{}", r);
+    // The caret still points at the operator, after escaped characters too.
+    let e = g.run_str("t", "w = '\x1b\x1b' ; x = extr w 'a' ;").unwrap_err();
+    let r = e.render();
+    let lines: Vec<&str> = r.lines().collect();
+    let at = lines[3].find('^').map(|i| lines[2].chars().skip(i).take(4).collect::<String>());
+    assert_eq!(at.as_deref(), Some("extr"), "{}", r);
+    assert!(!format!("{}", e).chars().any(|c| c.is_control()));
+}
