@@ -19,8 +19,12 @@ pub enum ErrorKind {
     Runtime,
     /// `ERRE n` with a severity that aborts the run (exit 70).
     Abort,
-    /// A file could not be read or written, or the host forbade it.
+    /// A file could not be read (exit 66).
     Io,
+    /// A file could not be written (exit 73).
+    Write,
+    /// The host's file policy refused a path (exit 77).
+    Denied,
     /// Not an error: `FIN ;` reached inside a procedure call.
     Finished,
 }

@@ -85,6 +85,7 @@ pub struct InterpreterBuilder {
     files: FilePolicy,
     registry: Registry,
     step_limit: Option<u64>,
+    report_files: bool,
 }
 
 impl InterpreterBuilder {
@@ -104,6 +105,13 @@ impl InterpreterBuilder {
         self.step_limit = Some(n);
         self
     }
+    /// Whether each file a script writes is reported by a line `wrote
+    /// <file>` on the output (relative to the allowed directory). Default:
+    /// reported.
+    pub fn report_files(mut self, on: bool) -> Self {
+        self.report_files = on;
+        self
+    }
     /// Add an operator before the registry is frozen.
     pub fn operator(mut self, op: OpSpec) -> Self {
         self.registry.insert(op);
@@ -113,6 +121,7 @@ impl InterpreterBuilder {
         let mut interp = Interp::new(Rc::new(self.registry), self.out);
         interp.files = self.files;
         interp.step_limit = self.step_limit;
+        interp.report_files = self.report_files;
         Interpreter { interp }
     }
 }
@@ -140,6 +149,7 @@ impl Interpreter {
             files: FilePolicy::Nothing,
             registry: Registry::standard(),
             step_limit: None,
+            report_files: true,
         }
     }
 

@@ -45,10 +45,10 @@ fn custom_operator_reads_arguments_by_type_on_both_sides() {
 
 #[test]
 fn file_policy_defaults_to_nothing() {
-    assert!(FilePolicy::Nothing.check("a.txt").is_err());
+    assert!(FilePolicy::Nothing.check_read("a.txt").is_err());
     let root = std::env::temp_dir();
-    assert!(FilePolicy::Under(root.clone()).check("sub/a.txt").is_ok());
-    assert!(FilePolicy::Under(root).check("../a.txt").is_err());
+    assert!(FilePolicy::Under(root.clone()).check_write("sub/a.txt").is_ok());
+    assert!(FilePolicy::Under(root).check_write("../a.txt").is_err());
 }
 
 #[test]

@@ -4,11 +4,13 @@
 mod control;
 pub mod env;
 mod fast;
+mod files;
 pub mod machine;
 mod options;
 mod proc;
 
-pub use options::{FilePolicy, Options, Timers};
+pub use files::FilePolicy;
+pub use options::{Options, Timers};
 
 use crate::error::{Error, ErrorKind, Result};
 use crate::fem::mesh::Nodes;
@@ -30,6 +32,9 @@ pub struct Interp {
     /// The source being run (for error locations).
     pub source: Rc<Source>,
     pub files: FilePolicy,
+    /// Whether a line `wrote <file>` goes to the output for each file
+    /// written (`gibi --quiet` turns it off).
+    pub report_files: bool,
     pub timers: Timers,
     pub title: String,
     /// Set by `FIN ;`: the run is over.
@@ -103,6 +108,7 @@ impl Interp {
             out,
             source: Source::new("<none>", ""),
             files: FilePolicy::Nothing,
+            report_files: true,
             timers: Timers::default(),
             title: String::new(),
             finished: false,

@@ -9,7 +9,7 @@
 //! keys no OPTI word can produce.
 
 use super::{Args, OpDef};
-use crate::error::{Error, Result};
+use crate::error::{Error, ErrorKind, Result};
 use crate::eval::{FilePolicy, Interp};
 use crate::fem::mesh::Mesh;
 use crate::io::{self, gmsh, mtx, plot, vtk};
@@ -75,6 +75,19 @@ fn io_err(e: io::IoError) -> Error {
     Error::io(e.0)
 }
 
+fn write_err(e: io::IoError) -> Error {
+    Error::new(ErrorKind::Write, e.0)
+}
+
+/// One line per file written (unless the host turned them off), relative
+/// to the directory the run may use: users see where their output went.
+fn wrote(it: &mut Interp, path: &Path) {
+    if it.report_files {
+        let shown = it.files.display(path);
+        it.println(&format!("wrote {}", shown));
+    }
+}
+
 /// The base name set by OPTI SORT, without a known extension.
 fn sort_base(it: &Interp) -> Option<String> {
     let s = it.opts.other.get("SORT")?.trim();
@@ -86,11 +99,13 @@ fn sort_base(it: &Interp) -> Option<String> {
     Some(s[..s.len() - cut].to_string())
 }
 
-/// A path the script may write, with its directory created.
+/// A path the script may write (its real path: see eval::FilePolicy),
+/// with its directory created.
 fn out_path(it: &Interp, name: &str) -> Result<PathBuf> {
-    let p = it.files.check(name)?;
+    let p = it.files.check_write(name)?;
     if let Some(dir) = p.parent().filter(|d| !d.as_os_str().is_empty()) {
-        std::fs::create_dir_all(dir).map_err(|e| Error::io(format!("cannot create {}: {}", dir.display(), e)))?;
+        std::fs::create_dir_all(dir)
+            .map_err(|e| Error::new(ErrorKind::Write, format!("cannot create {}: {}", dir.display(), e)))?;
     }
     Ok(p)
 }
@@ -176,7 +191,11 @@ fn sort_vtk(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     }
     let base = sort_base(it).unwrap_or_else(|| "gibi".into());
     match time {
-        None => grid.write(&out_path(it, &format!("{}.vtu", base))?).map_err(io_err)?,
+        None => {
+            let p = out_path(it, &format!("{}.vtu", base))?;
+            grid.write(&p).map_err(write_err)?;
+            wrote(it, &p);
+        }
         Some(t) => {
             // Steps of the collection being written: "base\nt|file\n…".
             let key = "SORT PVD";
@@ -190,10 +209,14 @@ fn sort_vtk(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 _ => Vec::new(),
             };
             let file = format!("{}_{:04}.vtu", base, steps.len());
-            grid.write(&out_path(it, &file)?).map_err(io_err)?;
+            let p = out_path(it, &file)?;
+            grid.write(&p).map_err(write_err)?;
+            wrote(it, &p);
             let local = Path::new(&file).file_name().map_or(file.clone(), |f| f.to_string_lossy().into_owned());
             steps.push((t, local));
-            vtk::write_pvd(&out_path(it, &format!("{}.pvd", base))?, &steps).map_err(io_err)?;
+            let p = out_path(it, &format!("{}.pvd", base))?;
+            vtk::write_pvd(&p, &steps).map_err(write_err)?;
+            wrote(it, &p);
             let state: Vec<String> = steps.iter().map(|(t, f)| format!("{:e}|{}", t, f)).collect();
             it.opts.other.insert(key.into(), format!("{}\n{}", base, state.join("\n")));
         }
@@ -240,7 +263,10 @@ fn sort_mat(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let rig = a.req::<Rc<Rigidite>>()?;
     let file = a.req::<String>()?;
     let (triplets, unknowns, comments) = assemble(&rig);
-    mtx::write(&out_path(it, &file)?, triplets, &unknowns, &comments).map_err(io_err)?;
+    let p = out_path(it, &file)?;
+    mtx::write(&p, triplets, &unknowns, &comments).map_err(write_err)?;
+    wrote(it, &p);
+    wrote(it, &mtx::dofs_path(&p));
     Ok(vec![])
 }
 
@@ -315,7 +341,7 @@ fn assemble(r: &Rigidite) -> Assembled {
 fn lire(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     a.req_keyword(&["GMSH"])?;
     let file = a.req::<String>()?;
-    let path = it.files.check(&file)?;
+    let path = it.files.check_read(&file)?;
     let g = gmsh::read(&path).map_err(io_err)?;
     let dime = it.opts.dime;
     for (i, x) in g.coords.iter().enumerate() {
@@ -420,7 +446,8 @@ fn trac(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     }
     let Some((format, path)) = picture_path(it)? else { return Ok(vec![]) };
     let pic = plot::MeshPicture { nodes: &it.nodes, meshes, field, title };
-    plot::draw_mesh(&pic, format, &path).map_err(io_err)?;
+    plot::draw_mesh(&pic, format, &path).map_err(write_err)?;
+    wrote(it, &path);
     Ok(vec![])
 }
 
@@ -521,6 +548,7 @@ fn dess(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             .collect(),
     };
     let Some((format, path)) = picture_path(it)? else { return Ok(vec![]) };
-    plot::draw_curves(&pic, format, &path).map_err(io_err)?;
+    plot::draw_curves(&pic, format, &path).map_err(write_err)?;
+    wrote(it, &path);
     Ok(vec![])
 }

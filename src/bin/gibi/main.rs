@@ -1,6 +1,7 @@
 //! The `gibi` command: run decks, a snippet, stdin, or open the REPL.
 //! Exit codes follow sysexits: 65 for a syntax error, 70 for a runtime
-//! error or an aborting ERRE, 66 for an unreadable file.
+//! error or an aborting ERRE, 66 for an unreadable file, 73 for a file
+//! that could not be written, 77 for a path the file policy refuses.
 
 mod repl;
 
@@ -25,12 +26,17 @@ struct Cli {
     /// Print the operator catalogue as JSON and exit.
     #[arg(long = "list-operators")]
     list_operators: bool,
+    /// Do not print a line for each file written (and no REPL banner).
+    #[arg(short = 'q', long)]
+    quiet: bool,
 }
 
 fn exit_code(kind: ErrorKind) -> u8 {
     match kind {
         ErrorKind::Syntax => 65,
         ErrorKind::Io => 66,
+        ErrorKind::Write => 73,
+        ErrorKind::Denied => 77,
         _ => 70,
     }
 }
@@ -73,7 +79,8 @@ fn os_bytes(s: &OsStr) -> std::borrow::Cow<'_, [u8]> {
 fn run() -> ExitCode {
     let cli = Cli::parse();
     let cwd = std::env::current_dir().unwrap_or_else(|_| ".".into());
-    let mut gibi = Interpreter::builder().output(std::io::stdout()).files(FilePolicy::Under(cwd)).build();
+    let mut gibi =
+        Interpreter::builder().output(std::io::stdout()).files(FilePolicy::Under(cwd)).report_files(!cli.quiet).build();
 
     if cli.list_operators {
         println!("{}", repl::catalogue_json(gibi.registry()));
@@ -93,7 +100,7 @@ fn run() -> ExitCode {
     }
     if inputs.is_empty() {
         if std::io::stdin().is_terminal() && !cli.check {
-            return repl::run(gibi);
+            return repl::run(gibi, cli.quiet);
         }
         inputs.push(("<stdin>".into(), read_stdin()));
     }

@@ -182,7 +182,7 @@ pub fn catalogue_json(registry: &Registry) -> String {
     format!("[\n{}\n]", items.join(",\n"))
 }
 
-pub fn run(mut gibi: Interpreter) -> ExitCode {
+pub fn run(mut gibi: Interpreter, quiet: bool) -> ExitCode {
     let names = Rc::new(RefCell::new(Vec::new()));
     refresh_names(&gibi, &names);
     let mut rl: Editor<GibiHelper, rustyline::history::DefaultHistory> = match Editor::new() {
@@ -197,7 +197,9 @@ pub fn run(mut gibi: Interpreter) -> ExitCode {
     if let Some(h) = &hist {
         let _ = rl.load_history(h);
     }
-    println!("gibi {} — Gibiane interpreter. :help for help, Ctrl-D to leave.", env!("CARGO_PKG_VERSION"));
+    if !quiet {
+        println!("gibi {} — Gibiane interpreter. :help for help, Ctrl-D to leave.", env!("CARGO_PKG_VERSION"));
+    }
     let mut n = 0;
     loop {
         match rl.readline("gibi> ") {
