@@ -25,6 +25,9 @@ pub enum ErrorKind {
     Write,
     /// The host's file policy refused a path (exit 77).
     Denied,
+    /// The run was stopped from outside (Ctrl-C, an embedder's
+    /// `InterruptHandle`): exit 130.
+    Interrupted,
     /// Not an error: `FIN ;` reached inside a procedure call.
     Finished,
 }
@@ -92,6 +95,7 @@ impl Error {
         let label = match self.kind {
             ErrorKind::Syntax => "syntax error",
             ErrorKind::Abort => "aborted",
+            ErrorKind::Interrupted => "interrupted",
             _ => "error",
         };
         let mut out = String::new();

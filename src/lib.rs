@@ -33,7 +33,7 @@ pub mod syntax;
 pub mod value;
 
 pub use error::{Error, ErrorKind, Result};
-pub use eval::FilePolicy;
+pub use eval::{FilePolicy, InterruptHandle};
 pub use ops::{Args, OpSpec, Registry};
 pub use value::Value;
 
@@ -151,6 +151,25 @@ impl Interpreter {
             step_limit: None,
             report_files: true,
         }
+    }
+
+    /// A handle that stops the running evaluation from any thread: the run
+    /// returns an [`ErrorKind::Interrupted`] error at the instruction it
+    /// reached (within a fraction of a second), and every object stays.
+    ///
+    /// ```
+    /// let mut gibi = gibi::Interpreter::new();
+    /// let stop = gibi.interrupt_handle();
+    /// std::thread::spawn(move || {
+    ///     std::thread::sleep(std::time::Duration::from_millis(50));
+    ///     stop.interrupt();
+    /// });
+    /// let e = gibi.run_str("t", "x = 1 ; repeter b ; fin b ;").unwrap_err();
+    /// assert_eq!(e.kind, gibi::ErrorKind::Interrupted);
+    /// assert_eq!(gibi.get_f64("x"), Some(1.0));
+    /// ```
+    pub fn interrupt_handle(&self) -> InterruptHandle {
+        self.interp.interrupt.clone()
     }
 
     /// Register (or replace) an operator.

@@ -170,3 +170,25 @@ fn file_policy_and_symbolic_links() {
     let out = run(&["-e", &format!("{} opti sort 'busy' ; sort 'VTK' s ;", mesh)]);
     assert_eq!(out.status.code(), Some(73), "{}", String::from_utf8_lossy(&out.stderr));
 }
+
+/// Ctrl-C (SIGINT) ends a deck run with exit 130 and names the line it
+/// reached, even inside a loop whose body is empty.
+#[cfg(unix)]
+#[test]
+fn interrupt_ends_a_run_with_130() {
+    for (name, text, line) in [
+        ("int1.dgibi", "x = 1 ;\nrepeter c 20 ;\n  repeter b 100000000 ; y = &b ; fin b ;\nfin c ;\n", ":3:"),
+        ("int2.dgibi", "x = 1 ;\n\nrepeter b ; fin b ;\n", ":3:1: interrupted"),
+    ] {
+        let d = deck(name, text);
+        let child = gibi().arg(&d).stdout(Stdio::piped()).stderr(Stdio::piped()).spawn().unwrap();
+        std::thread::sleep(std::time::Duration::from_millis(300));
+        let t = std::time::Instant::now();
+        Command::new("kill").args(["-INT", &child.id().to_string()]).status().unwrap();
+        let out = child.wait_with_output().unwrap();
+        assert!(t.elapsed() < std::time::Duration::from_secs(2), "{:?}", t.elapsed());
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(130), "{}", err);
+        assert!(err.contains(&format!("{}{}", name, line)) && err.contains("interrupted"), "{}", err);
+    }
+}

@@ -5,11 +5,13 @@ mod control;
 pub mod env;
 mod fast;
 mod files;
+mod interrupt;
 pub mod machine;
 mod options;
 mod proc;
 
 pub use files::FilePolicy;
+pub use interrupt::{interrupted, InterruptHandle};
 pub use options::{Options, Timers};
 
 use crate::error::{Error, ErrorKind, Result};
@@ -47,6 +49,8 @@ pub struct Interp {
     /// sandbox against runaway `REPETER` loops).
     pub steps: u64,
     pub step_limit: Option<u64>,
+    /// Set from outside to stop the run (see [`InterruptHandle`]).
+    pub interrupt: InterruptHandle,
     /// Blocks, parenthesised groups and procedure calls being run inside
     /// one another (see [`MAX_NESTING`]).
     pub depth: usize,
@@ -115,6 +119,7 @@ impl Interp {
             called_proc: false,
             steps: 0,
             step_limit: None,
+            interrupt: InterruptHandle::default(),
             depth: 0,
             proc_sources: Default::default(),
             factors: Default::default(),

@@ -388,6 +388,7 @@ fn solve_unil(
         initial: o.initial.clone(),
         rule: o.rule,
         keep_last: o.soft,
+        cancel: Some(crate::solve::status::Cancel(it.interrupt.shared())),
     };
     let mut lines = Vec::new();
     let verbose = o.verbose;
@@ -412,7 +413,14 @@ fn solve_unil(
     for l in lines {
         it.println(&l);
     }
-    let (sol, report) = res.map_err(|e| asm.explain(it, r, e, std::slice::from_ref(load)))?;
+    let (sol, report) = res.map_err(|e| match e {
+        // Ctrl-C between two status solves: the flag is used up here.
+        crate::solve::SolveError::Interrupted => {
+            it.interrupt.clear();
+            crate::eval::interrupted()
+        }
+        e => asm.explain(it, r, e, std::slice::from_ref(load)),
+    })?;
     if !report.converged {
         // 'SOUC': Cast3M's UNILATER returns its last iterate with a warning.
         let last = report.records.last().expect("an unconverged iteration has records");

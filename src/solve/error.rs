@@ -40,6 +40,9 @@ pub enum SolveError {
     /// finite: loads or imposed values too large for the matrix.
     #[error("the solution overflows: the loads or imposed values are too large for this matrix")]
     Overflow,
+    /// Stopped from outside (Ctrl-C) between two solves.
+    #[error("interrupted")]
+    Interrupted,
     /// Anything else the numerical library reported.
     #[error("{0}")]
     Other(String),

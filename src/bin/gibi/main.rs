@@ -37,6 +37,7 @@ fn exit_code(kind: ErrorKind) -> u8 {
         ErrorKind::Io => 66,
         ErrorKind::Write => 73,
         ErrorKind::Denied => 77,
+        ErrorKind::Interrupted => 130,
         _ => 70,
     }
 }
@@ -54,6 +55,21 @@ fn main() -> ExitCode {
             ExitCode::from(70)
         }
     }
+}
+
+/// Ctrl-C stops the running instruction (the REPL gets its prompt back
+/// with every object, a deck run ends with exit 130 naming the line). A
+/// second Ctrl-C before the first is acted on (a long operator that does
+/// not poll the flag) ends the process.
+pub(crate) fn catch_ctrl_c(gibi: &Interpreter) {
+    let stop = gibi.interrupt_handle();
+    let _ = ctrlc::set_handler(move || {
+        if stop.is_pending() {
+            eprintln!("\ngibi: interrupted");
+            std::process::exit(130);
+        }
+        stop.interrupt();
+    });
 }
 
 /// Standard input as deck text (Latin-1 bytes accepted, see `decode`).
@@ -105,6 +121,7 @@ fn run() -> ExitCode {
         inputs.push(("<stdin>".into(), read_stdin()));
     }
 
+    catch_ctrl_c(&gibi);
     for (name, text) in inputs {
         let text = match text {
             Ok(t) => t,
