@@ -35,6 +35,7 @@ pub mod solver_cache;
 mod superele;
 mod tables;
 mod thermo;
+mod trac_fields;
 mod transform;
 pub mod unimplemented;
 mod union;
