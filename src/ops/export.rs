@@ -447,9 +447,14 @@ fn trac(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             }
             // Cast3M's options (words, numbers, lists of iso-values) and
             // VECT's arrows, which gibi does not draw, are passed over.
-            Value::Mot(_) | Value::Int(_) | Value::Float(_) | Value::Bool(_) | Value::ListReel(_) | Value::Host(_) => {
-                continue
-            }
+            Value::Mot(_)
+            | Value::Int(_)
+            | Value::Float(_)
+            | Value::Bool(_)
+            | Value::ListReel(_)
+            | Value::ListEnti(_)
+            | Value::ListMots(_)
+            | Value::Host(_) => continue,
             Value::Evol(_) => return Err(a.err("TRAC draws meshes and fields; an EVOLUTIO is drawn by DESS")),
             other => return Err(a.err(format!("TRAC cannot draw a {}", other.type_name()))),
         };
