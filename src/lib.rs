@@ -205,13 +205,34 @@ impl Interpreter {
     /// Run an already parsed program (the REPL parses to know whether the
     /// input is complete).
     pub fn run_parsed(&mut self, prog: &syntax::ast::Program, src: Rc<Source>) -> Result<Outcome> {
-        let fin = self.interp.run_program(prog, src.clone()).map_err(|mut e| {
+        let fin = self.run_guarded(prog, src.clone()).map_err(|mut e| {
             if e.source.is_none() {
                 e.source = Some(src);
             }
             e
         })?;
         Ok(if fin { Outcome::Finished } else { Outcome::EndOfInput })
+    }
+
+    /// Run a program; a bug in gibi that panics (operators are guarded one
+    /// by one, this catches the evaluator itself) becomes an error, and the
+    /// session is put back as it stood between instructions, so the REPL
+    /// and hosts keep their objects.
+    fn run_guarded(&mut self, prog: &syntax::ast::Program, src: Rc<Source>) -> Result<bool> {
+        let it = &mut self.interp;
+        let (frames, depth, source) = (it.store.frames.len(), it.depth, it.source.clone());
+        let loops = it.store.top().loops.len();
+        let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| it.run_program(prog, src)));
+        r.unwrap_or_else(|p| {
+            it.store.frames.truncate(frames);
+            it.store.top_mut().loops.truncate(loops);
+            (it.depth, it.source) = (depth, source);
+            let msg = p.downcast_ref::<String>().map(String::as_str).or_else(|| p.downcast_ref::<&str>().copied());
+            Err(Error::runtime(format!(
+                "internal error ({}); please report it with the deck",
+                msg.unwrap_or("unknown cause")
+            )))
+        })
     }
 
     /// Read and run a file (named as given in error locations). Bytes that

@@ -190,6 +190,9 @@ impl Interp {
                 }
                 Ok(v.remove(0))
             }
+            // `T . . k`: a second '.' where the key should be (found by
+            // fuzzing: it reached the unreachable arm of `resolve`).
+            ItemKind::Dot => Err(Error::runtime("'.' must be followed by a table key").at(it.span)),
             k => match self.resolve(k, it.span)? {
                 TokKind::Val(v) => Ok(v),
                 _ => Err(Error::runtime("this is not a table key").at(it.span)),
