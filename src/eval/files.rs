@@ -3,7 +3,7 @@
 //! A path is checked on its *real* location: every symbolic link in it is
 //! resolved before the check, so `link/x` with `link -> /elsewhere` is
 //! outside the directory even though its text is not. The opener then
-//! refuses to follow a link in the final component (`io::open_read`,
+//! refuses to follow a link in the final component (`io::read_file`,
 //! `io::write_file`), so a link put in place after the check is not
 //! followed either.
 
