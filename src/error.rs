@@ -22,8 +22,15 @@ pub enum ErrorKind {
     Internal,
     /// `ERRE n` with a severity that aborts the run (exit 70).
     Abort,
-    /// A file could not be read or written, or the host forbade it.
+    /// A file could not be read (exit 66).
     Io,
+    /// A file could not be written (exit 73).
+    Write,
+    /// The host's file policy refused a path (exit 77).
+    Denied,
+    /// The run was stopped from outside (Ctrl-C, an embedder's
+    /// `InterruptHandle`): exit 130.
+    Interrupted,
     /// Not an error: `FIN ;` reached inside a procedure call.
     Finished,
 }
@@ -94,50 +101,136 @@ impl Error {
         let label = match self.kind {
             ErrorKind::Syntax => "syntax error",
             ErrorKind::Abort => "aborted",
+            ErrorKind::Interrupted => "interrupted",
             _ => "error",
         };
         let mut out = String::new();
         match (&self.source, self.span) {
             (Some(src), Some(span)) => {
                 let (line, col) = src.line_col(span.start);
-                out.push_str(&format!("{}:{}:{}: {}: {}\n", src.name, line, col, label, self.message));
-                let text = src.line_text(line);
+                out.push_str(&format!(
+                    "{}:{}:{}: {}: {}\n",
+                    escape(&src.name),
+                    line,
+                    col,
+                    label,
+                    escape(&self.message)
+                ));
+                let (end_line, end_col) = src.line_col(span.end.max(span.start + 1) - 1);
+                let text: Vec<char> = src.line_text(line).chars().collect();
+                let end = if end_line == line { end_col } else { text.len() + 1 };
                 let gutter = line.to_string().len();
                 out.push_str(&format!("{:w$} |\n", "", w = gutter));
-                out.push_str(&format!("{} | {}\n", line, text));
-                let (end_line, end_col) = src.line_col(span.end.max(span.start + 1) - 1);
-                let width = if end_line == line { end_col + 1 - col } else { text.chars().count() + 1 - col };
-                let pad: String = text.chars().take(col - 1).map(|c| if c == '\t' { '\t' } else { ' ' }).collect();
-                out.push_str(&format!("{:w$} | {}{}\n", "", pad, "^".repeat(width.max(1)), w = gutter));
+                let (shown, marks) = excerpt(&text, col - 1, end.max(col));
+                out.push_str(&format!("{} | {}\n", line, shown));
+                out.push_str(&format!("{:w$} | {}\n", "", marks, w = gutter));
             }
-            _ => out.push_str(&format!("{}: {}\n", label, self.message)),
+            _ => out.push_str(&format!("{}: {}\n", label, escape(&self.message))),
         }
         for n in &self.notes {
-            out.push_str(&format!("  = {}\n", n));
+            out.push_str(&format!("  = {}\n", escape(n)));
         }
         let t = &self.trace;
         if t.len() > 2 * TRACE_ENDS + 1 {
             for c in &t[..TRACE_ENDS] {
-                out.push_str(&format!("  = {}\n", c));
+                out.push_str(&format!("  = {}\n", escape(c)));
             }
             out.push_str(&format!("  = … {} more procedure calls …\n", t.len() - 2 * TRACE_ENDS));
             for c in &t[t.len() - TRACE_ENDS..] {
-                out.push_str(&format!("  = {}\n", c));
+                out.push_str(&format!("  = {}\n", escape(c)));
             }
         } else {
             for c in t {
-                out.push_str(&format!("  = {}\n", c));
+                out.push_str(&format!("  = {}\n", escape(c)));
             }
         }
         out
     }
 }
 
+/// Characters of the source line shown around the error column: a
+/// syntax error on a 1.3 MB line shows a window, not the whole line and a
+/// caret line as long.
+const WINDOW: usize = 200;
+
+/// The shown part of a source line and the caret line under it, for the
+/// characters `from..to` (0-based) of `text`: clipped to [`WINDOW`]
+/// characters around `from`, with `…` where text is cut, and every
+/// control character escaped (the caret follows the escaped width).
+fn excerpt(text: &[char], from: usize, to: usize) -> (String, String) {
+    let (mut start, mut end) = (0, text.len());
+    if text.len() > WINDOW {
+        start = from.saturating_sub(WINDOW / 3).min(text.len() - WINDOW);
+        end = start + WINDOW;
+    }
+    let (mut shown, mut marks) = (String::new(), String::new());
+    if start > 0 {
+        shown.push('…');
+        marks.push(' ');
+    }
+    for (i, &c) in text.iter().enumerate().take(end).skip(start) {
+        let s = escape_char(c);
+        shown.push_str(&s);
+        let w = s.chars().count();
+        match c {
+            '\t' if i < from => marks.push('\t'),
+            _ if i < from => marks.extend(std::iter::repeat_n(' ', w)),
+            _ if i < to => marks.extend(std::iter::repeat_n('^', w)),
+            _ => {}
+        }
+    }
+    if to > end || from >= end {
+        // The span goes on past the window (or starts after it: at the end
+        // of the line).
+        marks.push('^');
+    }
+    if end < text.len() {
+        shown.push('…');
+    }
+    (shown, marks)
+}
+
+/// A character as an error shows it: control characters (C0, DEL, C1)
+/// from a deck would act on the terminal (`\x1B]0;T\x07` retitles it), so
+/// they are written as `\x1B`. Tabs stay.
+fn escape_char(c: char) -> std::borrow::Cow<'static, str> {
+    match c {
+        '\t' => "\t".into(),
+        c if c.is_control() => format!("\\x{:02X}", c as u32).into(),
+        c => c.to_string().into(),
+    }
+}
+
+/// A message with its control characters escaped (line breaks stay: some
+/// messages span lines on purpose).
+pub fn escape(s: &str) -> String {
+    // A message quoting a huge word keeps its two ends.
+    const LONG: usize = 1000;
+    if s.len() > LONG {
+        let chars: Vec<char> = s.chars().collect();
+        if chars.len() > LONG {
+            let head: String = chars[..LONG - 200].iter().collect();
+            let tail: String = chars[chars.len() - 150..].iter().collect();
+            let cut = chars.len() - head.chars().count() - 150;
+            return escape(&format!("{} … ({} characters) … {}", head, cut, tail));
+        }
+    }
+    if !s.chars().any(|c| c.is_control() && c != '\n' && c != '\t') {
+        return s.to_string();
+    }
+    s.chars()
+        .map(|c| match c {
+            '\n' => "\n".into(),
+            c => escape_char(c),
+        })
+        .collect()
+}
+
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self.location() {
-            Some((file, l, c)) => write!(f, "{}:{}:{}: {}", file, l, c, self.message),
-            None => f.write_str(&self.message),
+            Some((file, l, c)) => write!(f, "{}:{}:{}: {}", escape(&file), l, c, escape(&self.message)),
+            None => f.write_str(&escape(&self.message)),
         }
     }
 }

@@ -35,7 +35,7 @@ pub mod value;
 pub use error::{Error, ErrorKind, Result};
 pub use eval::args::Args;
 pub use eval::registry::{OpSpec, Registry};
-pub use eval::FilePolicy;
+pub use eval::{FilePolicy, InterruptHandle};
 pub use value::Value;
 
 use eval::Interp;
@@ -86,6 +86,7 @@ pub struct InterpreterBuilder {
     files: FilePolicy,
     registry: Registry,
     step_limit: Option<u64>,
+    report_files: bool,
 }
 
 impl InterpreterBuilder {
@@ -105,6 +106,13 @@ impl InterpreterBuilder {
         self.step_limit = Some(n);
         self
     }
+    /// Whether each file a script writes is reported by a line `wrote
+    /// <file>` on the output (relative to the allowed directory). Default:
+    /// reported.
+    pub fn report_files(mut self, on: bool) -> Self {
+        self.report_files = on;
+        self
+    }
     /// Add an operator before the registry is frozen.
     pub fn operator(mut self, op: OpSpec) -> Self {
         self.registry.insert(op);
@@ -114,6 +122,7 @@ impl InterpreterBuilder {
         let mut interp = Interp::new(Rc::new(self.registry), self.out);
         interp.files = self.files;
         interp.step_limit = self.step_limit;
+        interp.report_files = self.report_files;
         Interpreter { interp }
     }
 }
@@ -141,7 +150,27 @@ impl Interpreter {
             files: FilePolicy::Nothing,
             registry: Registry::standard(),
             step_limit: None,
+            report_files: true,
         }
+    }
+
+    /// A handle that stops the running evaluation from any thread: the run
+    /// returns an [`ErrorKind::Interrupted`] error at the instruction it
+    /// reached (within a fraction of a second), and every object stays.
+    ///
+    /// ```
+    /// let mut gibi = gibi::Interpreter::new();
+    /// let stop = gibi.interrupt_handle();
+    /// std::thread::spawn(move || {
+    ///     std::thread::sleep(std::time::Duration::from_millis(50));
+    ///     stop.interrupt();
+    /// });
+    /// let e = gibi.run_str("t", "x = 1 ; repeter b ; fin b ;").unwrap_err();
+    /// assert_eq!(e.kind, gibi::ErrorKind::Interrupted);
+    /// assert_eq!(gibi.get_f64("x"), Some(1.0));
+    /// ```
+    pub fn interrupt_handle(&self) -> InterruptHandle {
+        self.interp.interrupt.clone()
     }
 
     /// Register (or replace) an operator.
@@ -177,13 +206,34 @@ impl Interpreter {
     /// Run an already parsed program (the REPL parses to know whether the
     /// input is complete).
     pub fn run_parsed(&mut self, prog: &syntax::ast::Program, src: Rc<Source>) -> Result<Outcome> {
-        let fin = self.interp.run_program(prog, src.clone()).map_err(|mut e| {
+        let fin = self.run_guarded(prog, src.clone()).map_err(|mut e| {
             if e.source.is_none() {
                 e.source = Some(src);
             }
             e
         })?;
         Ok(if fin { Outcome::Finished } else { Outcome::EndOfInput })
+    }
+
+    /// Run a program; a bug in gibi that panics (operators are guarded one
+    /// by one, this catches the evaluator itself) becomes an error, and the
+    /// session is put back as it stood between instructions, so the REPL
+    /// and hosts keep their objects.
+    fn run_guarded(&mut self, prog: &syntax::ast::Program, src: Rc<Source>) -> Result<bool> {
+        let it = &mut self.interp;
+        let (frames, depth, source) = (it.store.frames.len(), it.depth, it.source.clone());
+        let loops = it.store.top().loops.len();
+        let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| it.run_program(prog, src)));
+        r.unwrap_or_else(|p| {
+            it.store.frames.truncate(frames);
+            it.store.top_mut().loops.truncate(loops);
+            (it.depth, it.source) = (depth, source);
+            let msg = p.downcast_ref::<String>().map(String::as_str).or_else(|| p.downcast_ref::<&str>().copied());
+            Err(Error::runtime(format!(
+                "internal error ({}); please report it with the deck",
+                msg.unwrap_or("unknown cause")
+            )))
+        })
     }
 
     /// Read and run a file (named as given in error locations). Bytes that

@@ -155,3 +155,80 @@ u1 = u ; u2 = u ; haut = hau ; pa = p1 ; pb = p2 ; err = 0. ;
     // The setup must make real runs of most examples, not only errors.
     assert!(ran * 4 > ops.len() * 3, "only {} of {} examples ran:\n{}", ran, ops.len(), failed.join("\n"));
 }
+
+/// The file policy follows real paths: a symbolic link in the working
+/// directory that leads outside cannot be written or read through (files
+/// and directories), the refusal has its own exit code (77), an error
+/// about a file never shows its content, and each file written is named
+/// on a line of its own, relative to the working directory (--quiet: not).
+#[cfg(unix)]
+#[test]
+fn file_policy_and_symbolic_links() {
+    use std::os::unix::fs::symlink;
+    let base = std::env::temp_dir().join(format!("gibi-cli-links-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&base);
+    let (work, outside) = (base.join("work"), base.join("outside"));
+    std::fs::create_dir_all(&work).unwrap();
+    std::fs::create_dir_all(&outside).unwrap();
+    std::fs::write(outside.join("secret.msh"), "root:x:0:0:TOP-SECRET\n").unwrap();
+    std::fs::write(work.join("notamesh.msh"), "TOP-SECRET too\n").unwrap();
+    symlink(&outside, work.join("link")).unwrap();
+    symlink(outside.join("secret.msh"), work.join("p.msh")).unwrap();
+    symlink(outside.join("new.vtu"), work.join("dangling.vtu")).unwrap();
+    let run = |args: &[&str]| gibi().current_dir(&work).args(args).output().unwrap();
+    let mesh = "opti dime 2 elem seg2 ; s = d 2 (0. 0.) (1. 0.) ;";
+
+    // Writing through a directory link, or to a dangling link.
+    for target in ["link/x", "link/sub/x", "dangling"] {
+        let out = run(&["-e", &format!("{} opti sort '{}' ; sort 'VTK' s ;", mesh, target)]);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(77), "{}: {}", target, err);
+        assert!(err.contains("outside the directory") || err.contains("leads nowhere"), "{}", err);
+    }
+    assert_eq!(std::fs::read_dir(&outside).unwrap().count(), 1, "nothing written outside");
+
+    // Reading through a file link; reading a file that is not a mesh.
+    let out = run(&["-e", "opti dime 2 ; t = lire 'GMSH' 'p.msh' ;"]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(77), "{}", err);
+    assert!(err.contains("through a symbolic link") && !err.contains("SECRET"), "{}", err);
+    let out = run(&["-e", "opti dime 2 ; t = lire 'GMSH' 'notamesh.msh' ;"]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(66), "{}", err);
+    assert!(err.contains("not a Gmsh mesh") && !err.contains("SECRET"), "{}", err);
+
+    // Files written are named, relative to the working directory.
+    let out = run(&["-e", &format!("{} opti sort 'res/plate' ; sort 'VTK' s ; trac s ;", mesh)]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(String::from_utf8_lossy(&out.stdout), "wrote res/plate.vtu\nwrote res/plate.svg\n");
+    assert!(work.join("res/plate.vtu").is_file());
+    let out = run(&["--quiet", "-e", &format!("{} opti sort 'res/plate' ; sort 'VTK' s ;", mesh)]);
+    assert_eq!((out.status.code(), out.stdout.len()), (Some(0), 0));
+
+    // A file that cannot be written (a directory stands in its place): 73.
+    std::fs::create_dir_all(work.join("busy.vtu")).unwrap();
+    let out = run(&["-e", &format!("{} opti sort 'busy' ; sort 'VTK' s ;", mesh)]);
+    assert_eq!(out.status.code(), Some(73), "{}", String::from_utf8_lossy(&out.stderr));
+}
+
+/// Ctrl-C (SIGINT) ends a deck run with exit 130 and names the line it
+/// reached, even inside a loop whose body is empty.
+#[cfg(unix)]
+#[test]
+fn interrupt_ends_a_run_with_130() {
+    for (name, text, line) in [
+        ("int1.dgibi", "x = 1 ;\nrepeter c 20 ;\n  repeter b 100000000 ; y = &b ; fin b ;\nfin c ;\n", ":3:"),
+        ("int2.dgibi", "x = 1 ;\n\nrepeter b ; fin b ;\n", ":3:1: interrupted"),
+    ] {
+        let d = deck(name, text);
+        let child = gibi().arg(&d).stdout(Stdio::piped()).stderr(Stdio::piped()).spawn().unwrap();
+        std::thread::sleep(std::time::Duration::from_millis(300));
+        let t = std::time::Instant::now();
+        Command::new("kill").args(["-INT", &child.id().to_string()]).status().unwrap();
+        let out = child.wait_with_output().unwrap();
+        assert!(t.elapsed() < std::time::Duration::from_secs(2), "{:?}", t.elapsed());
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(130), "{}", err);
+        assert!(err.contains(&format!("{}{}", name, line)) && err.contains("interrupted"), "{}", err);
+    }
+}

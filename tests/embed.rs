@@ -45,10 +45,10 @@ fn custom_operator_reads_arguments_by_type_on_both_sides() {
 
 #[test]
 fn file_policy_defaults_to_nothing() {
-    assert!(FilePolicy::Nothing.check("a.txt").is_err());
+    assert!(FilePolicy::Nothing.check_read("a.txt").is_err());
     let root = std::env::temp_dir();
-    assert!(FilePolicy::Under(root.clone()).check("sub/a.txt").is_ok());
-    assert!(FilePolicy::Under(root).check("../a.txt").is_err());
+    assert!(FilePolicy::Under(root.clone()).check_write("sub/a.txt").is_ok());
+    assert!(FilePolicy::Under(root).check_write("../a.txt").is_err());
 }
 
 #[test]
@@ -72,4 +72,26 @@ fn a_listchpo_reads_back_as_a_list_of_fields() {
     assert_eq!(l.len(), 2);
     assert_eq!(l[1].components(), vec!["FY".to_string()]);
     assert_eq!(g.get("l").unwrap().type_name(), "LISTCHPO");
+}
+
+/// An embedder stops a run from another thread: the error is at the
+/// instruction reached (here inside a procedure), objects stay, and the
+/// next run is not affected.
+#[test]
+fn interrupt_handle_stops_a_run_from_another_thread() {
+    let mut g = Interpreter::new();
+    let stop = g.interrupt_handle();
+    let t = std::thread::spawn(move || {
+        std::thread::sleep(std::time::Duration::from_millis(100));
+        stop.interrupt();
+    });
+    let deck = "a = 1 ;\ndebproc f ;\n  repeter b ; x = &b ; fin b ;\nfinproc ;\nf ;\n";
+    let e = g.run_str("host", deck).unwrap_err();
+    t.join().unwrap();
+    assert_eq!(e.kind, gibi::ErrorKind::Interrupted);
+    assert_eq!(e.location().map(|l| l.1), Some(3), "{}", e.render());
+    assert!(e.render().contains("in procedure F"), "{}", e.render());
+    assert_eq!(g.get_f64("a"), Some(1.0));
+    g.run_str("next", "b = a + 1 ;").unwrap();
+    assert_eq!(g.get_f64("b"), Some(2.0));
 }

@@ -116,7 +116,7 @@ fn drawing_without_file_access_is_a_no_op_and_bad_calls_are_errors() {
     let mut gibi = Interpreter::new();
     run(&mut gibi, &format!("{} trac s ; trac 'X' s ;", PLATE));
     let e = gibi.run_str("e", "trac 'PSC' ;").unwrap_err().render();
-    assert!(e.contains("TRAC: expected MAILLAGE or CHPOINT"), "{}", e);
+    assert!(e.contains("TRAC: expected MAILLAGE, CHPOINT or MCHAML"), "{}", e);
     let e = gibi.run_str("e", "dess ;").unwrap_err().render();
     assert!(e.contains("DESS: expected EVOLUTIO"), "{}", e);
     let e = gibi.run_str("e", "trac (coor 1 s) ;").unwrap_err().render();
@@ -145,4 +145,43 @@ fn trac_draws_elements_in_their_colour() {
     // ROUG and VERT as fem::colour draws them, one stroke per element.
     assert_eq!(svg.matches("stroke=\"#DC0000\"").count(), 32, "red elements");
     assert_eq!(svg.matches("stroke=\"#00A000\"").count(), 32, "green elements");
+}
+
+/// `TRAC mo (vmis mo sig)`: each element coloured by its value (the mean
+/// of its points), the model as support, a colour bar with the true
+/// extremes. Objects TRAC cannot draw are errors, not a bare mesh.
+#[test]
+fn trac_of_an_element_field() {
+    let dir = scratch("mchaml");
+    let mut gibi = session(&dir);
+    run(
+        &mut gibi,
+        "opti mode plan cont ; mo = mode s mecanique elastique isotrope ; ma = mate mo youn 1000. nu 0.3 ; \
+         cl = (bloq 'DEPL' (s poin proc p1)) et (bloq 'UX' (s poin proc p4)) ; k = (rigi mo ma) et cl ; \
+         u = reso k (forc 'FY' -1. p3) ; sig = sigm mo ma u ; vm = vmis mo sig ; trac mo vm ;",
+    );
+    let svg = assert_svg(&dir.join("gibi_trac_1.svg"));
+    let vm: Rc<gibi::value::Mchaml> = gibi.get_as("VM").unwrap();
+    let means: Vec<f64> =
+        vm.zones[0].values.iter().map(|e| e.iter().map(|p| p[0]).sum::<f64>() / e.len() as f64).collect();
+    let (lo, hi) = means.iter().fold((f64::MAX, f64::MIN), |(a, b), &v| (a.min(v), b.max(v)));
+    assert!(svg.contains("VMIS") && svg.contains(&format!("{:.3e}", hi)) && svg.contains(&format!("{:.3e}", lo)));
+    let fills: Vec<&str> = svg.lines().filter(|l| l.starts_with("<polygon")).collect();
+    assert_eq!(fills.len(), 32, "one filled polygon per element");
+    let mut colours: Vec<&str> = fills.iter().filter_map(|l| l.split("fill=\"").nth(1)).collect();
+    colours.sort();
+    colours.dedup();
+    assert!(colours.len() >= 10, "elements coloured by value: {:?}", colours);
+    // Several components: the picture names the one drawn.
+    run(&mut gibi, "trac sig mo ;");
+    assert!(assert_svg(&dir.join("gibi_trac_2.svg")).contains("SMXX (+3 more)"));
+    for (deck, want) in [
+        ("trac k ;", "TRAC cannot draw a RIGIDITE"),
+        ("trac (evol manu 'X' (prog 0. 1.) 'Y' (prog 0. 1.)) ;", "drawn by DESS"),
+        ("trac mo vm sig ;", "one field at a time"),
+        ("trac u s vm ;", "one field at a time"),
+    ] {
+        let e = gibi.run_str("e", deck).unwrap_err().render();
+        assert!(e.contains(want), "{}: {}", deck, e);
+    }
 }

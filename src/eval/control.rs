@@ -3,6 +3,7 @@
 
 use super::{Flow, Interp};
 use crate::error::{Error, ErrorKind, Result};
+use crate::source::Span;
 use crate::syntax::ast::{Instr, Item, ItemKind, Stmt, Target};
 use crate::value::{Key, Ty, Value};
 
@@ -18,6 +19,7 @@ impl Interp {
     }
 
     fn exec_stmt(&mut self, s: &Stmt) -> Result<Flow> {
+        self.check_interrupt(super::interrupt::stmt_span(s))?;
         self.steps += 1;
         if let Some(limit) = self.step_limit {
             if self.steps > limit {
@@ -41,7 +43,9 @@ impl Interp {
                     None => Ok(Flow::Next),
                 }
             }
-            Stmt::Loop { name, count, body, span } => self.nested(*span, |it| it.exec_loop(name, count.as_ref(), body)),
+            Stmt::Loop { name, count, body, span } => {
+                self.nested(*span, |it| it.exec_loop(name, count.as_ref(), body, *span))
+            }
             Stmt::Quit { name, span } => Ok(Flow::Quit(name.clone(), *span)),
             Stmt::Iter { name, span } => Ok(Flow::Iter(name.clone(), *span)),
             Stmt::End { .. } => Ok(Flow::End),
@@ -82,12 +86,16 @@ impl Interp {
         }
     }
 
-    fn exec_loop(&mut self, name: &str, count: Option<&Instr>, body: &[Stmt]) -> Result<Flow> {
+    fn exec_loop(&mut self, name: &str, count: Option<&Instr>, body: &[Stmt], span: Span) -> Result<Flow> {
         let n = match count {
             None => None,
             Some(c) => match self.eval_items(&c.items)?.as_slice() {
                 [Value::Int(n)] if *n >= 0 => Some(*n),
                 [Value::Int(_)] => None,
+                // A literal of ten digits or more is a FLOTTANT (redlec.eso),
+                // and Cast3M decks count passes with one (shock2d: `NITER =
+                // 1000000000`): a whole count in a FLOTTANT is taken.
+                [Value::Float(x)] if x.fract() == 0.0 && (0.0..9.0e18).contains(x) => Some(*x as i64),
                 [v] => {
                     return Err(Error::runtime(format!(
                         "REPETER {}: the count must be an ENTIER, found {}",
@@ -107,6 +115,10 @@ impl Interp {
                 break Ok(Flow::Next);
             }
             pass += 1;
+            // An empty body runs no instruction: the pass checks too.
+            if let Err(e) = self.check_interrupt(span) {
+                break Err(e);
+            }
             if let Some(l) = self.store.top_mut().loops.last_mut() {
                 l.1 = pass;
             }

@@ -159,6 +159,9 @@ impl Interp {
                 }
                 Ok(v.remove(0))
             }
+            // `T . . k`: a second '.' where the key should be (found by
+            // fuzzing: it reached the unreachable arm of `resolve`).
+            ItemKind::Dot => Err(Error::runtime("'.' must be followed by a table key").at(it.span)),
             k => match self.resolve(k, it.span)? {
                 TokKind::Val(v) => Ok(v),
                 _ => Err(Error::runtime("this is not a table key").at(it.span)),
@@ -219,6 +222,7 @@ impl Interp {
     pub fn invoke(&mut self, op: Rc<OpSpec>, st: &mut GroupState, span: Span) -> Result<()> {
         let registry = self.registry.clone();
         let start = std::time::Instant::now();
+        let nodes_before = self.nodes.len();
         let res = {
             let mut args = Args::new(&op, st, &registry, span);
             // A bug in one operator must not take the session down (the REPL
@@ -233,10 +237,24 @@ impl Interp {
             })
         };
         op.record(start.elapsed());
+        let res = res.and_then(|r| finite_results(&op, r, &self.nodes, nodes_before));
         let res = res.map_err(|e| e.with_span_if_missing(span, &self.source))?;
         st.left.extend(res);
         Ok(())
     }
+}
+
+/// The last net against NaN and infinities (value::finite): an
+/// operator's results, and the nodes it made, hold finite numbers only.
+fn finite_results(op: &OpSpec, r: Vec<Value>, nodes: &crate::fem::mesh::Nodes, from: usize) -> Result<Vec<Value>> {
+    use crate::value::finite::{describe, first_non_finite, in_nodes};
+    if let Some(x) = r.iter().find_map(first_non_finite) {
+        return Err(Error::runtime(format!("{}: the result holds {}", op.name, describe(x))));
+    }
+    if let Some(x) = in_nodes(nodes, from) {
+        return Err(Error::runtime(format!("{}: a node it made has {} as a coordinate", op.name, describe(x))));
+    }
+    Ok(r)
 }
 
 /// `T . k`: the entry of a table (or of an object that acts like one).

@@ -7,13 +7,17 @@ pub mod args;
 mod control;
 pub mod env;
 mod fast;
+mod files;
+mod interrupt;
 pub mod machine;
 mod options;
 mod proc;
 pub mod registry;
 pub mod tokens;
 
-pub use options::{Exports, FilePolicy, Options, Timers};
+pub use files::FilePolicy;
+pub use interrupt::{interrupted, InterruptHandle};
+pub use options::{Exports, Options, Timers};
 
 use crate::error::{Error, ErrorKind, Result};
 use crate::fem::mesh::Nodes;
@@ -35,6 +39,9 @@ pub struct Interp {
     /// The source being run (for error locations).
     pub source: Rc<Source>,
     pub files: FilePolicy,
+    /// Whether a line `wrote <file>` goes to the output for each file
+    /// written (`gibi --quiet` turns it off).
+    pub report_files: bool,
     pub timers: Timers,
     /// The `.pvd` collection and the picture counter of SORT and TRAC.
     pub exports: Exports,
@@ -49,6 +56,8 @@ pub struct Interp {
     /// sandbox against runaway `REPETER` loops).
     pub steps: u64,
     pub step_limit: Option<u64>,
+    /// Set from outside to stop the run (see [`InterruptHandle`]).
+    pub interrupt: InterruptHandle,
     /// Blocks, parenthesised groups and procedure calls being run inside
     /// one another (see [`MAX_NESTING`]).
     pub depth: usize,
@@ -111,6 +120,7 @@ impl Interp {
             out,
             source: Source::new("<none>", ""),
             files: FilePolicy::Nothing,
+            report_files: true,
             timers: Timers::default(),
             exports: Exports::default(),
             title: String::new(),
@@ -118,6 +128,7 @@ impl Interp {
             called_proc: false,
             steps: 0,
             step_limit: None,
+            interrupt: InterruptHandle::default(),
             depth: 0,
             proc_sources: Default::default(),
             factors: Default::default(),

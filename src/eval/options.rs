@@ -1,9 +1,7 @@
-//! OPTI settings, the file-access policy, per-operator timing (TEMP) and
-//! the state the export operators keep between calls.
+//! OPTI settings, per-operator timing (TEMP) and the state the export
+//! operators keep between calls.
 
-use crate::error::{Error, Result};
 use std::collections::BTreeMap;
-use std::path::{Path, PathBuf};
 use std::time::Duration;
 
 /// The options set by OPTI and read by VALE.
@@ -51,38 +49,6 @@ pub struct Exports {
     pub pvd: Option<(String, Vec<(f64, String)>)>,
     /// Pictures drawn without an OPTI SORT name (`gibi_trac_N`).
     pub pictures: u64,
-}
-
-/// Where a script may read or write files. The library allows nothing by
-/// default; the CLI allows its working directory.
-#[derive(Debug, Clone)]
-pub enum FilePolicy {
-    Nothing,
-    Under(PathBuf),
-    Anywhere,
-}
-
-impl FilePolicy {
-    /// Resolve a path a script asked for, or refuse it.
-    pub fn check(&self, path: &str) -> Result<PathBuf> {
-        let p = Path::new(path);
-        match self {
-            FilePolicy::Anywhere => Ok(p.to_path_buf()),
-            FilePolicy::Nothing => {
-                Err(Error::io(format!("file access to '{}' is not allowed by the host application", path)))
-            }
-            FilePolicy::Under(root) => {
-                let full = if p.is_absolute() { p.to_path_buf() } else { root.join(p) };
-                let ok =
-                    !p.components().any(|c| matches!(c, std::path::Component::ParentDir)) && full.starts_with(root);
-                if ok {
-                    Ok(full)
-                } else {
-                    Err(Error::io(format!("'{}' is outside the directory this run may use ({})", path, root.display())))
-                }
-            }
-        }
-    }
 }
 
 /// Cumulative time and call count per operator, for TEMP.

@@ -50,8 +50,10 @@ impl Material {
         self.positive(self.youn, "YOUN", elem)
     }
 
-    /// Poisson's ratio, kept inside (-1, 1/2) where the elasticity matrix
-    /// is positive definite in every mode.
+    /// Poisson's ratio of a 3D state of stress (solids in TRID, plane
+    /// strain, AXIS), kept inside (-1, 1/2) where the elasticity matrix is
+    /// positive definite: at 1/2 the material is incompressible and
+    /// λ = Eν/((1+ν)(1−2ν)) is infinite.
     pub(crate) fn poisson(&self, elem: &'static str) -> Result<f64, FemError> {
         let nu = self.nu.ok_or(FemError::MissingProperty { prop: "NU", elem })?;
         if nu.is_finite() && nu > -1.0 && nu < 0.5 {
@@ -61,9 +63,22 @@ impl Material {
         }
     }
 
+    /// Poisson's ratio where σzz = 0 (plane stress, shells) or only the
+    /// shear modulus uses it (beams): E/(1 − ν²) and E/(2(1 + ν)) stay
+    /// positive and finite on (-1, 1), so an incompressible material
+    /// (ν = 1/2, rubber) is valid there.
+    pub(crate) fn poisson_plane_stress(&self, elem: &'static str) -> Result<f64, FemError> {
+        let nu = self.nu.ok_or(FemError::MissingProperty { prop: "NU", elem })?;
+        if nu.is_finite() && nu > -1.0 && nu < 1.0 {
+            Ok(nu)
+        } else {
+            Err(FemError::InvalidProperty { prop: "NU", value: nu, elem, why: "must lie in (-1, 1) in plane stress" })
+        }
+    }
+
     /// Shear modulus E / (2(1 + ν)).
     pub(crate) fn shear_modulus(&self, elem: &'static str) -> Result<f64, FemError> {
-        Ok(self.young(elem)? / (2.0 * (1.0 + self.poisson(elem)?)))
+        Ok(self.young(elem)? / (2.0 * (1.0 + self.poisson_plane_stress(elem)?)))
     }
 
     /// Thermal expansion coefficient: any finite value (a negative α is a
@@ -99,7 +114,10 @@ impl Material {
 /// matrix serves every 2D mode and σzz comes out 0 by construction.
 pub(crate) fn elasticity(mode: Mode, m: &Material, elem: &'static str) -> Result<Vec<Vec<f64>>, FemError> {
     let e = m.young(elem)?;
-    let nu = m.poisson(elem)?;
+    let nu = match mode {
+        Mode::PlanCont => m.poisson_plane_stress(elem)?,
+        _ => m.poisson(elem)?,
+    };
     let g = e / (2.0 * (1.0 + nu));
     let lam = e * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
     Ok(match mode {

@@ -111,7 +111,7 @@ struct Section {
 fn section(f: Formulation, m: &Material) -> Result<Section, FemError> {
     let elem = f.name();
     let e = m.young(elem)?;
-    let nu = m.poisson(elem)?;
+    let nu = m.poisson_plane_stress(elem)?;
     let t = m.positive(m.epai, "EPAI", elem)?;
     let c = e * t / (1.0 - nu * nu);
     Ok(Section { dm: plate::plane_stress(c, nu), db: plate::plane_stress(c * t * t / 12.0, nu) })

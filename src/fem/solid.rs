@@ -358,7 +358,7 @@ pub fn field(
         let mut eps: Vec<f64> = b.iter().map(|row| row.iter().zip(u).map(|(a, b)| a * b).sum()).collect();
         if mode == Mode::PlanCont && !stress {
             // Plane stress: the out-of-plane strain follows from σzz = 0.
-            let nu = m.poisson(ty.name())?;
+            let nu = m.poisson_plane_stress(ty.name())?;
             eps[2] = -nu / (1.0 - nu) * (eps[0] + eps[1]);
         }
         values.push(match (&d, stress) {

@@ -135,7 +135,7 @@ impl<'a> Cursor<'a> {
 
     fn num<T: std::str::FromStr>(&mut self, what: &str) -> Result<T> {
         let t = self.next(what)?;
-        t.parse().map_err(|_| self.at(format!("expected {}, found '{}'", what, t)))
+        t.parse().map_err(|_| self.at(format!("expected {}, found {}", what, other(t))))
     }
 
     fn count(&mut self, what: &str) -> Result<usize> {
@@ -157,7 +157,7 @@ impl<'a> Cursor<'a> {
     fn expect(&mut self, word: &str) -> Result<()> {
         let t = self.next(word)?;
         if t != word {
-            return Err(self.at(format!("expected {}, found '{}'", word, t)));
+            return Err(self.at(format!("expected {}, found {}", word, other(t))));
         }
         Ok(())
     }
@@ -194,9 +194,19 @@ struct RawElement {
     line: usize,
 }
 
+/// What was found instead of what a reader expected. Never the text
+/// itself: the path may name a file that is not a mesh at all, and an
+/// error must not show its content.
+fn other(t: &str) -> String {
+    match t.chars().count() {
+        1 => "other text (1 character)".into(),
+        n => format!("other text ({} characters)", n),
+    }
+}
+
 /// Read a `.msh` file.
 pub fn read(path: &Path) -> Result<GmshMesh> {
-    let bytes = std::fs::read(path).map_err(|e| IoError(format!("cannot read {}: {}", path.display(), e)))?;
+    let bytes = super::read_file(path)?;
     let text = String::from_utf8_lossy(&bytes);
     parse(&text).map_err(|e| IoError(format!("{}: {}", path.display(), e)))
 }
@@ -208,7 +218,9 @@ pub fn parse(text: &str) -> Result<GmshMesh> {
     while let Some(tok) = c.next_opt() {
         match tok {
             "$MeshFormat" => mesh_format(&mut c, &mut r)?,
-            _ if r.version.is_empty() => return Err(c.at(format!("expected $MeshFormat, found '{}'", tok))),
+            _ if r.version.is_empty() => {
+                return Err(c.at(format!("expected $MeshFormat, found {}: not a Gmsh mesh", other(tok))))
+            }
             "$PhysicalNames" => physical_names(&mut c, &mut r)?,
             "$Entities" => entities(&mut c, &mut r)?,
             "$Nodes" if r.version.starts_with('4') => nodes_v4(&mut c, &mut r)?,
@@ -216,7 +228,7 @@ pub fn parse(text: &str) -> Result<GmshMesh> {
             "$Elements" if r.version.starts_with('4') => elements_v4(&mut c, &mut r)?,
             "$Elements" => elements_v2(&mut c, &mut r)?,
             t if t.starts_with('$') && !t.starts_with("$End") => c.skip_section(t)?,
-            t => return Err(c.at(format!("expected a section such as $Nodes or $Elements, found '{}'", t))),
+            t => return Err(c.at(format!("expected a section such as $Nodes or $Elements, found {}", other(t)))),
         }
     }
     if r.version.is_empty() {
@@ -233,7 +245,7 @@ fn mesh_format(c: &mut Cursor, r: &mut Reader) -> Result<()> {
         return Err(c.at("binary .msh files are not supported: save as ASCII (gmsh -format msh41, Mesh.Binary = 0)"));
     }
     if !(v.starts_with("2.") || v == "4.1") {
-        return Err(c.at(format!("Gmsh format {} is not supported: save as 4.1 or 2.2", v)));
+        return Err(c.at("this Gmsh format version is not supported: save as 4.1 or 2.2"));
     }
     r.version = v.to_string();
     c.expect("$EndMeshFormat")

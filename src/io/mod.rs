@@ -37,7 +37,46 @@ fn err<T>(msg: impl Into<String>) -> Result<T> {
     Err(IoError(msg.into()))
 }
 
-/// Write a whole file, naming the path in the error.
+/// Write a whole file, naming the path in the error. A symbolic link in
+/// the final component is not followed (the file policy checked the real
+/// path; a link put there since would lead elsewhere).
 pub(crate) fn write_file(path: &Path, bytes: &[u8]) -> Result<()> {
-    std::fs::write(path, bytes).map_err(|e| IoError(format!("cannot write {}: {}", path.display(), e)))
+    use std::io::Write;
+    let mut o = std::fs::OpenOptions::new();
+    o.write(true).create(true).truncate(true);
+    no_follow(&mut o);
+    let fail = |e: std::io::Error| IoError(format!("cannot write {}: {}", path.display(), link_error(e)));
+    o.open(path).map_err(fail)?.write_all(bytes).map_err(fail)
+}
+
+/// Read a whole file, not following a symbolic link in the final
+/// component (see [`write_file`]).
+pub(crate) fn read_file(path: &Path) -> Result<Vec<u8>> {
+    use std::io::Read;
+    let mut o = std::fs::OpenOptions::new();
+    o.read(true);
+    no_follow(&mut o);
+    let fail = |e: std::io::Error| IoError(format!("cannot read {}: {}", path.display(), link_error(e)));
+    let mut bytes = Vec::new();
+    o.open(path).map_err(fail)?.read_to_end(&mut bytes).map_err(fail)?;
+    Ok(bytes)
+}
+
+#[cfg(unix)]
+fn no_follow(o: &mut std::fs::OpenOptions) {
+    use std::os::unix::fs::OpenOptionsExt;
+    o.custom_flags(libc::O_NOFOLLOW);
+}
+
+#[cfg(not(unix))]
+fn no_follow(_: &mut std::fs::OpenOptions) {}
+
+/// O_NOFOLLOW on a link fails with ELOOP ("too many levels of symbolic
+/// links"), which would puzzle a user: say what it is.
+fn link_error(e: std::io::Error) -> String {
+    #[cfg(unix)]
+    if e.raw_os_error() == Some(libc::ELOOP) {
+        return "it is a symbolic link, which is not followed".into();
+    }
+    e.to_string()
 }

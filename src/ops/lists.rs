@@ -294,7 +294,11 @@ pub(crate) fn enle(a: &mut Args, l: Value) -> Result<Vec<Value>> {
 
 fn somm(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     if let Some(l) = a.opt::<Rc<Vec<f64>>>() {
-        return Ok(vec![Value::Float(l.iter().sum())]);
+        let s: f64 = l.iter().sum();
+        if !s.is_finite() {
+            return Err(a.err("the sum overflows a FLOTTANT (beyond about 1.8E+308)"));
+        }
+        return Ok(vec![Value::Float(s)]);
     }
     let l = a.req::<Rc<Vec<i64>>>()?;
     let s = l.iter().try_fold(0i64, |s, &x| s.checked_add(x)).ok_or_else(|| a.err("the sum overflows an ENTIER"))?;

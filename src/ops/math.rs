@@ -249,7 +249,7 @@ fn enti(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let to_int = |x: f64| -> Result<i64> {
         let r = round(x);
         if !r.is_finite() || r.abs() > 9.0e18 {
-            return Err(a.err(format!("{} has no ENTIER value", x)));
+            return Err(a.err(format!("{} has no ENTIER value", fmt_float(x))));
         }
         Ok(r as i64)
     };

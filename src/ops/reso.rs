@@ -144,9 +144,11 @@ fn reso(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let asm = r.numbered();
     let loads: Vec<Load> =
         rhs.iter().map(|c| assemble::load(it, &asm, &[c])).collect::<Result<_>>().map_err(|e| a.err(e.message))?;
+    finite_data(&asm, &loads).map_err(|e| a.err(e))?;
     let unilateral = r.n_unilateral() > 0 && !o.nounil;
     if o.ense && !unilateral {
         let (sols, extra) = reso_ense(it, &r, &asm, &loads, &o)?;
+        finite_solutions(&sols).map_err(|e| a.err(e))?;
         let mut out = regroup(&given, sols);
         out.extend(extra);
         return Ok(out);
@@ -163,7 +165,42 @@ fn reso(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     } else {
         solve_direct(it, &r, &asm, &loads, &o)?
     };
+    finite_solutions(&sols).map_err(|e| a.err(e))?;
     Ok(regroup(&given, sols))
+}
+
+/// RESO's data hold finite numbers only: an infinity or a NaN in the
+/// matrix, the loads or the imposed values would come out as a NaN
+/// solution (and a NaN passes every `SI (err > tol)` check).
+fn finite_data(asm: &Assembled, loads: &[Load]) -> std::result::Result<(), String> {
+    use crate::value::finite::describe;
+    let bad = |x: &f64| !x.is_finite();
+    let p = &asm.problem;
+    let in_matrix = p.k.entries.iter().map(|e| &e.2);
+    let in_conditions = p.conditions.iter().flat_map(|c| c.terms.iter().chain(c.dual.iter().flatten())).map(|t| &t.1);
+    if let Some(x) = in_matrix.chain(in_conditions).find(|x| bad(x)) {
+        return Err(format!("the matrix holds {}", describe(*x)));
+    }
+    if let Some(x) = loads.iter().flat_map(|l| &l.f).find(|x| bad(x)) {
+        return Err(format!("the loads hold {}", describe(*x)));
+    }
+    if let Some(x) = loads.iter().flat_map(|l| &l.d).find(|x| bad(x)) {
+        return Err(format!("the imposed values hold {}", describe(*x)));
+    }
+    Ok(())
+}
+
+/// Finite data can still give an overflowing solution (a load of 1.E308
+/// on a soft structure): an error, whatever 'NOID' says.
+fn finite_solutions(sols: &[Rc<Chpoint>]) -> std::result::Result<(), String> {
+    let value = sols.iter().find_map(|c| crate::value::finite::first_non_finite(&Value::Chpo(c.clone())));
+    match value {
+        Some(x) => Err(format!(
+            "the solution holds {}: the loads or imposed values are too large for this matrix",
+            crate::value::finite::describe(x)
+        )),
+        None => Ok(()),
+    }
 }
 
 /// Every load on one factorisation, reused from the pool when the
@@ -303,6 +340,7 @@ fn solve_unil(
         initial: o.initial.clone(),
         rule: o.rule,
         keep_last: o.soft,
+        cancel: Some(crate::solve::unilateral::status::Cancel(it.interrupt.shared())),
     };
     let mut lines = Vec::new();
     let verbose = o.verbose;
@@ -327,7 +365,14 @@ fn solve_unil(
     for l in lines {
         it.println(&l);
     }
-    let (sol, report) = res.map_err(|e| explain(it, r, asm, e, std::slice::from_ref(load)))?;
+    let (sol, report) = res.map_err(|e| match e {
+        // Ctrl-C between two status solves: the flag is used up here.
+        SolveError::Interrupted => {
+            it.interrupt.clear();
+            crate::eval::interrupted()
+        }
+        e => explain(it, r, asm, e, std::slice::from_ref(load)),
+    })?;
     if !report.converged {
         // 'SOUC': Cast3M's UNILATER returns its last iterate with a warning.
         let last = report.records.last().expect("an unconverged iteration has records");
@@ -415,11 +460,13 @@ fn unil(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     }
     let asm = r.numbered();
     let load = assemble::load(it, &asm, &[&f]).map_err(|e| a.err(e.message))?;
+    finite_data(&asm, std::slice::from_ref(&load)).map_err(|e| a.err(e))?;
     let (sol, rep) = solve_unil(it, &r, &asm, &load, &o)?;
     record(it, &rep);
     // solve_unil kept the report with the RIGIDITE (EXTR RIG 'CONT').
     let statuses: Vec<bool> = r.cache.borrow().last_unil.as_ref().map(|l| l.1.clone()).unwrap_or_default();
     let t = diagnostics(&rep, &statuses);
-    let field = solution_field(&asm, &sol);
-    Ok(vec![Value::Chpo(Rc::new(field)), t])
+    let field = Rc::new(solution_field(&asm, &sol));
+    finite_solutions(std::slice::from_ref(&field)).map_err(|e| a.err(e))?;
+    Ok(vec![Value::Chpo(field), t])
 }

@@ -6,6 +6,7 @@ use super::{Args, OpDef};
 use crate::error::Result;
 use crate::eval::Interp;
 use crate::value::{list_value_short, Key, Table, Value};
+use rustc_hash::FxHashMap;
 use std::cell::RefCell;
 use std::cmp::Ordering;
 use std::rc::Rc;
@@ -34,29 +35,33 @@ fn copi(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let v = a.req::<Value>()?;
     let recu = recu || a.keyword(&["RECU"]).is_some();
     let Value::Table(t) = v else { return Ok(vec![v]) };
-    let mut done = Vec::new();
-    Ok(vec![Value::Table(copy_table(&t, recu, &mut done))])
+    Ok(vec![Value::Table(copy_table(&t, recu))])
 }
 
-/// `done` maps every table already copied to its copy, so a table met
-/// twice (or holding itself) is copied once and cycles end.
-type Copied = Vec<(*const RefCell<Table>, Rc<RefCell<Table>>)>;
-
-fn copy_table(t: &Rc<RefCell<Table>>, recu: bool, done: &mut Copied) -> Rc<RefCell<Table>> {
-    if let Some((_, c)) = done.iter().find(|(p, _)| *p == Rc::as_ptr(t)) {
-        return c.clone();
+/// The copy of `root`; with `recu`, every table it reaches is copied once
+/// (a table met twice, or holding itself, maps to the same copy, so
+/// cycles end). The tables still to fill are kept on an explicit list, not
+/// the Rust stack: a chain of 100,000 nested tables copies like a flat one.
+fn copy_table(root: &Rc<RefCell<Table>>, recu: bool) -> Rc<RefCell<Table>> {
+    let copy = Rc::new(RefCell::new(root.borrow().clone()));
+    if !recu {
+        return copy;
     }
-    let out = Rc::new(RefCell::new(Table::new()));
-    done.push((Rc::as_ptr(t), out.clone()));
-    let entries: Vec<(Key, Value)> = t.borrow().iter().map(|(k, v)| (k.clone(), v.clone())).collect();
-    for (k, v) in entries {
-        let v = match v {
-            Value::Table(inner) if recu => Value::Table(copy_table(&inner, recu, done)),
-            other => other,
-        };
-        out.borrow_mut().set(k, v);
+    let mut done: FxHashMap<*const RefCell<Table>, Rc<RefCell<Table>>> = FxHashMap::default();
+    done.insert(Rc::as_ptr(root), copy.clone());
+    let mut to_fill = vec![copy.clone()];
+    while let Some(t) = to_fill.pop() {
+        for v in t.borrow_mut().values_mut() {
+            let Value::Table(inner) = v else { continue };
+            let c = done.entry(Rc::as_ptr(inner)).or_insert_with(|| {
+                let c = Rc::new(RefCell::new(inner.borrow().clone()));
+                to_fill.push(c.clone());
+                c
+            });
+            *v = Value::Table(c.clone());
+        }
     }
-    out
+    copy
 }
 
 /// Sort rank of a key's type, then the order within it.

@@ -36,6 +36,13 @@ pub enum SolveError {
     /// to count as singular) shows there.
     #[error("inaccurate solution: relative residual {residual:e}")]
     Inaccurate { residual: f64, weakest: Vec<usize> },
+    /// The solution overflows (an infinity or a NaN) although the data are
+    /// finite: loads or imposed values too large for the matrix.
+    #[error("the solution overflows: the loads or imposed values are too large for this matrix")]
+    Overflow,
+    /// Stopped from outside (Ctrl-C) between two solves.
+    #[error("interrupted")]
+    Interrupted,
     /// Anything else the numerical library reported.
     #[error("{0}")]
     Other(String),

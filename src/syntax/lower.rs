@@ -153,22 +153,43 @@ fn symbol(s: &str) -> &'static str {
     }
 }
 
-/// Cast3M's number rule: no `.` and no exponent is an ENTIER (up to 9
-/// significant digits, more turns it into a FLOTTANT); otherwise FLOTTANT.
-/// `D` and `Q` exponents are Fortran spellings of `E`.
+/// Cast3M's number rule (redlec.eso): no `.` and no exponent is an ENTIER
+/// when it has at most 9 digits (every digit counts, leading zeros too);
+/// more digits make it a FLOTTANT, as do a `.` or an exponent. `D` and `Q`
+/// exponents are Fortran spellings of `E`. A literal beyond the range of a
+/// FLOTTANT (`1.E999`) is refused here: it would be an infinity that no
+/// later check sees coming from the text.
 fn number(text: &str, span: Span) -> Result<ItemKind> {
     // `E2` alone (from `-E2`): an exponent without mantissa, whose mantissa is 0.
     if text.starts_with(|c: char| c.is_ascii_alphabetic()) {
         return number(&format!("0{}", text), span);
     }
     let is_float = text.contains(['.', 'e', 'E', 'd', 'D', 'q', 'Q']);
-    let digits = text.trim_start_matches('0').len();
-    if !is_float && digits <= 9 {
+    if !is_float && text.len() <= MAX_INT_DIGITS {
         return text
             .parse::<i64>()
             .map(ItemKind::Int)
             .map_err(|_| Error::syntax(format!("'{}' is not a number", text), span));
     }
     let norm: String = text.chars().map(|c| if matches!(c, 'd' | 'D' | 'q' | 'Q') { 'E' } else { c }).collect();
-    norm.parse::<f64>().map(ItemKind::Float).map_err(|_| Error::syntax(format!("'{}' is not a number", text), span))
+    match norm.parse::<f64>() {
+        Ok(x) if x.is_finite() => Ok(ItemKind::Float(x)),
+        Ok(_) => Err(Error::syntax(
+            format!("the number '{}' is beyond the range of a FLOTTANT (about 1.8E+308)", clip(text)),
+            span,
+        )),
+        Err(_) => Err(Error::syntax(format!("'{}' is not a number", clip(text)), span)),
+    }
+}
+
+/// Digits an ENTIER literal may have (NFIX in redlec.eso).
+const MAX_INT_DIGITS: usize = 9;
+
+/// A literal as quoted in a message: a 100,000-digit number is shown by
+/// its ends.
+fn clip(text: &str) -> String {
+    match text.len() {
+        n if n <= 40 => text.to_string(),
+        n => format!("{}…{} ({} characters)", &text[..20], &text[n - 10..], n),
+    }
 }

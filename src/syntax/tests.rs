@@ -41,6 +41,11 @@ fn numbers() {
     );
     // More than 9 digits turns an integer into a float.
     assert_eq!(items("1234567890 ;"), vec![Float(1234567890.0)]);
+    // Every digit counts, leading zeros too (redlec.eso).
+    assert_eq!(items("000000012 0000000012 ;"), vec![Int(12), Float(12.0)]);
+    // Beyond the range of a FLOTTANT: refused where it is written.
+    let e = crate::syntax::parse("x = 1 + 1.e999 ;").unwrap_err();
+    assert_eq!((e.span.map(|s| (s.start, s.end)), e.message.contains("beyond the range")), (Some((8, 14)), true));
 }
 
 #[test]

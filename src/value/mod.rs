@@ -7,6 +7,7 @@ pub mod arith;
 mod describe;
 mod display;
 pub mod field;
+pub mod finite;
 pub mod model;
 pub mod rigidity;
 pub mod table;

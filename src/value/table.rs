@@ -2,6 +2,7 @@
 //! subtype (stored under 'SOUSTYPE', as Cast3M does).
 
 use super::Value;
+use std::cell::RefCell;
 use std::rc::Rc;
 
 /// A table key. MOT keys ignore trailing blanks (Cast3M pads words);
@@ -107,5 +108,42 @@ impl Table {
     }
     pub fn iter(&self) -> impl Iterator<Item = &(Key, Value)> {
         self.entries.iter()
+    }
+    /// The values, to replace in place (COPI 'RECU' swaps inner tables
+    /// for their copies without looking keys up again).
+    pub fn values_mut(&mut self) -> impl Iterator<Item = &mut Value> {
+        self.entries.iter_mut().map(|(_, v)| v)
+    }
+}
+
+/// Dropping a table drops its entries, and the default drop glue would
+/// recurse once per nested table: a chain of 100,000 tables
+/// (`n . 'X' = t ; t = n ;` in a loop) overflowed the stack when the
+/// chain was released. The inner tables this table owns last are taken
+/// apart here, one at a time, from an explicit work list.
+impl Drop for Table {
+    fn drop(&mut self) {
+        let mut pending: Vec<Rc<RefCell<Table>>> = Vec::new();
+        take_tables(&mut self.entries, &mut pending);
+        while let Some(t) = pending.pop() {
+            // Shared tables are only released by their last owner.
+            if let Ok(cell) = Rc::try_unwrap(t) {
+                let mut inner = cell.into_inner();
+                take_tables(&mut inner.entries, &mut pending);
+                // `inner` drops here, with no table left in it.
+            }
+        }
+    }
+}
+
+/// Move the tables held by `entries` (as values or as keys) to `pending`.
+fn take_tables(entries: &mut Vec<(Key, Value)>, pending: &mut Vec<Rc<RefCell<Table>>>) {
+    for (k, v) in std::mem::take(entries) {
+        if let Value::Table(t) = v {
+            pending.push(t);
+        }
+        if let Key::Object(ObjectKey(Value::Table(t))) = k {
+            pending.push(t);
+        }
     }
 }

@@ -1,6 +1,7 @@
 //! The `gibi` command: run decks, a snippet, stdin, or open the REPL.
 //! Exit codes follow sysexits: 65 for a syntax error, 70 for a runtime
-//! error or an aborting ERRE, 66 for an unreadable file.
+//! error or an aborting ERRE, 66 for an unreadable file, 73 for a file
+//! that could not be written, 77 for a path the file policy refuses.
 
 mod repl;
 
@@ -25,12 +26,18 @@ struct Cli {
     /// Print the operator catalogue as JSON and exit.
     #[arg(long = "list-operators")]
     list_operators: bool,
+    /// Do not print a line for each file written (and no REPL banner).
+    #[arg(short = 'q', long)]
+    quiet: bool,
 }
 
 fn exit_code(kind: ErrorKind) -> u8 {
     match kind {
         ErrorKind::Syntax => 65,
         ErrorKind::Io => 66,
+        ErrorKind::Write => 73,
+        ErrorKind::Denied => 77,
+        ErrorKind::Interrupted => 130,
         _ => 70,
     }
 }
@@ -48,6 +55,21 @@ fn main() -> ExitCode {
             ExitCode::from(70)
         }
     }
+}
+
+/// Ctrl-C stops the running instruction (the REPL gets its prompt back
+/// with every object, a deck run ends with exit 130 naming the line). A
+/// second Ctrl-C before the first is acted on (a long operator that does
+/// not poll the flag) ends the process.
+pub(crate) fn catch_ctrl_c(gibi: &Interpreter) {
+    let stop = gibi.interrupt_handle();
+    let _ = ctrlc::set_handler(move || {
+        if stop.is_pending() {
+            eprintln!("\ngibi: interrupted");
+            std::process::exit(130);
+        }
+        stop.interrupt();
+    });
 }
 
 /// Standard input as deck text (Latin-1 bytes accepted, see `decode`).
@@ -73,7 +95,8 @@ fn os_bytes(s: &OsStr) -> std::borrow::Cow<'_, [u8]> {
 fn run() -> ExitCode {
     let cli = Cli::parse();
     let cwd = std::env::current_dir().unwrap_or_else(|_| ".".into());
-    let mut gibi = Interpreter::builder().output(std::io::stdout()).files(FilePolicy::Under(cwd)).build();
+    let mut gibi =
+        Interpreter::builder().output(std::io::stdout()).files(FilePolicy::Under(cwd)).report_files(!cli.quiet).build();
 
     if cli.list_operators {
         println!("{}", repl::catalogue_json(gibi.registry()));
@@ -93,11 +116,12 @@ fn run() -> ExitCode {
     }
     if inputs.is_empty() {
         if std::io::stdin().is_terminal() && !cli.check {
-            return repl::run(gibi);
+            return repl::run(gibi, cli.quiet);
         }
         inputs.push(("<stdin>".into(), read_stdin()));
     }
 
+    catch_ctrl_c(&gibi);
     for (name, text) in inputs {
         let text = match text {
             Ok(t) => t,

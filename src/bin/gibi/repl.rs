@@ -141,7 +141,8 @@ pub fn help(registry: &Registry, what: Option<&str>) -> String {
             }
             s
         }
-        Some(w) => match registry.find(w) {
+        // Operators match on their first 4 letters in any case, as in decks.
+        Some(w) => match registry.find(&w.to_uppercase()) {
             Some(op) => {
                 let mut s = format!("{}\n  usage: {}", op.doc, op.signature);
                 if !op.example.is_empty() {
@@ -182,7 +183,7 @@ pub fn catalogue_json(registry: &Registry) -> String {
     format!("[\n{}\n]", items.join(",\n"))
 }
 
-pub fn run(mut gibi: Interpreter) -> ExitCode {
+pub fn run(mut gibi: Interpreter, quiet: bool) -> ExitCode {
     let names = Rc::new(RefCell::new(Vec::new()));
     refresh_names(&gibi, &names);
     let mut rl: Editor<GibiHelper, rustyline::history::DefaultHistory> = match Editor::new() {
@@ -193,11 +194,17 @@ pub fn run(mut gibi: Interpreter) -> ExitCode {
         }
     };
     rl.set_helper(Some(GibiHelper { names: names.clone() }));
+    // After the editor: rustyline takes SIGINT for itself when it starts,
+    // and a Ctrl-C during a run must reach the interpreter. While a line
+    // is read the terminal is raw, and Ctrl-C is a key, not a signal.
+    crate::catch_ctrl_c(&gibi);
     let hist = history_path();
     if let Some(h) = &hist {
         let _ = rl.load_history(h);
     }
-    println!("gibi {} — Gibiane interpreter. :help for help, Ctrl-D to leave.", env!("CARGO_PKG_VERSION"));
+    if !quiet {
+        println!("gibi {} — Gibiane interpreter. :help for help, Ctrl-D to leave.", env!("CARGO_PKG_VERSION"));
+    }
     let mut n = 0;
     loop {
         match rl.readline("gibi> ") {
@@ -206,10 +213,12 @@ pub fn run(mut gibi: Interpreter) -> ExitCode {
                     continue;
                 }
                 let _ = rl.add_history_entry(line.as_str());
+                // Saved entry by entry: a killed session loses nothing.
+                save_history(&mut rl, hist.as_deref());
                 let t = line.trim();
                 if let Some(cmd) = t.strip_prefix(':') {
                     let mut it = cmd.split_whitespace();
-                    match it.next().unwrap_or("") {
+                    match it.next().unwrap_or("").to_lowercase().as_str() {
                         "help" | "h" => println!("{}", help(gibi.registry(), it.next())),
                         "list" | "l" => {
                             for (name, v) in gibi.objects() {
@@ -222,6 +231,8 @@ pub fn run(mut gibi: Interpreter) -> ExitCode {
                     continue;
                 }
                 n += 1;
+                // A Ctrl-C typed while nothing ran must not stop this entry.
+                gibi.interrupt_handle().clear();
                 match gibi.run_str(&format!("<repl#{}>", n), &line) {
                     Ok(Outcome::Finished) => break,
                     Ok(Outcome::EndOfInput) => {}
@@ -237,11 +248,16 @@ pub fn run(mut gibi: Interpreter) -> ExitCode {
             }
         }
     }
-    if let Some(h) = &hist {
-        if let Some(d) = h.parent() {
-            let _ = std::fs::create_dir_all(d);
-        }
-        let _ = rl.save_history(h);
-    }
+    save_history(&mut rl, hist.as_deref());
     ExitCode::SUCCESS
+}
+
+/// Append the entries not yet in the history file (rustyline locks the
+/// file, so two sessions do not mix their lines).
+fn save_history(rl: &mut Editor<GibiHelper, rustyline::history::DefaultHistory>, path: Option<&std::path::Path>) {
+    let Some(h) = path else { return };
+    if let Some(d) = h.parent() {
+        let _ = std::fs::create_dir_all(d);
+    }
+    let _ = rl.append_history(h);
 }

@@ -72,7 +72,10 @@ pub fn fractions(
             }
         }
     }
-    if !(length.is_finite() && length > 0.0) {
+    if !length.is_finite() {
+        return fail(op, "the length to divide overflows (the end points are too far apart)");
+    }
+    if length <= 0.0 {
         return fail(op, "the length to divide is zero (the end points coincide)");
     }
     if let Some(n) = spacing.n {

@@ -4,8 +4,10 @@
 //! with depth are drawn in a fixed axonometric view (from +x, −y, +z, z
 //! up), their boundary faces filled and sorted far to near (painter's
 //! algorithm): enough to see a shape, with no display and no GPU.
-//! A field colours faces by linear interpolation of nodal values on small
-//! sub-triangles, with a colour bar on the right.
+//! A nodal field colours faces by linear interpolation of nodal values on
+//! small sub-triangles; an element field colours each element (each skin
+//! face of a volume) by its one value. Either comes with a colour bar on
+//! the right.
 
 use super::{colormap, range, render, Format, Paint, PALETTE};
 use crate::fem::mesh::{Colour, ElemType, Mesh, Nodes};
@@ -23,23 +25,55 @@ pub struct NodalField {
     pub name: String,
 }
 
+/// One value per element (an MCHAML averaged over each element's points):
+/// `cells` holds the element type, its nodes and its value.
+#[derive(Debug, Clone, Default)]
+pub struct ElementField {
+    pub cells: Vec<(ElemType, Vec<usize>, f64)>,
+    pub name: String,
+}
+
+/// The field a picture colours.
+#[derive(Debug, Clone)]
+pub enum Field {
+    Nodal(NodalField),
+    Element(ElementField),
+}
+
+impl Field {
+    fn name(&self) -> &str {
+        match self {
+            Field::Nodal(f) => &f.name,
+            Field::Element(f) => &f.name,
+        }
+    }
+    /// The nodes the field is drawn on.
+    fn nodes(&self) -> Vec<usize> {
+        match self {
+            Field::Nodal(f) => f.mesh.node_list(),
+            Field::Element(f) => f.cells.iter().flat_map(|c| c.1.iter().copied()).collect(),
+        }
+    }
+}
+
 #[derive(Debug, Clone)]
 pub struct MeshPicture<'a> {
     pub nodes: &'a Nodes,
     /// Drawn as element edges, one colour per mesh unless its elements
     /// have their own (COUL).
     pub meshes: Vec<Mesh>,
-    pub field: Option<NodalField>,
+    pub field: Option<Field>,
     pub title: String,
 }
 
 /// Draw meshes and an optional field and write an SVG or PNG file.
 pub fn draw_mesh(p: &MeshPicture, format: Format, path: &Path) -> Result<()> {
-    let all = p.meshes.iter().chain(p.field.iter().map(|f| &f.mesh));
-    if all.clone().all(|m| m.n_elements() == 0) {
+    let field_nodes = p.field.as_ref().map(Field::nodes).unwrap_or_default();
+    if p.meshes.iter().all(|m| m.n_elements() == 0) && field_nodes.is_empty() {
         return err("nothing to draw: the meshes are empty");
     }
-    if let Some(n) = all.flat_map(|m| m.parts.iter().flat_map(|q| q.conn.iter())).find(|&&n| n >= p.nodes.len()) {
+    let mesh_nodes = p.meshes.iter().flat_map(|m| m.parts.iter().flat_map(|q| q.conn.iter().copied()));
+    if let Some(n) = mesh_nodes.chain(field_nodes).find(|&n| n >= p.nodes.len()) {
         return err(format!("node {} is not in the node table", n + 1));
     }
     render(path, format, p)
@@ -151,7 +185,28 @@ impl MeshPicture<'_> {
         let at = |n: usize| view.project(self.nodes.get(n));
         let mut prims: Vec<(f64, Prim)> = Vec::new();
         let mut vrange = None;
-        if let Some(f) = &self.field {
+        if let Some(Field::Element(f)) = &self.field {
+            vrange = true_range(f.cells.iter().map(|c| c.2));
+            let (lo, hi) = vrange.unwrap_or((0.0, 1.0));
+            let fill = |v: f64| match v.is_finite() {
+                true => colormap(if hi > lo { (v - lo) / (hi - lo) } else { 0.5 }),
+                false => RGBColor(200, 200, 200),
+            };
+            for (poly, v) in element_faces(&f.cells) {
+                let depth = poly.iter().map(|&n| at(n).2).sum::<f64>() / poly.len() as f64;
+                let mut pts: Vec<_> = poly.iter().map(|&n| (at(n).0, at(n).1)).collect();
+                match poly.len() {
+                    1 => prims.push((depth, Prim::Dot { pt: pts[0], color: fill(v) })),
+                    2 => prims.push((depth, Prim::Line { pts, color: fill(v), width: 4 })),
+                    _ => {
+                        pts.push(pts[0]);
+                        let stroke = Some(RGBColor(90, 90, 90));
+                        prims.push((depth, Prim::Poly { pts, fill: Some(fill(v)), stroke }));
+                    }
+                }
+            }
+        }
+        if let Some(Field::Nodal(f)) = &self.field {
             vrange = range(f.values.values().copied()).map(|(a, b)| {
                 // `range` pads; the colour bar shows the true extremes.
                 let pad = if b - a > 0.0 { (b - a) / 1.1 * 0.05 } else { 0.0 };
@@ -216,6 +271,39 @@ impl MeshPicture<'_> {
         }
         (prims.into_iter().map(|(_, p)| p).collect(), vrange)
     }
+}
+
+/// The extremes of finite values (None when there is none).
+fn true_range(values: impl Iterator<Item = f64>) -> Option<(f64, f64)> {
+    let r = values.filter(|v| v.is_finite()).fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| (a.min(v), b.max(v)));
+    (r.0 <= r.1).then_some(r)
+}
+
+/// What an element field shows, each with its element's value: points,
+/// segments of line elements, surface elements, and the skin faces of
+/// volume elements (an interior face is shared by two elements).
+fn element_faces(cells: &[(ElemType, Vec<usize>, f64)]) -> Vec<(Vec<usize>, f64)> {
+    let mut out = Vec::new();
+    let mut count: HashMap<Vec<usize>, (usize, Vec<usize>, f64)> = HashMap::new();
+    for (ty, e, v) in cells {
+        match ty.dim() {
+            0 => out.push((vec![e[0]], *v)),
+            1 => out.extend(e.windows(2).map(|w| (w.to_vec(), *v))),
+            2 => out.push((e.clone(), *v)),
+            _ => {
+                for f in faces(*ty) {
+                    let face: Vec<usize> = f.iter().map(|&k| e[k]).collect();
+                    let mut key = face.clone();
+                    key.sort_unstable();
+                    count.entry(key).or_insert((0, face, *v)).0 += 1;
+                }
+            }
+        }
+    }
+    let mut skin: Vec<_> = count.into_values().filter(|(n, ..)| *n == 1).map(|(_, f, v)| (f, v)).collect();
+    skin.sort_by(|a, b| a.0.cmp(&b.0));
+    out.extend(skin);
+    out
 }
 
 /// Split a polygon with nodal values into small triangles (a fan from the
@@ -318,7 +406,7 @@ impl Paint for MeshPicture<'_> {
             }
         }
         if let (Some(f), Some((lo, hi))) = (&self.field, vrange) {
-            colour_bar(&bar, &f.name, lo, hi).map_err(s)?;
+            colour_bar(&bar, f.name(), lo, hi).map_err(s)?;
         }
         Ok(())
     }
@@ -326,8 +414,9 @@ impl Paint for MeshPicture<'_> {
 
 impl MeshPicture<'_> {
     fn deep(&self) -> bool {
-        let mut all = self.meshes.iter().chain(self.field.iter().map(|f| &f.mesh));
-        all.any(|m| m.node_list().into_iter().any(|n| self.nodes.get(n)[2].abs() > 1e-12))
+        let field = self.field.as_ref().map(Field::nodes).unwrap_or_default();
+        let mut all = self.meshes.iter().flat_map(|m| m.node_list()).chain(field);
+        all.any(|n| self.nodes.get(n)[2].abs() > 1e-12)
     }
 }
 

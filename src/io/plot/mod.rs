@@ -10,7 +10,7 @@ mod curve;
 mod mesh;
 
 pub use curve::{draw_curves, Curve, CurvePicture};
-pub use mesh::{draw_mesh, MeshPicture, NodalField};
+pub use mesh::{draw_mesh, ElementField, Field, MeshPicture, NodalField};
 
 use super::{write_file, IoError, Result};
 use plotters::coord::Shift;

@@ -189,6 +189,28 @@ fn tables(it: &mut Interp, a: &Args, op: Bin, x: &Value, y: &Value) -> Result<Op
             return Err(a.err("arithmetic on tables needs tables of subtype VECTEUR (TABLE 'VECTEUR')"));
         }
     }
+    // Entries that are VECTEUR tables themselves combine by a recursive
+    // call: it counts as one nesting level, so a chain of 100,000 tables
+    // is an error, not a stack overflow.
+    if it.depth >= crate::eval::MAX_NESTING {
+        return Err(a.err(format!("VECTEUR tables nested more than {} deep", crate::eval::MAX_NESTING)));
+    }
+    it.depth += 1;
+    let r = table_entries(it, a, op, x, y, tx, ty);
+    it.depth -= 1;
+    r
+}
+
+/// The entries of [`tables`]' result, the operands already checked.
+fn table_entries(
+    it: &mut Interp,
+    a: &Args,
+    op: Bin,
+    x: &Value,
+    y: &Value,
+    tx: Option<Rc<RefCell<Table>>>,
+    ty: Option<Rc<RefCell<Table>>>,
+) -> Result<Option<Value>> {
     let soustype = Key::Mot("SOUSTYPE".into());
     let mut out = Table::with_subtype("VECTEUR");
     match (tx, ty) {

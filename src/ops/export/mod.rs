@@ -9,19 +9,21 @@
 //! `exports` state.
 //!
 //! One file per kind: [`sort_vtk`] (ParaView), [`sort_matrix`]
-//! (MatrixMarket), [`read_gmsh`], [`pictures`] (TRAC, DESS, VECT).
+//! (MatrixMarket), [`read_gmsh`], [`pictures`] (TRAC, DESS, VECT) with
+//! [`trac_fields`] (the scalar a picture is coloured by).
 
 mod pictures;
 mod read_gmsh;
 mod sort_matrix;
 mod sort_vtk;
+mod trac_fields;
 
 use super::{Args, OpDef};
-use crate::error::{Error, Result};
+use crate::error::{Error, ErrorKind, Result};
 use crate::eval::Interp;
 use crate::io;
 use crate::value::Value;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 pub(crate) const OPS: &[OpDef] = &[
     OpDef {
@@ -48,12 +50,14 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "TRAC",
-        signature: "TRAC (CHPOINT) MAILLAGE… ('TITR' text) (device words)",
-        doc: "Draw meshes (one colour each; a deformed mesh is `m PLUS (u * scale)`) or a nodal field on its \
-              mesh as an SVG or PNG file (OPTI TRAC 'SVG'|'PNG'; other devices such as PSC or X mean SVG). \
-              File: the OPTI SORT name, else gibi_trac_N. Unknown option words are ignored; with no file \
-              access allowed by the host, nothing is drawn.",
-        example: "opti trac 'PNG' ; trac (exco u 'UY') s ; trac (s et (s plus (u * 100.))) ;",
+        signature: "TRAC (CHPOINT) MAILLAGE… | TRAC MMODEL MCHAML (MAILLAGE…) ('TITR' text) (device words)",
+        doc: "Draw meshes (one colour each; a deformed mesh is `m PLUS (u * scale)`), a nodal field on its \
+              mesh, or an element field (VMIS, SIGM…: each element coloured by the mean of its points, the \
+              model as its support) with a colour bar, as an SVG or PNG file (OPTI TRAC 'SVG'|'PNG'; other \
+              devices such as PSC or X mean SVG). File: the OPTI SORT name, else gibi_trac_N. Option words, \
+              numbers and VECT arrows are passed over; an object that cannot be drawn is an error; with no \
+              file access allowed by the host, nothing is drawn.",
+        example: "opti trac 'PNG' ; trac (exco u 'UY') s ; trac mo (vmis mo sig) ;",
         f: pictures::trac,
     },
     OpDef {
@@ -79,6 +83,19 @@ fn io_err(e: io::IoError) -> Error {
     Error::io(e.0)
 }
 
+fn write_err(e: io::IoError) -> Error {
+    Error::new(ErrorKind::Write, e.0)
+}
+
+/// One line per file written (unless the host turned them off), relative
+/// to the directory the run may use: users see where their output went.
+fn wrote(it: &mut Interp, path: &Path) {
+    if it.report_files {
+        let shown = it.files.display(path);
+        it.println(&format!("wrote {}", shown));
+    }
+}
+
 /// The base name set by OPTI SORT, without a known extension.
 fn sort_base(it: &Interp) -> Option<String> {
     let s = it.opts.other.get("SORT")?.trim();
@@ -90,11 +107,13 @@ fn sort_base(it: &Interp) -> Option<String> {
     Some(s[..s.len() - cut].to_string())
 }
 
-/// A path the script may write, with its directory created.
+/// A path the script may write (its real path: see eval::FilePolicy),
+/// with its directory created.
 fn out_path(it: &Interp, name: &str) -> Result<PathBuf> {
-    let p = it.files.check(name)?;
+    let p = it.files.check_write(name)?;
     if let Some(dir) = p.parent().filter(|d| !d.as_os_str().is_empty()) {
-        std::fs::create_dir_all(dir).map_err(|e| Error::io(format!("cannot create {}: {}", dir.display(), e)))?;
+        std::fs::create_dir_all(dir)
+            .map_err(|e| Error::new(ErrorKind::Write, format!("cannot create {}: {}", dir.display(), e)))?;
     }
     Ok(p)
 }

@@ -1,7 +1,9 @@
-//! Pictures: TRAC (meshes, or a nodal field on its mesh), DESS (curves)
+//! Pictures: TRAC (meshes, a nodal field on its mesh, or an element
+//! field by element: see [`super::trac_fields`]), DESS (curves)
 //! as SVG or PNG files, and VECT, the arrows object decks hand to TRAC.
 
-use super::{io_err, out_path, sort_base};
+use super::trac_fields::{element_field, nodal_field};
+use super::{out_path, sort_base, write_err, wrote};
 use crate::error::Result;
 use crate::eval::args::Args;
 use crate::eval::{FilePolicy, Interp};
@@ -45,53 +47,70 @@ fn skip_options(a: &mut Args, title: &mut String) {
 pub(super) fn trac(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let mut title = it.title.clone();
     let mut meshes = Vec::new();
+    let mut models = Vec::new();
     let mut field: Option<(Rc<Chpoint>, Option<Mesh>)> = None;
+    let mut elem_field: Option<Rc<Mchaml>> = None;
     loop {
         skip_options(a, &mut title);
         let Some(v) = a.right_any() else { break };
         let mesh = match v {
             Value::Mesh(m) => (*m).clone(),
             Value::Point(p) => Mesh::points(&[p]),
-            Value::Model(m) => m.zones.iter().fold(Mesh::default(), |acc, z| acc.union(&z.mesh)),
-            Value::Chpo(c) if field.is_none() => {
+            Value::Model(m) => {
+                let mesh = m.zones.iter().fold(Mesh::default(), |acc, z| acc.union(&z.mesh));
+                models.push(meshes.len());
+                mesh
+            }
+            Value::Chpo(_) | Value::Mchaml(_) if field.is_some() || elem_field.is_some() => {
+                return Err(a.err("TRAC draws one field at a time (a CHPOINT or an MCHAML)"));
+            }
+            Value::Chpo(c) => {
                 field = Some((c, None));
                 continue;
             }
-            _ => continue,
+            Value::Mchaml(m) => {
+                elem_field = Some(m);
+                continue;
+            }
+            // Cast3M's options (words, numbers, lists of iso-values) and
+            // VECT's arrows, which gibi does not draw, are passed over.
+            Value::Mot(_)
+            | Value::Int(_)
+            | Value::Float(_)
+            | Value::Bool(_)
+            | Value::ListReel(_)
+            | Value::ListEnti(_)
+            | Value::ListMots(_)
+            | Value::Host(_) => continue,
+            Value::Evol(_) => return Err(a.err("TRAC draws meshes and fields; an EVOLUTIO is drawn by DESS")),
+            other => return Err(a.err(format!("TRAC cannot draw a {}", other.type_name()))),
         };
         match &mut field {
             Some((_, support @ None)) => *support = Some(mesh),
             _ => meshes.push(mesh),
         }
     }
-    let field = match field {
-        Some((c, Some(m))) => Some(nodal_field(&c, m)),
-        Some((_, None)) => return Err(a.err("TRAC of a CHPOINT needs the mesh it lives on: TRAC chpo mesh")),
-        None => None,
+    let field = match (field, elem_field) {
+        (Some((c, Some(m))), _) => Some(nodal_field(&c, m)),
+        (Some((_, None)), _) => return Err(a.err("TRAC of a CHPOINT needs the mesh it lives on: TRAC chpo mesh")),
+        (None, Some(m)) => {
+            // The element field carries its mesh: a model given with it
+            // is its support, not one more mesh to draw.
+            for k in models.into_iter().rev() {
+                meshes.remove(k);
+            }
+            Some(element_field(&m).map_err(|e| a.err(e))?)
+        }
+        (None, None) => None,
     };
     if meshes.is_empty() && field.is_none() {
-        return Err(a.missing("MAILLAGE or CHPOINT"));
+        return Err(a.missing("MAILLAGE, CHPOINT or MCHAML"));
     }
     let Some((format, path)) = picture_path(it)? else { return Ok(vec![]) };
     let pic = plot::MeshPicture { nodes: &it.nodes, meshes, field, title };
-    plot::draw_mesh(&pic, format, &path).map_err(io_err)?;
+    plot::draw_mesh(&pic, format, &path).map_err(write_err)?;
+    wrote(it, &path);
     Ok(vec![])
-}
-
-/// The scalar TRAC shows: the only component, else the displacement
-/// magnitude, else the first component.
-fn nodal_field(c: &Chpoint, mesh: Mesh) -> plot::NodalField {
-    let comps = c.components();
-    let disp: Vec<&str> = ["UX", "UY", "UZ"].into_iter().filter(|u| comps.iter().any(|c| c == u)).collect();
-    let (name, values) = if comps.len() != 1 && !disp.is_empty() {
-        let mag = |n: usize| disp.iter().map(|u| c.get(n, u).unwrap_or(0.0).powi(2)).sum::<f64>().sqrt();
-        ("|U|".to_string(), c.nodes.iter().map(|&n| (n, mag(n))).collect())
-    } else {
-        let first = comps.first().cloned().unwrap_or_default();
-        let values = c.nodes.iter().filter_map(|&n| Some((n, c.get(n, &first)?))).collect();
-        (first, values)
-    };
-    plot::NodalField { mesh, values, name }
 }
 
 /// The VECTEUR object of VECT: what it would draw, kept for LIST and TYPE.
@@ -175,6 +194,7 @@ pub(super) fn dess(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             .collect(),
     };
     let Some((format, path)) = picture_path(it)? else { return Ok(vec![]) };
-    plot::draw_curves(&pic, format, &path).map_err(io_err)?;
+    plot::draw_curves(&pic, format, &path).map_err(write_err)?;
+    wrote(it, &path);
     Ok(vec![])
 }

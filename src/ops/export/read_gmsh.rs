@@ -13,7 +13,7 @@ use std::rc::Rc;
 pub(super) fn lire(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     a.req_keyword(&["GMSH"])?;
     let file = a.req::<String>()?;
-    let path = it.files.check(&file)?;
+    let path = it.files.check_read(&file)?;
     let g = gmsh::read(&path).map_err(io_err)?;
     let dime = it.opts.dime;
     for (i, x) in g.coords.iter().enumerate() {

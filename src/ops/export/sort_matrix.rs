@@ -1,7 +1,7 @@
 //! SORT 'MAT': the assembled matrix of a RIGIDITE in MatrixMarket format,
 //! with the node and component of every row.
 
-use super::{io_err, out_path};
+use super::{out_path, write_err, wrote};
 use crate::error::Result;
 use crate::eval::args::Args;
 use crate::eval::Interp;
@@ -14,7 +14,10 @@ pub(super) fn sort_mat(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let rig = a.req::<Rc<Rigidite>>()?;
     let file = a.req::<String>()?;
     let (triplets, unknowns, comments) = triplets(&rig);
-    mtx::write(&out_path(it, &file)?, triplets, &unknowns, &comments).map_err(io_err)?;
+    let p = out_path(it, &file)?;
+    mtx::write(&p, triplets, &unknowns, &comments).map_err(write_err)?;
+    wrote(it, &p);
+    wrote(it, &mtx::dofs_path(&p));
     Ok(vec![])
 }
 

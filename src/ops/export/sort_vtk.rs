@@ -3,7 +3,7 @@
 //! them all; 'CONTACT' adds the status, gap and pressure of the unilateral
 //! conditions as point data.
 
-use super::{io_err, out_path, sort_base};
+use super::{io_err, out_path, sort_base, write_err, wrote};
 use crate::error::Result;
 use crate::eval::args::Args;
 use crate::eval::Interp;
@@ -85,7 +85,11 @@ pub(super) fn sort_vtk(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     }
     let base = sort_base(it).unwrap_or_else(|| "gibi".into());
     match time {
-        None => grid.write(&out_path(it, &format!("{}.vtu", base))?).map_err(io_err)?,
+        None => {
+            let p = out_path(it, &format!("{}.vtu", base))?;
+            grid.write(&p).map_err(write_err)?;
+            wrote(it, &p);
+        }
         Some(t) => {
             // Steps of the collection being written (a new base starts anew).
             let mut steps = match &it.exports.pvd {
@@ -93,10 +97,14 @@ pub(super) fn sort_vtk(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 _ => Vec::new(),
             };
             let file = format!("{}_{:04}.vtu", base, steps.len());
-            grid.write(&out_path(it, &file)?).map_err(io_err)?;
+            let p = out_path(it, &file)?;
+            grid.write(&p).map_err(write_err)?;
+            wrote(it, &p);
             let local = Path::new(&file).file_name().map_or(file.clone(), |f| f.to_string_lossy().into_owned());
             steps.push((t, local));
-            vtk::write_pvd(&out_path(it, &format!("{}.pvd", base))?, &steps).map_err(io_err)?;
+            let p = out_path(it, &format!("{}.pvd", base))?;
+            vtk::write_pvd(&p, &steps).map_err(write_err)?;
+            wrote(it, &p);
             it.exports.pvd = Some((base, steps));
         }
     }

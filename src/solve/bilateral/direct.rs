@@ -137,6 +137,10 @@ impl Factorization {
         }
         let mut z = b.clone();
         self.solve_mat(&mut z)?;
+        // Whatever 'NOID' says: a solution that overflowed is no solution.
+        if (0..z.ncols()).any(|j| z.col(j).iter().any(|x| !x.is_finite())) {
+            return Err(SolveError::Overflow);
+        }
         if check_residual {
             let mut eta = self.backward_error(&b, &z);
             if eta > RESIDUAL_TOL {
@@ -205,18 +209,24 @@ pub(crate) fn backward_error(sys: &Doubled, b: &Mat<f64>, z: &Mat<f64>) -> f64 {
         let x: Vec<f64> = (0..dim).map(|i| z[(i, j)]).collect();
         sys.apply(&x, &mut y, &mut t);
         let (mut ru, mut tu, mut rc, mut tc) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
+        // f64::max drops a NaN operand: an overflowing solution (inf − inf)
+        // must not pass as a zero residual.
+        let mut finite = true;
         for i in 0..n {
-            ru = ru.max((b[(i, j)] - y[i]).abs());
+            let r = (b[(i, j)] - y[i]).abs();
+            finite &= r.is_finite();
+            ru = ru.max(r);
             tu = tu.max(t[i] + b[(i, j)].abs());
         }
         for i in 0..m {
             let s = 2.0 * sys.scaling.sigma[i];
             let (a, c) = (n + i, n + m + i);
             let r = (b[(a, j)] - y[a]) + (b[(c, j)] - y[c]);
+            finite &= r.is_finite();
             rc = rc.max((r / s).abs());
             tc = tc.max((t[a] + t[c] + b[(a, j)].abs() + b[(c, j)].abs()) / s);
         }
-        if !(ru.is_finite() && rc.is_finite()) {
+        if !(finite && ru.is_finite() && rc.is_finite()) {
             return f64::INFINITY;
         }
         if tu > 0.0 {

@@ -73,11 +73,21 @@ pub struct UnilOptions {
     /// Return the last iterate when the status iteration does not converge
     /// (RESO 'SOUC'); [`UnilReport::converged`] then says so.
     pub keep_last: bool,
+    /// Stops the status iteration between two solves (see
+    /// [`status::StatusOptions::cancel`]).
+    pub cancel: Option<status::Cancel>,
 }
 
 impl Default for UnilOptions {
     fn default() -> Self {
-        UnilOptions { method: Method::Auto, max_iter: None, initial: None, rule: Rule::Auto, keep_last: false }
+        UnilOptions {
+            method: Method::Auto,
+            max_iter: None,
+            initial: None,
+            rule: Rule::Auto,
+            keep_last: false,
+            cancel: None,
+        }
     }
 }
 
@@ -146,7 +156,13 @@ pub fn solve_unilateral(
         Rule::Auto => Rule::Damped,
         r => r,
     };
-    let sopts = status::StatusOptions { max_iter: opts.max_iter, start, rule, keep_last: opts.keep_last };
+    let sopts = status::StatusOptions {
+        max_iter: opts.max_iter,
+        start,
+        rule,
+        keep_last: opts.keep_last,
+        cancel: opts.cancel.clone(),
+    };
     let global = |v: &[usize]| v.iter().map(|&q| uni[q]).collect::<Vec<_>>();
     let mut records = Vec::new();
     let mut forward = |r: &IterRecord| {

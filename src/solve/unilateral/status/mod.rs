@@ -60,6 +60,32 @@ pub struct StatusOptions {
     /// record then has the mode [`UNCONVERGED`], with the conditions that
     /// still wanted to change as activated / released.
     pub keep_last: bool,
+    /// Set from outside (Ctrl-C) to stop between two solves with
+    /// [`SolveError::Interrupted`]: a long status loop is not waited out.
+    pub cancel: Option<Cancel>,
+}
+
+impl StatusOptions {
+    fn cancelled(&self) -> bool {
+        self.cancel.as_ref().is_some_and(Cancel::is_set)
+    }
+}
+
+/// A stop flag shared with whoever may stop the solver (the interpreter's
+/// interrupt handle). Options compare equal when they share the flag.
+#[derive(Debug, Clone, Default)]
+pub struct Cancel(pub std::sync::Arc<std::sync::atomic::AtomicBool>);
+
+impl Cancel {
+    pub fn is_set(&self) -> bool {
+        self.0.load(std::sync::atomic::Ordering::Relaxed)
+    }
+}
+
+impl PartialEq for Cancel {
+    fn eq(&self, other: &Self) -> bool {
+        std::sync::Arc::ptr_eq(&self.0, &other.0)
+    }
 }
 
 /// Mode of the last record of an iteration that stopped unconverged
@@ -230,6 +256,9 @@ pub(crate) fn iterate(
     let mut records = Vec::new();
     let mut last_set = Vec::new();
     for it in 1..=maxit {
+        if opts.cancelled() {
+            return Err(SolveError::Interrupted);
+        }
         let x = b.solve()?;
         let v: Vec<f64> = (0..m).map(|i| sense[i] * x[i]).collect();
         let worst = |act: bool| {

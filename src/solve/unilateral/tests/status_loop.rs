@@ -92,6 +92,26 @@ fn cycling_climbs_the_mode_ladder_then_stops() {
     assert_eq!(r.unwrap_err(), SolveError::NoConvergence { iterations: 2, conditions: vec![0] });
 }
 
+/// A stop asked from outside (Ctrl-C) ends the loop before its next
+/// solve; this backend would otherwise climb the mode ladder (7 solves).
+#[test]
+fn a_cancel_flag_stops_the_iteration() {
+    use std::sync::atomic::{AtomicBool, Ordering};
+    let flag = std::sync::Arc::new(AtomicBool::new(false));
+    let cancel = crate::solve::unilateral::status::Cancel(flag.clone());
+    let o = StatusOptions { cancel: Some(cancel), max_iter: Some(1000), ..opts() };
+    let mut b = AlwaysViolated { active: Vec::new() };
+    let rows = vec![vec![(0, 1.0)]];
+    let mut n = 0;
+    let r = crate::solve::unilateral::status::iterate(&mut b, &[1.0], &rows, &[0.0], &o, &mut |_| {
+        n += 1;
+        if n == 3 {
+            flag.store(true, Ordering::Relaxed);
+        }
+    });
+    assert_eq!((r.unwrap_err(), n), (SolveError::Interrupted, 3));
+}
+
 /// Prints the solve counts of every case next to the spec's "ours"
 /// (run with --nocapture); asserts them loosely.
 #[test]
