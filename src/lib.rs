@@ -85,6 +85,7 @@ pub struct InterpreterBuilder {
     files: FilePolicy,
     registry: Registry,
     step_limit: Option<u64>,
+    procedures: Vec<std::path::PathBuf>,
 }
 
 impl InterpreterBuilder {
@@ -104,6 +105,14 @@ impl InterpreterBuilder {
         self.step_limit = Some(n);
         self
     }
+    /// Where Cast3M procedures are found when a deck names one it has
+    /// not defined: files of `$$$$ NAME` procedures (Cast3M's UTILPROC
+    /// format) or folders of `*.procedur` files. Paths add up; the first
+    /// that has a name wins. Default: none (gibi ships no procedure).
+    pub fn procedures<P: Into<std::path::PathBuf>>(mut self, paths: impl IntoIterator<Item = P>) -> Self {
+        self.procedures.extend(paths.into_iter().map(Into::into));
+        self
+    }
     /// Add an operator before the registry is frozen.
     pub fn operator(mut self, op: OpSpec) -> Self {
         self.registry.insert(op);
@@ -113,6 +122,7 @@ impl InterpreterBuilder {
         let mut interp = Interp::new(Rc::new(self.registry), self.out);
         interp.files = self.files;
         interp.step_limit = self.step_limit;
+        interp.library = eval::library::Library::new(self.procedures);
         Interpreter { interp }
     }
 }
@@ -140,6 +150,7 @@ impl Interpreter {
             files: FilePolicy::Nothing,
             registry: Registry::standard(),
             step_limit: None,
+            procedures: Vec::new(),
         }
     }
 

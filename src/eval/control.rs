@@ -67,7 +67,9 @@ impl Interp {
     }
 
     fn echo(&mut self, ins: &Instr) {
-        if self.opts.echo >= 1 {
+        // Library procedures echo only at level 2 (opti.notice: ECHO).
+        let level = if self.in_library > 0 { 2 } else { 1 };
+        if self.opts.echo >= level {
             let text = self.source.slice(ins.span).split_whitespace().collect::<Vec<_>>().join(" ");
             self.println(&format!("$ {}", text));
         }

@@ -4,6 +4,7 @@
 mod control;
 pub mod env;
 mod fast;
+pub mod library;
 pub mod machine;
 mod options;
 mod proc;
@@ -50,6 +51,11 @@ pub struct Interp {
     pub proc_sources: rustc_hash::FxHashMap<usize, Rc<Source>>,
     /// The last direct factorisations, reused by RESO (see ops::solver_cache).
     pub factors: crate::ops::solver_cache::FactorPool,
+    /// Cast3M procedures loaded from files on first use.
+    pub library: library::Library,
+    /// Library procedures being run (their instructions echo only with
+    /// `OPTI ECHO 2`, as Cast3M's external procedures do).
+    pub in_library: usize,
 }
 
 /// How deep blocks, parenthesised groups and procedure calls may run
@@ -112,6 +118,8 @@ impl Interp {
             depth: 0,
             proc_sources: Default::default(),
             factors: Default::default(),
+            library: Default::default(),
+            in_library: 0,
         }
     }
 

@@ -173,6 +173,31 @@ pub(crate) fn apply(it: &mut Interp, a: &Args, op: Bin, x: Value, y: Value) -> R
             }
             ListEnti(Rc::new(out))
         }
+        (Int(i), ListEnti(l)) => {
+            let mut out = Vec::with_capacity(l.len());
+            for q in l.iter() {
+                match int_op(a, op, *i, *q)? {
+                    Int(v) => out.push(v),
+                    _ => return Err(a.err("integer overflow in a LISTENTI")),
+                }
+            }
+            ListEnti(Rc::new(out))
+        }
+        // A LISTENTI with a FLOTTANT, or with a LISTREEL, gives reals.
+        (ListEnti(l), Float(s)) => ListReel(Rc::new(l.iter().map(|p| float_op(op, *p as f64, *s)).collect())),
+        (Float(s), ListEnti(l)) => ListReel(Rc::new(l.iter().map(|p| float_op(op, *s, *p as f64)).collect())),
+        (ListEnti(_), ListReel(_)) | (ListReel(_), ListEnti(_)) => {
+            let reals = |v: &Value| match v {
+                ListEnti(l) => l.iter().map(|i| *i as f64).collect::<Vec<f64>>(),
+                ListReel(l) => l.to_vec(),
+                _ => Vec::new(),
+            };
+            let (l, m) = (reals(&x), reals(&y));
+            if l.len() != m.len() {
+                return Err(a.err(format!("lists of different lengths ({} and {})", l.len(), m.len())));
+            }
+            ListReel(Rc::new(l.iter().zip(m.iter()).map(|(p, q)| float_op(op, *p, *q)).collect()))
+        }
         (Point(p), Point(q)) if matches!(op, Bin::Add | Bin::Sub) => {
             let (u, v) = (it.nodes.get(*p), it.nodes.get(*q));
             let w = [0, 1, 2].map(|k| float_op(op, u[k], v[k]));

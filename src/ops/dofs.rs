@@ -56,6 +56,13 @@ pub fn moments(it: &Interp) -> &'static [&'static str] {
 const EXTRA: &[(&str, &str)] =
     &[("UT", "FT"), ("RT", "MT"), ("LX", "FLX"), ("T", "Q"), ("TH", "QH"), ("P", "FP"), ("PI", "FPI")];
 
+/// The primal names gibi knows (mechanical, then EXTRA), for VALE 'INCO'.
+pub fn known_primals() -> Vec<&'static str> {
+    let mut v = vec!["UX", "UY", "UZ", "UR", "RX", "RY", "RZ"];
+    v.extend(EXTRA.iter().map(|(p, _)| *p));
+    v
+}
+
 /// The dual (force) name of a primal unknown.
 pub fn dual_of(primal: &str) -> String {
     if let Some(d) = crate::fem::element::dual_of(primal) {

@@ -77,12 +77,20 @@ fn io_err(e: io::IoError) -> Error {
 
 /// The base name set by OPTI SORT, without a known extension.
 fn sort_base(it: &Interp) -> Option<String> {
-    let s = it.opts.other.get("SORT")?.trim();
+    base_of(it.opts.text("SORT")?)
+}
+
+/// A file name without a known extension (None when blank).
+fn base_of(s: &str) -> Option<String> {
+    let s = s.trim();
     if s.is_empty() {
         return None;
     }
     let lower = s.to_lowercase();
-    let cut = [".vtu", ".pvd", ".svg", ".png"].iter().find(|e| lower.ends_with(*e)).map_or(0, |e| e.len());
+    let cut = [".vtu", ".pvd", ".svg", ".png", ".ps", ".eps", ".mif"]
+        .iter()
+        .find(|e| lower.ends_with(*e))
+        .map_or(0, |e| e.len());
     Some(s[..s.len() - cut].to_string())
 }
 
@@ -363,9 +371,11 @@ fn picture_path(it: &mut Interp) -> Result<Option<(plot::Format, PathBuf)>> {
     if matches!(it.files, FilePolicy::Nothing) {
         return Ok(None);
     }
-    let dev = it.opts.other.get("TRAC").map(|s| s.trim().to_uppercase()).unwrap_or_default();
-    let format = if dev.starts_with("PNG") { plot::Format::Png } else { plot::Format::Svg };
-    let name = match sort_base(it) {
+    let dev = it.opts.text("TRAC").unwrap_or_default();
+    let format = if dev == "PNG" { plot::Format::Png } else { plot::Format::Svg };
+    // OPTI FTRA names Cast3M's picture file; else OPTI SORT's name.
+    let base = it.opts.text("FTRA").and_then(base_of).or_else(|| sort_base(it));
+    let name = match base {
         Some(b) => format!("{}.{}", b, format.ext()),
         None => {
             let n: u64 = it.opts.other.get("TRAC COUNT").and_then(|s| s.parse().ok()).unwrap_or(0) + 1;
@@ -374,6 +384,11 @@ fn picture_path(it: &mut Interp) -> Result<Option<(plot::Format, PathBuf)>> {
         }
     };
     Ok(Some((format, out_path(it, &name)?)))
+}
+
+/// The line width set by OPTI EPTR (pixels, at least 1; at most 20).
+fn eptr(it: &Interp) -> Option<u32> {
+    it.opts.int("EPTR").map(|n| n.clamp(1, 20) as u32)
 }
 
 /// Title from `'TITR' text` (`title` starts as the deck's TITR); other
@@ -419,7 +434,8 @@ fn trac(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         return Err(a.missing("MAILLAGE or CHPOINT"));
     }
     let Some((format, path)) = picture_path(it)? else { return Ok(vec![]) };
-    let pic = plot::MeshPicture { nodes: &it.nodes, meshes, field, title };
+    let line_width = eptr(it);
+    let pic = plot::MeshPicture { nodes: &it.nodes, meshes, field, title, line_width };
     plot::draw_mesh(&pic, format, &path).map_err(io_err)?;
     Ok(vec![])
 }
@@ -519,6 +535,7 @@ fn dess(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             .iter()
             .map(|c| plot::Curve { label: c.legend.clone(), x: c.x.clone(), y: c.y.clone() })
             .collect(),
+        line_width: eptr(it),
     };
     let Some((format, path)) = picture_path(it)? else { return Ok(vec![]) };
     plot::draw_curves(&pic, format, &path).map_err(io_err)?;

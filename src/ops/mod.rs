@@ -6,6 +6,7 @@ mod args;
 mod arith;
 mod assemble;
 mod bc;
+pub mod catalogue;
 mod colour;
 mod contact;
 mod curves;
@@ -25,6 +26,8 @@ mod math;
 mod mesh;
 mod model;
 mod objects;
+mod opti;
+mod opti_own;
 mod pointwise;
 mod post;
 mod principal;
@@ -162,9 +165,6 @@ pub fn op_key(word: &str) -> &str {
 #[derive(Debug, Clone, Default)]
 pub struct Registry {
     ops: HashMap<String, Rc<OpSpec>>,
-    /// Cast3M names gibi lacks: found like operators (so a deck that calls
-    /// one stops there, named), but not part of the manual.
-    missing: HashMap<String, Rc<OpSpec>>,
 }
 
 impl Registry {
@@ -177,6 +177,7 @@ impl Registry {
             lists::OPS,
             objects::OPS,
             io::OPS,
+            opti::OPS,
             union::OPS,
             mesh::OPS,
             transform::OPS,
@@ -204,13 +205,6 @@ impl Registry {
                 r.insert(OpSpec::from(d));
             }
         }
-        // After every family, so that a stub never hides an operator.
-        for d in unimplemented::ops() {
-            let key = op_key(d.name).to_string();
-            if !r.ops.contains_key(&key) {
-                r.missing.insert(key, Rc::new(OpSpec::from(&d)));
-            }
-        }
         r
     }
 
@@ -218,10 +212,15 @@ impl Registry {
         self.ops.insert(op_key(&spec.name.to_uppercase()).to_string(), Rc::new(spec));
     }
 
-    /// The operator a word names, by its first 4 letters.
+    /// The operator a word names, by its first 4 letters, unless the word
+    /// is the full name of a Cast3M procedure: Cast3M finds procedures
+    /// before operators, so TRANSGEN is a procedure, never TRAN.
     pub fn find(&self, word: &str) -> Option<Rc<OpSpec>> {
-        let key = op_key(word);
-        self.ops.get(key).or_else(|| self.missing.get(key)).cloned()
+        let op = self.ops.get(op_key(word))?;
+        if word.len() > 4 && op.name != word && catalogue::procedure(word).is_some() {
+            return None;
+        }
+        Some(op.clone())
     }
 
     /// Every operator, sorted by name.

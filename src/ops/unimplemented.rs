@@ -1,129 +1,103 @@
-//! Cast3M operators and procedures that gibi does not implement.
+//! Cast3M names that gibi does not implement: how they are refused.
 //!
-//! Without this table such a word would be an unknown word, hence a MOT
-//! (language.md §2.2): `SAUV l ;` would run silently and
+//! Every name of Cast3M's catalogue ([`super::catalogue`]) that gibi lacks
+//! stops the deck where the deck *calls* it, by its full name and with
+//! what gibi offers instead. Without this a name would be an unknown word,
+//! hence a MOT (language.md §2.2): `SAUV l ;` would run silently and
 //! `y = VIBR k m 3 ;` would fail far away with "3 results for 1 name(s)".
-//! Registered as operators that always fail, they stop the deck where the
-//! deck calls them, naming the operator. A stub never shadows an operator
-//! that exists (see [`super::Registry::standard`]), so implementing one of
-//! these names only means adding it to its family table.
 //!
-//! Names that decks commonly write unquoted as *keywords* of other
-//! operators (DEPL, COMP, FORM, PLAS, CONV, THERMIQUE …) are left out on
-//! purpose: as operators they would stop `BLOQ DEPL p`-like calls that
-//! read them as words. Harmless directives (MENAGE, INFO) are left out too:
-//! a deck that calls them loses nothing when they are ignored.
+//! A refused name is refused only where it would run: as the operator of
+//! an instruction or a group. Where an operator reads its arguments it
+//! stays a plain word, so the many Cast3M names that decks write unquoted
+//! as keywords (`BLOQ DEPL p`, `OPTI SAUV 'f'`, `MODE l MECANIQUE …`)
+//! keep working, and it never hides an object or a procedure of that name.
 
-use super::{Args, OpDef};
-use crate::error::{Error, Result};
-use crate::eval::Interp;
-use crate::value::Value;
-
-/// What a name is in Cast3M.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Kind {
-    Operator,
-    Procedure,
-}
-
-/// One missing name: the 4-letter key a word is matched on (a procedure is
-/// matched on its first 4 letters too, like every operator word), the full
-/// Cast3M name, what it is, and an optional pointer to what gibi offers.
-pub struct Missing {
-    pub key: &'static str,
-    pub name: &'static str,
-    pub kind: Kind,
-    pub hint: &'static str,
-}
-
-const fn op(key: &'static str, name: &'static str, hint: &'static str) -> Missing {
-    Missing { key, name, kind: Kind::Operator, hint }
-}
-
-const fn proc(key: &'static str, name: &'static str, hint: &'static str) -> Missing {
-    Missing { key, name, kind: Kind::Procedure, hint }
-}
+use super::catalogue::{self, Entry, Kind};
+use super::Registry;
+use crate::error::Error;
 
 const STATICS: &str = "gibi solves linear statics: RIGI, BLOQ/RELA, RESO (UNIL for unilateral conditions)";
 const FILES: &str = "gibi writes results with SORT 'VTK' (ParaView) and reads meshes with LIRE 'GMSH'";
 const MESHING: &str = "gibi meshes with DROI, CERC, DALL, TRAN, ROTA, VOLU, SYME, PLUS, ELIM and ET";
+const POST: &str = "gibi post-processes with SIGM, EPSI, VMIS, PRIN, EXTR, EVOL, INTG, and draws with TRAC and DESS";
+const OTHER: &str = "`gibi --list-operators` lists what gibi implements";
 
-/// The table, sorted by key.
-pub const MISSING: &[Missing] = &[
-    op("ACQU", "ACQUERIR", "read data with LIRE"),
-    op("AMOR", "AMORTISSEMENT", STATICS),
-    op("CALP", "CALP", "SIGM gives the beam resultants EFFX … MOMZ"),
-    op("CAPA", "CAPACITE", STATICS),
-    op("CHAR", "CHARGEMENT", STATICS),
-    op("COND", "CONDUCTIVITE", STATICS),
-    op("DOMA", "DOMAINE", ""),
-    proc("DYNA", "DYNAMIC", STATICS),
-    op("DYNE", "DYNE", STATICS),
-    op("ECOU", "ECOULEMENT", STATICS),
-    op("EQEX", "EQEX", ""),
-    op("EQPR", "EQPR", ""),
-    op("EXCI", "EXCITER", "UNIL runs the unilateral status iteration natively"),
-    op("FLUX", "FLUX", STATICS),
-    op("GRAD", "GRADIENT", "EPSI gives strains"),
-    op("HOOK", "HOOKE", ""),
-    proc("INCR", "INCREME", STATICS),
-    op("ISOV", "ISOVALEUR", ""),
-    op("KCHA", "KCHA", ""),
-    op("KCHT", "KCHT", ""),
-    op("KSIG", "KSIGMA", STATICS),
-    op("MREM", "MREM", "RESO and UNIL re-insert eliminated unknowns themselves"),
-    op("NUAG", "NUAGE", ""),
-    op("OBTE", "OBTENIR", FILES),
-    proc("PASA", "PASAPAS", STATICS),
-    op("PAVE", "PAVER", MESHING),
-    op("PJBA", "PJBA", STATICS),
-    op("PROI", "PROI", ""),
-    op("RACC", "RACCORDER", MESHING),
-    op("RECO", "RECOMBINER", STATICS),
-    op("REGL", "REGLER", MESHING),
-    op("REST", "RESTITUER", FILES),
-    op("SAUV", "SAUVER", FILES),
-    op("TIRE", "TIRER", ""),
-    op("VARI", "VARIABLE", ""),
-    op("VIBR", "VIBRATION", STATICS),
+/// Pointers for particular names, by key (what the name's section says is
+/// often too vague for them).
+const HINTS: &[(&str, &str)] = &[
+    ("ACQU", "read data with LIRE"),
+    ("AMOR", STATICS),
+    ("CALP", "SIGM gives the beam resultants EFFX … MOMZ"),
+    ("CAPA", STATICS),
+    ("CHAR", STATICS),
+    ("COND", STATICS),
+    ("DYNAMIC", STATICS),
+    ("DYNE", STATICS),
+    ("ECOU", STATICS),
+    ("EXCI", "UNIL runs the unilateral status iteration natively"),
+    ("FLUX", STATICS),
+    ("GRAD", "EPSI gives strains"),
+    ("KSIG", STATICS),
+    ("MREM", "RESO and UNIL re-insert eliminated unknowns themselves"),
+    ("OBTE", FILES),
+    ("PASAPAS", STATICS),
+    ("PJBA", STATICS),
+    ("RECO", STATICS),
+    ("REST", FILES),
+    ("SAUV", FILES),
+    ("VIBR", STATICS),
 ];
 
-/// The message for a missing name, as written in the deck.
-pub fn message(m: &Missing) -> Error {
-    let what = match m.kind {
-        Kind::Operator => "operator",
-        Kind::Procedure => "procedure",
-    };
-    let e = Error::runtime(format!("{} is a Cast3M {} that gibi does not implement", m.name, what));
-    if m.hint.is_empty() {
-        e
-    } else {
-        e.note(m.hint)
+/// What gibi offers instead of a name, from the section of the manual it
+/// belongs to.
+fn hint(e: &Entry) -> &'static str {
+    if let Some((_, h)) = HINTS.iter().find(|(k, _)| *k == e.key) {
+        return h;
+    }
+    match e.section {
+        "Maillage" => MESHING,
+        "Mecanique" | "Mechanics" => STATICS,
+        "Post-traitement" => POST,
+        "Entree-Sortie" => FILES,
+        "Thermique" => "gibi's thermal side is thermal loading: EPTH turns a temperature field into strains",
+        _ => OTHER,
     }
 }
 
-/// The body every stub shares: find its row by the key it is registered
-/// under, and fail.
-fn stub(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    match MISSING.iter().find(|m| m.key == a.op.name) {
-        Some(m) => Err(message(m)),
-        None => Err(Error::runtime(format!("{} is a Cast3M name that gibi does not implement", a.op.name))),
+/// Why a name of the catalogue cannot run. `library` says whether a
+/// procedure library was given (a procedure is then refused only because
+/// the library lacks it).
+pub fn message(e: &Entry, library: bool) -> Error {
+    match e.kind {
+        Kind::Operator => {
+            Error::runtime(format!("{} is a Cast3M operator that gibi does not implement", e.name)).note(hint(e))
+        }
+        Kind::Procedure if library => Error::runtime(format!(
+            "{} is a Cast3M procedure that gibi does not implement, and the procedure library does not hold it",
+            e.name
+        ))
+        .note(hint(e)),
+        Kind::Procedure => {
+            let e0 = Error::runtime(format!("{} is a Cast3M procedure that gibi does not implement", e.name));
+            match HINTS.iter().find(|(k, _)| *k == e.key) {
+                Some((_, h)) => e0.note(*h),
+                None => e0,
+            }
+            .note(
+                "gibi ships none of Cast3M's procedures: give a procedure library with GIBI_PROCEDURES or \
+                 --procedures (Cast3M's procedur/ folder, or a file of $$$$ NAME procedures) to load them",
+            )
+        }
     }
 }
 
-/// The stubs as operator rows (not part of the manual: `Registry::all`
-/// lists only what gibi implements).
-pub(crate) fn ops() -> impl Iterator<Item = OpDef> {
-    MISSING.iter().map(|m| OpDef {
-        name: m.key,
-        // Not a bare name: an operator whose signature is its name alone
-        // takes no argument and is evaluated wherever it is met (PI), which
-        // would stop `OPTI SAUV 'f'` at the key SAUV.
-        signature: "(no usage: a Cast3M name that gibi does not implement)",
-        doc: "A Cast3M name that gibi does not implement.",
-        example: "",
-        f: stub,
-    })
+/// The refusal for a word standing where it would run, if the word is a
+/// Cast3M name that the registry does not implement.
+pub fn refusal(word: &str, registry: &Registry, library: bool) -> Option<Error> {
+    if registry.find(word).is_some() {
+        return None;
+    }
+    catalogue::lookup(word).map(|e| message(e, library))
 }
 
 #[cfg(test)]
@@ -131,21 +105,23 @@ mod tests {
     use super::*;
 
     #[test]
-    fn keys_are_sorted_unique_and_four_letters_at_most() {
-        for w in MISSING.windows(2) {
-            assert!(w[0].key < w[1].key, "{} before {}", w[0].key, w[1].key);
-        }
-        for m in MISSING {
-            assert!(m.key.len() <= 4 && m.name.starts_with(m.key), "{} / {}", m.key, m.name);
+    fn hints_name_catalogue_operators_gibi_lacks() {
+        let r = Registry::standard();
+        for (k, _) in HINTS {
+            let e = catalogue::lookup(k).unwrap_or_else(|| panic!("{} is not in the catalogue", k));
+            assert!(r.find(k).is_none(), "{} is implemented", k);
+            assert_eq!(e.key, *k);
         }
     }
 
     #[test]
-    fn no_stub_names_an_operator_gibi_has() {
-        let r = super::super::Registry::standard();
-        for m in MISSING {
-            let op = r.find(m.key).unwrap();
-            assert_eq!(op.doc, "A Cast3M name that gibi does not implement.", "{} is implemented", m.key);
-        }
+    fn refusals_use_the_full_name() {
+        let r = Registry::standard();
+        let e = refusal("VIBR", &r, false).unwrap();
+        assert_eq!(e.message, "VIBRATION is a Cast3M operator that gibi does not implement");
+        assert!(refusal("RESO", &r, false).is_none());
+        assert!(refusal("TOTO", &r, false).is_none());
+        let p = refusal("PASAPAS", &r, false).unwrap();
+        assert!(p.notes.iter().any(|n| n.contains("GIBI_PROCEDURES")));
     }
 }

@@ -43,6 +43,7 @@ fn target(p: Pair<Rule>, base: usize) -> Result<Target> {
     for c in p.into_inner() {
         match c.as_rule() {
             Rule::name if name.is_empty() => name = c.as_str().to_uppercase(),
+            Rule::counter if name.is_empty() => name = c.as_str().to_uppercase(),
             Rule::typed => {
                 let n = c.into_inner().next().map(|n| n.as_str().to_uppercase());
                 typed = n;

@@ -18,13 +18,24 @@ pub struct Reader {
     /// The text with column-1 comment lines blanked (same byte offsets).
     text: String,
     pos: usize,
+    /// Where `text` starts in the whole source (spans are given in the
+    /// whole source's offsets).
+    base: usize,
     blocks: Builder,
     done: bool,
 }
 
 impl Reader {
     pub fn new(text: &str) -> Self {
-        Reader { text: prepass::blank_comments(text), pos: 0, blocks: Builder::default(), done: false }
+        Reader { text: prepass::blank_comments(text), pos: 0, base: 0, blocks: Builder::default(), done: false }
+    }
+
+    /// Read only `text[start..end]`, with spans in the offsets of the whole
+    /// `text` (one procedure of a procedure library file: the file's other
+    /// procedures are not even looked at).
+    pub fn range(text: &str, start: usize, end: usize) -> Self {
+        let text = prepass::blank_comments(&text[start..end]);
+        Reader { text, pos: 0, base: start, blocks: Builder::default(), done: false }
     }
 
     /// The next instruction, or None at the end of the text.
@@ -36,7 +47,7 @@ impl Reader {
             None => self.text.len(),
         };
         self.pos = end;
-        Some(parse_one(&self.text[start..end], start))
+        Some(parse_one(&self.text[start..end], self.base + start))
     }
 }
 

@@ -25,6 +25,11 @@ struct Cli {
     /// Print the operator catalogue as JSON and exit.
     #[arg(long = "list-operators")]
     list_operators: bool,
+    /// A Cast3M procedure library: a file of `$$$$ NAME` procedures or a
+    /// folder of *.procedur files (repeatable; searched before the paths
+    /// of $GIBI_PROCEDURES).
+    #[arg(long = "procedures", value_name = "PATH")]
+    procedures: Vec<std::path::PathBuf>,
 }
 
 fn exit_code(kind: ErrorKind) -> u8 {
@@ -73,7 +78,13 @@ fn os_bytes(s: &OsStr) -> std::borrow::Cow<'_, [u8]> {
 fn run() -> ExitCode {
     let cli = Cli::parse();
     let cwd = std::env::current_dir().unwrap_or_else(|_| ".".into());
-    let mut gibi = Interpreter::builder().output(std::io::stdout()).files(FilePolicy::Under(cwd)).build();
+    let env_procedures = std::env::var_os("GIBI_PROCEDURES");
+    let procedures = cli.procedures.iter().cloned().chain(env_procedures.iter().flat_map(std::env::split_paths));
+    let mut gibi = Interpreter::builder()
+        .output(std::io::stdout())
+        .files(FilePolicy::Under(cwd))
+        .procedures(procedures.filter(|p| !p.as_os_str().is_empty()))
+        .build();
 
     if cli.list_operators {
         println!("{}", repl::catalogue_json(gibi.registry()));
