@@ -18,9 +18,9 @@ use std::rc::Rc;
 pub(crate) const OPS: &[OpDef] = &[
     OpDef {
         name: "OPTI",
-        signature: "OPTI KEY1 VAL1 (KEY2 VAL2 …): DIME n | ELEM type | MODE mode | ECHO n | DENS x | ERRE w | \
-                    RESO w | TRAC device | SORT file | FTRA file | EPTR n | ISOV w | COUL c | IMPI n | NIVE n | \
-                    SAUV file | REST file | PETI x | GRAN x | PREC x | INCO m1 m2 | NORM … (every option of opti.notice)",
+        signature: "OPTI KEY VALUE (KEY VALUE …), KEY one of ACQU ASSI CADR COSC COUL DEBU DENS DIME DONN ECHO \
+                    ELEM EPSI EPTR ERRE FTRA GRAN IMPI IMPR INCO ISOV LANG LECT LOCA MODE NAVI NBP NGMA NIVE NORM \
+                    OEIL OMBR PARA PETI PLAC POIN POLI POTR PREC RESO REST SAUV SORT SURV TRAC VERI ZERO",
         doc: "Set general options. Every Cast3M option is accepted and kept for VALE; DIME, ELEM, MODE, DENS, ECHO, \
               RESO, ERRE, SORT, FTRA, TRAC and EPTR act on gibi.",
         example: "opti dime 2 elem qua4 mode plan cont ;",
@@ -28,8 +28,7 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "VALE",
-        signature: "VALE KEY (KEY of OPTI: DIME, MODE ('FOUR'), ELEM, DENS, ECHO, TRAC, ISOV, PETI, GRAN, PREC, NBP, ERMA, …) \
-                    | VALE 'POIN' OBJ1 …",
+        signature: "VALE KEY (a KEY of OPTI, and ERMA) | VALE 'MODE' 'FOUR' | VALE 'POIN' OBJ1 …",
         doc: "The value of an option (as OPTI set it, else its default); VALE 'POIN' gives an identity number per \
               object (-3 for numbers, words and logicals).",
         example: "tol = (vale prec) ** 0.5 ;",
@@ -207,14 +206,16 @@ fn read(a: &mut Args, key: &str, arg: Arg) -> Result<Value> {
     })
 }
 
-/// The choice a word names: itself, a choice it begins (4 letters at
-/// least: 'SURF' for SURFACE), or a short choice by its 4 letters. Long
-/// choices differ past their 4th letter (HELVETICA_12, HELVETICA_14).
+/// The choice a word names: itself, else a choice that it begins or that
+/// begins it, 4 letters at least ('SURF' and 'SURFACES' for SURFACE), else
+/// a short choice by its 4 letters. Long choices differ past their 4th
+/// letter (HELVETICA_12, HELVETICA_14): neither begins the other.
 pub(super) fn choose(word: &str, choices: &[&'static str]) -> Option<&'static str> {
+    let long = |c: &&&str| word.len() >= 4 && c.len() >= 4 && (c.starts_with(word) || word.starts_with(**c));
     choices
         .iter()
         .find(|c| **c == word)
-        .or_else(|| choices.iter().find(|c| word.len() >= 4 && c.starts_with(word)))
+        .or_else(|| choices.iter().find(long))
         .or_else(|| choices.iter().find(|c| c.len() <= 4 && super::args::keyword_matches(word, c)))
         .copied()
 }
