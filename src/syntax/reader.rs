@@ -55,13 +55,17 @@ impl Iterator for Reader {
     type Item = Result<Stmt>;
 
     fn next(&mut self) -> Option<Result<Stmt>> {
+        if let Some(s) = self.blocks.ready.pop_front() {
+            return Some(Ok(s));
+        }
         while !self.done {
             let r = match self.instruction() {
                 None => {
                     self.done = true;
                     return self.blocks.finish().err().map(Err);
                 }
-                Some(r) => r.and_then(|ins| self.blocks.push(ins)),
+                Some(Ok(ins)) => self.blocks.push(ins),
+                Some(Err(e)) => self.blocks.push_broken(e),
             };
             match r {
                 Err(e) => {

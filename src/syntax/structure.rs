@@ -112,6 +112,9 @@ pub const MAX_BLOCK_DEPTH: usize = 100;
 #[derive(Default)]
 pub struct Builder {
     stack: Vec<Open>,
+    /// Top-level statements completed by an instruction that holds two
+    /// (`FINSI 'FORM' u ;`), waiting for the reader to hand them out.
+    pub ready: std::collections::VecDeque<Stmt>,
 }
 
 impl Builder {
@@ -154,13 +157,42 @@ impl Builder {
                 }
                 _ => return Err(Error::syntax("SINON without an open SI", span)),
             },
+            // A FINSI that closes nothing inside a procedure or a loop: in
+            // Cast3M FINSI does nothing when it runs, and Cast3M's own
+            // procedures hold a few extra ones. Top-level ones are errors.
+            Some(Directive::Finsi)
+                if !self.stack.is_empty() && !self.stack.iter().any(|o| matches!(o, Open::If { .. })) =>
+            {
+                None
+            }
             Some(Directive::Finsi) => {
-                nothing_after("FINSI", &ins)?;
-                match self.stack.pop() {
-                    Some(Open::If { branches, otherwise, span: s }) => Some(Stmt::If { branches, otherwise, span: s }),
+                let closed = match self.stack.pop() {
+                    Some(Open::If { branches, otherwise, span: s }) => Stmt::If { branches, otherwise, span: s },
                     Some(o) => return Err(mismatch("FINSI", &o, span)),
                     None => return Err(Error::syntax("FINSI without an open SI", span)),
+                };
+                // Cast3M runs the operators of an instruction one after
+                // the other: after FINSI (its `;` forgotten), a directive or
+                // a quoted operator name starts an instruction of its own
+                // (`'FINSI' 'SI' ok ;`). Anything else is a mistake.
+                if ins.items.len() > 1 {
+                    let next = rest(&ins);
+                    let runs = directive(&next).is_some()
+                        || matches!(&next.items[0].kind, ItemKind::Str(w) if !w.contains(' '));
+                    if !runs {
+                        nothing_after("FINSI", &ins)?;
+                    }
+                    let first = self.place(closed);
+                    let second = self.push(next)?;
+                    return Ok(match (first, second) {
+                        (Some(a), Some(b)) => {
+                            self.ready.push_back(b);
+                            Some(a)
+                        }
+                        (a, b) => a.or(b),
+                    });
                 }
+                Some(closed)
             }
             Some(Directive::Repeter) => {
                 let r = rest(&ins);
@@ -215,13 +247,32 @@ impl Builder {
             Some(Directive::Argu) => Some(Stmt::Argu { params: params(&ins.items[1..])?, span }),
             Some(Directive::Respro) => Some(Stmt::Respro(rest(&ins))),
         };
-        Ok(match (stmt, self.stack.last_mut()) {
-            (Some(s), Some(o)) => {
+        Ok(stmt.and_then(|s| self.place(s)))
+    }
+
+    /// A complete statement goes into the innermost open block, or out
+    /// when no block is open.
+    fn place(&mut self, s: Stmt) -> Option<Stmt> {
+        match self.stack.last_mut() {
+            Some(o) => {
                 o.body().push(s);
                 None
             }
-            (s, _) => s,
-        })
+            None => Some(s),
+        }
+    }
+
+    /// An instruction that failed to parse inside an open block: kept as
+    /// a statement that raises the error when it runs. Outside any block
+    /// the error is returned at once (it would run right away).
+    pub fn push_broken(&mut self, e: Error) -> Result<Option<Stmt>> {
+        match (self.stack.last_mut(), e.span) {
+            (Some(o), Some(span)) if e.kind == crate::error::ErrorKind::Syntax => {
+                o.body().push(Stmt::Broken { message: e.message, span });
+                Ok(None)
+            }
+            _ => Err(e),
+        }
     }
 
     /// The text has ended: every block must be closed.
