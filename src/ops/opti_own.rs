@@ -124,9 +124,9 @@ pub(super) fn get(it: &mut Interp, a: &mut Args, key: &'static str) -> Result<Ve
                 (Some(n), Some(_)) => n.parse::<i64>().map(Value::Int).unwrap_or_else(|_| Value::mot(n)),
                 (None, Some(_)) => return Err(a.err("VALE MODE FOUR: the mode is not FOUR")),
                 // VALE gives the words of the mode run together: PLANCONT.
-                (_, None) => Value::mot(
-                    &m.split_whitespace().take(if m.starts_with("FOUR") { 1 } else { 3 }).collect::<String>(),
-                ),
+                (_, None) => {
+                    Value::mot(m.split_whitespace().take(if m.starts_with("FOUR") { 1 } else { 3 }).collect::<String>())
+                }
             }
         }
         "ECHO" => Value::Int(it.opts.echo),
