@@ -171,7 +171,12 @@ impl Interpreter {
     /// `FIN ;` is read. `name` is used in error locations.
     pub fn run_str(&mut self, name: &str, text: &str) -> Result<Outcome> {
         let src = Source::new(name, text);
-        for stmt in syntax::Reader::new(text) {
+        let mut reader = syntax::Reader::to_run(text);
+        while let Some(stmt) = reader.next() {
+            for (w, span) in reader.take_warnings() {
+                let (line, col) = src.line_col(span.start);
+                self.interp.println(&format!("{}:{}:{}: warning: {}", name, line, col, w));
+            }
             let stmt = stmt.map_err(|mut e| {
                 e.source = Some(src.clone());
                 e

@@ -21,13 +21,36 @@ pub struct Reader {
     /// Where `text` starts in the whole source (spans are given in the
     /// whole source's offsets).
     base: usize,
+    /// Whether an SI still open at the end closes there (decks and
+    /// procedure files, read to run) or is an error (the REPL asks whether
+    /// an entry is complete).
+    lenient_end: bool,
     blocks: Builder,
     done: bool,
 }
 
 impl Reader {
     pub fn new(text: &str) -> Self {
-        Reader { text: prepass::blank_comments(text), pos: 0, base: 0, blocks: Builder::default(), done: false }
+        Reader {
+            text: prepass::blank_comments(text),
+            pos: 0,
+            base: 0,
+            lenient_end: false,
+            blocks: Builder::default(),
+            done: false,
+        }
+    }
+
+    /// A reader for a text that is run to its end (a deck): an SI left
+    /// open ends with the text, as in Cast3M.
+    pub fn to_run(text: &str) -> Self {
+        Reader { lenient_end: true, ..Reader::new(text) }
+    }
+
+    /// Warnings about forms Cast3M lets pass (an extra FINSI, an SI that
+    /// the end of the text closes), with their spans, since last asked.
+    pub fn take_warnings(&mut self) -> Vec<(String, Span)> {
+        std::mem::take(&mut self.blocks.warnings)
     }
 
     /// Read only `text[start..end]`, with spans in the offsets of the whole
@@ -35,7 +58,7 @@ impl Reader {
     /// procedures are not even looked at).
     pub fn range(text: &str, start: usize, end: usize) -> Self {
         let text = prepass::blank_comments(&text[start..end]);
-        Reader { text, pos: 0, base: start, blocks: Builder::default(), done: false }
+        Reader { text, pos: 0, base: start, lenient_end: true, blocks: Builder::default(), done: false }
     }
 
     /// The next instruction, or None at the end of the text.
@@ -62,6 +85,9 @@ impl Iterator for Reader {
             let r = match self.instruction() {
                 None => {
                     self.done = true;
+                    if self.lenient_end {
+                        return self.blocks.finish_text().transpose();
+                    }
                     return self.blocks.finish().err().map(Err);
                 }
                 Some(Ok(ins)) => self.blocks.push(ins),

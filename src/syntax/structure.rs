@@ -115,6 +115,9 @@ pub struct Builder {
     /// Top-level statements completed by an instruction that holds two
     /// (`FINSI 'FORM' u ;`), waiting for the reader to hand them out.
     pub ready: std::collections::VecDeque<Stmt>,
+    /// Forms Cast3M lets pass that are likely mistakes (an extra FINSI,
+    /// an SI closed by the end of the text), for the host to show.
+    pub warnings: Vec<(String, Span)>,
 }
 
 impl Builder {
@@ -157,12 +160,11 @@ impl Builder {
                 }
                 _ => return Err(Error::syntax("SINON without an open SI", span)),
             },
-            // A FINSI that closes nothing inside a procedure or a loop: in
-            // Cast3M FINSI does nothing when it runs, and Cast3M's own
-            // procedures hold a few extra ones. Top-level ones are errors.
-            Some(Directive::Finsi)
-                if !self.stack.is_empty() && !self.stack.iter().any(|o| matches!(o, Open::If { .. })) =>
-            {
+            // A FINSI that closes no SI: in Cast3M FINSI does nothing when it
+            // runs, and Cast3M's own procedures and decks hold a few extra
+            // ones. Noted, and passed over.
+            Some(Directive::Finsi) if !self.stack.iter().any(|o| matches!(o, Open::If { .. })) => {
+                self.warnings.push(("FINSI closes no SI: passed over, as Cast3M does".into(), span));
                 None
             }
             Some(Directive::Finsi) => {
@@ -273,6 +275,21 @@ impl Builder {
             }
             _ => Err(e),
         }
+    }
+
+    /// The end of a deck or a procedure file: an SI still open ends with
+    /// the text (Cast3M runs an SI branch up to its FINSI or SINON and
+    /// never looks further: a deck that forgets the last FINSI runs). The
+    /// statement completed that way, if any; other open blocks are errors.
+    pub fn finish_text(&mut self) -> Result<Option<Stmt>> {
+        let mut done = None;
+        while let Some(Open::If { span, .. }) = self.stack.last() {
+            self.warnings.push(("this SI is never closed by FINSI: it ends with the text, as in Cast3M".into(), *span));
+            let Some(Open::If { branches, otherwise, span }) = self.stack.pop() else { break };
+            done = self.place(Stmt::If { branches, otherwise, span });
+        }
+        self.finish()?;
+        Ok(done)
     }
 
     /// The text has ended: every block must be closed.
