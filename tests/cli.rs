@@ -154,6 +154,10 @@ fn procedure_libraries_from_the_flag_and_the_environment() {
     // refused by name.
     let (code, out, _) = run(&mut bare());
     assert_eq!((code, out.as_str()), (Some(0), "CARRE 3.00000E+00 DOUBLE 2.00000E+00\n"));
+    // A library that does not exist stops the run before it starts.
+    let out = bare().args(["--procedures", "/nonexistent/gibi/lib", "-e", "x = 1 ;"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(66));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("/nonexistent/gibi/lib"));
     let out = bare().args(["-e", "t = tabl ; mailstru t 1. ;"]).output().unwrap();
     assert!(
         String::from_utf8_lossy(&out.stderr).contains("MAILSTRU is a Cast3M procedure that gibi does not implement")

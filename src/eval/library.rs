@@ -222,13 +222,15 @@ impl super::Interp {
     /// its Cast3M name: JEU, but not TRANSGEN for TRAN). Objects, and so
     /// procedures defined by the deck, were looked up before.
     pub(super) fn library_proc(&mut self, word: &str, span: crate::source::Span) -> Result<Option<Rc<ProcDef>>> {
-        if !self.library.is_configured() {
+        if !self.library.is_configured()
+            || !self.library.contains(word).map_err(|e| e.with_span_if_missing(span, &self.source))?
+        {
             return Ok(None);
         }
         let native = self.registry.find(word).is_some_and(|op| {
             op.name == word || crate::ops::catalogue::operator(op.name).is_some_and(|e| e.name.starts_with(word))
         });
-        if native || !self.library.contains(word).map_err(|e| e.with_span_if_missing(span, &self.source))? {
+        if native {
             return Ok(None);
         }
         let found = self.library.get(word).map_err(|e| e.with_span_if_missing(span, &self.source))?;

@@ -79,12 +79,19 @@ fn run() -> ExitCode {
     let cli = Cli::parse();
     let cwd = std::env::current_dir().unwrap_or_else(|_| ".".into());
     let env_procedures = std::env::var_os("GIBI_PROCEDURES");
-    let procedures = cli.procedures.iter().cloned().chain(env_procedures.iter().flat_map(std::env::split_paths));
-    let mut gibi = Interpreter::builder()
-        .output(std::io::stdout())
-        .files(FilePolicy::Under(cwd))
-        .procedures(procedures.filter(|p| !p.as_os_str().is_empty()))
-        .build();
+    let procedures: Vec<_> = cli
+        .procedures
+        .iter()
+        .cloned()
+        .chain(env_procedures.iter().flat_map(std::env::split_paths))
+        .filter(|p| !p.as_os_str().is_empty())
+        .collect();
+    if let Some(p) = procedures.iter().find(|p| !p.exists()) {
+        eprintln!("gibi: cannot read the procedure library {}: no such file or folder", p.display());
+        return ExitCode::from(66);
+    }
+    let mut gibi =
+        Interpreter::builder().output(std::io::stdout()).files(FilePolicy::Under(cwd)).procedures(procedures).build();
 
     if cli.list_operators {
         println!("{}", repl::catalogue_json(gibi.registry()));
