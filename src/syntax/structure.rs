@@ -279,14 +279,37 @@ impl Builder {
 
     /// The end of a deck or a procedure file: an SI still open ends with
     /// the text (Cast3M runs an SI branch up to its FINSI or SINON and
-    /// never looks further: a deck that forgets the last FINSI runs). The
-    /// statement completed that way, if any; other open blocks are errors.
+    /// never looks further: a deck that forgets the last FINSI runs), and
+    /// a REPETER still open runs once (Cast3M meets the end of the text in
+    /// its first pass). The statement completed that way, if any; an open
+    /// DEBPROC is an error.
     pub fn finish_text(&mut self) -> Result<Option<Stmt>> {
         let mut done = None;
-        while let Some(Open::If { span, .. }) = self.stack.last() {
-            self.warnings.push(("this SI is never closed by FINSI: it ends with the text, as in Cast3M".into(), *span));
-            let Some(Open::If { branches, otherwise, span }) = self.stack.pop() else { break };
-            done = self.place(Stmt::If { branches, otherwise, span });
+        loop {
+            let closed = match self.stack.pop() {
+                Some(Open::If { branches, otherwise, span }) => {
+                    let w = "this SI is never closed by FINSI: it ends with the text, as in Cast3M";
+                    self.warnings.push((w.into(), span));
+                    Stmt::If { branches, otherwise, span }
+                }
+                // Cast3M reaches the end of the text in the first pass, and
+                // stops there: one pass.
+                Some(Open::Loop { name, body, span, .. }) => {
+                    let w = format!(
+                        "REPETER {} is never closed by FIN: it runs once, up to the end of the text, as in Cast3M",
+                        name
+                    );
+                    self.warnings.push((w, span));
+                    let one = Item { kind: ItemKind::Int(1), span };
+                    Stmt::Loop { name, count: Some(Instr { targets: vec![], items: vec![one], span }), body, span }
+                }
+                Some(o) => {
+                    self.stack.push(o);
+                    break;
+                }
+                None => break,
+            };
+            done = self.place(closed);
         }
         self.finish()?;
         Ok(done)

@@ -120,7 +120,17 @@ fn unclosed_blocks_and_strays() {
     let mut r = Reader::to_run("si (a) ; x = 1 ; sinon ; x = 2 ;");
     assert!(matches!(r.next(), Some(Ok(Stmt::If { otherwise: Some(_), .. }))));
     assert!(r.next().is_none());
-    assert!(Reader::to_run("repeter b ; si (a) ; x = 1 ;").next().unwrap().is_err());
+    // A REPETER left open runs once: Cast3M meets the end of the text in
+    // its first pass. A DEBPROC left open is an error.
+    let mut r = Reader::to_run("repeter b 5 ; si (a) ; x = 1 ;");
+    match r.next() {
+        Some(Ok(Stmt::Loop { count: Some(c), body, .. })) => {
+            assert_eq!(c.items[0].kind, Int(1));
+            assert!(matches!(body[0], Stmt::If { .. }));
+        }
+        s => panic!("{:?}", s),
+    }
+    assert!(Reader::to_run("debproc f ; si (a) ; x = 1 ;").next().unwrap().is_err());
     assert!(parse("repeter a ; fin b ;").is_err());
     assert!(parse("x = (1 + 2 ;").unwrap_err().message.contains("'('"));
     assert!(parse("x = 1 + 2) ;").is_err());
@@ -159,6 +169,11 @@ fn forms_of_cast3m_procedures() {
             ItemKind::Sym("*"),
             ItemKind::Int(3),
         ]
+    );
+    // `<` and `>` glued to a name are part of it (`T.<PLAN`, `>X`).
+    assert_eq!(
+        items("t.<plan >eg >x ;"),
+        vec![Word("T".into()), Dot, Word("<PLAN".into()), Sym(">EG"), Word(">X".into()),]
     );
     // Targets: a quoted type, a group before keys, &NAME.
     let p = parse("x*'FLOTTANT' = 1. ; (t . 1) . 'K' = 2 ; &d = 3 ;").unwrap();
