@@ -101,10 +101,11 @@ impl Interp {
             let it = &items[i];
             let span = it.span;
             match &it.kind {
+                // A '.' that ends a group or an instruction separates
+                // nothing: Cast3M passes over it (`p = x (-1.*x). ;`).
+                ItemKind::Dot if i + 1 == items.len() => {}
                 ItemKind::Dot => {
-                    let key_item = items
-                        .get(i + 1)
-                        .ok_or_else(|| Error::runtime("'.' must be followed by a table key").at(span))?;
+                    let key_item = &items[i + 1];
                     let table = match out.pop() {
                         Some(Tok { kind: TokKind::Val(v), span: s, .. }) => (v, s),
                         _ => return Err(Error::runtime("'.' must follow a TABLE").at(span)),
