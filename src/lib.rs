@@ -87,6 +87,7 @@ pub struct InterpreterBuilder {
     registry: Registry,
     step_limit: Option<u64>,
     report_files: bool,
+    procedures: Vec<std::path::PathBuf>,
 }
 
 impl InterpreterBuilder {
@@ -113,6 +114,14 @@ impl InterpreterBuilder {
         self.report_files = on;
         self
     }
+    /// Where Cast3M procedures are found when a deck names one it has
+    /// not defined: files of `$$$$ NAME` procedures (Cast3M's UTILPROC
+    /// format) or folders of `*.procedur` files. Paths add up; the first
+    /// that has a name wins. Default: none (gibi ships no procedure).
+    pub fn procedures<P: Into<std::path::PathBuf>>(mut self, paths: impl IntoIterator<Item = P>) -> Self {
+        self.procedures.extend(paths.into_iter().map(Into::into));
+        self
+    }
     /// Add an operator before the registry is frozen.
     pub fn operator(mut self, op: OpSpec) -> Self {
         self.registry.insert(op);
@@ -123,6 +132,7 @@ impl InterpreterBuilder {
         interp.files = self.files;
         interp.step_limit = self.step_limit;
         interp.report_files = self.report_files;
+        interp.library = eval::library::Library::new(self.procedures);
         Interpreter { interp }
     }
 }
@@ -151,6 +161,7 @@ impl Interpreter {
             registry: Registry::standard(),
             step_limit: None,
             report_files: true,
+            procedures: Vec::new(),
         }
     }
 
@@ -190,7 +201,12 @@ impl Interpreter {
     /// `FIN ;` is read. `name` is used in error locations.
     pub fn run_str(&mut self, name: &str, text: &str) -> Result<Outcome> {
         let src = Source::new(name, text);
-        for stmt in syntax::Reader::new(text) {
+        let mut reader = syntax::Reader::to_run(text);
+        while let Some(stmt) = reader.next() {
+            for (w, span) in reader.take_warnings() {
+                let (line, col) = src.line_col(span.start);
+                self.interp.println(&format!("{}:{}:{}: warning: {}", name, line, col, w));
+            }
             let stmt = stmt.map_err(|mut e| {
                 e.source = Some(src.clone());
                 e
@@ -229,7 +245,7 @@ impl Interpreter {
             it.store.top_mut().loops.truncate(loops);
             (it.depth, it.source) = (depth, source);
             let msg = p.downcast_ref::<String>().map(String::as_str).or_else(|| p.downcast_ref::<&str>().copied());
-            Err(Error::runtime(format!(
+            Err(Error::internal(format!(
                 "internal error ({}); please report it with the deck",
                 msg.unwrap_or("unknown cause")
             )))

@@ -232,3 +232,67 @@ fn interrupt_ends_a_run_with_130() {
         assert!(err.contains(&format!("{}{}", name, line)) && err.contains("interrupted"), "{}", err);
     }
 }
+
+/// `--procedures PATH` (repeatable) and `GIBI_PROCEDURES` (paths joined
+/// like PATH) name procedure libraries; the flags are searched first.
+#[test]
+fn procedure_libraries_from_the_flag_and_the_environment() {
+    let lib = |p: &str| std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/procedures").join(p);
+    let run = |cmd: &mut Command| {
+        let out = cmd.args(["-e", "mess (carre 3.) (double 2.) ;"]).output().unwrap();
+        (
+            out.status.code(),
+            String::from_utf8_lossy(&out.stdout).into_owned(),
+            String::from_utf8_lossy(&out.stderr).into_owned(),
+        )
+    };
+    // A run with no GIBI_PROCEDURES of its own.
+    let bare = || {
+        let mut c = gibi();
+        c.env_remove("GIBI_PROCEDURES");
+        c
+    };
+    let (code, out, err) =
+        run(bare().arg("--procedures").arg(lib("folder")).arg("--procedures").arg(lib("utilproc.txt")));
+    assert_eq!(code, Some(0), "{}", err);
+    assert_eq!(out, "9.00000E+00 4.00000E+00\n");
+
+    let both = std::env::join_paths([lib("utilproc.txt"), lib("folder")]).unwrap();
+    let (code, out, err) = run(gibi().env("GIBI_PROCEDURES", &both));
+    assert_eq!(code, Some(0), "{}", err);
+    assert_eq!(out, "-9.00000E+00 4.00000E+00\n", "utilproc.txt's CARRE comes first");
+
+    // The flag is searched before the environment's paths.
+    let (code, out, err) = run(gibi().arg("--procedures").arg(lib("folder")).env("GIBI_PROCEDURES", &both));
+    assert_eq!(code, Some(0), "{}", err);
+    assert_eq!(out, "9.00000E+00 4.00000E+00\n");
+
+    // Without a library, CARRE is a word, and a Cast3M procedure is
+    // refused by name.
+    let (code, out, _) = run(&mut bare());
+    assert_eq!((code, out.as_str()), (Some(0), "CARRE 3.00000E+00 DOUBLE 2.00000E+00\n"));
+    // A library that does not exist stops the run before it starts.
+    let out = bare().args(["--procedures", "/nonexistent/gibi/lib", "-e", "x = 1 ;"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(66));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("/nonexistent/gibi/lib"));
+    let out = bare().args(["-e", "t = tabl ; mailstru t 1. ;"]).output().unwrap();
+    assert!(
+        String::from_utf8_lossy(&out.stderr).contains("MAILSTRU is a Cast3M procedure that gibi does not implement")
+    );
+}
+
+/// `--list-operators` marks every name of Cast3M's catalogue.
+#[test]
+fn the_catalogue_marks_every_cast3m_name() {
+    let out = gibi().arg("--list-operators").output().unwrap();
+    let s = String::from_utf8_lossy(&out.stdout);
+    let line = |name: &str| {
+        s.lines().find(|l| l.contains(&format!("\"name\": \"{}\"", name))).unwrap_or_else(|| panic!("{} missing", name))
+    };
+    assert!(line("RESO").contains("\"status\": \"implemented\""));
+    assert!(line("SI").contains("\"status\": \"implemented\""), "a directive of the language");
+    assert!(line("VIBR").contains("\"status\": \"refused\"") && line("VIBR").contains("VIBRATION"));
+    assert!(line("PASAPAS").contains("\"status\": \"procedure\""));
+    let rows = s.lines().filter(|l| l.contains("\"status\"")).count();
+    assert!(rows > 1000, "{} rows", rows);
+}

@@ -70,6 +70,22 @@ fn trac_of_meshes_and_fields_in_svg_then_png() {
     assert_png(&dir.join("figs/plate.png"));
 }
 
+/// OPTI EPTR is the width of the drawn lines, OPTI FTRA names the picture
+/// file (Cast3M's PostScript file: gibi writes the SVG beside its name).
+#[test]
+fn opti_eptr_and_ftra_shape_the_pictures() {
+    let dir = scratch("eptr");
+    let mut gibi = session(&dir);
+    let l = "opti dime 2 ; q1 = 0. 0. ; q2 = 1. 0. ; l = droi 2 q1 q2 ;";
+    run(&mut gibi, &format!("{} trac l ; opti eptr 5 ; trac l ;", l));
+    let thin = assert_svg(&dir.join("gibi_trac_1.svg"));
+    let thick = assert_svg(&dir.join("gibi_trac_2.svg"));
+    assert!(thin.contains("stroke-width=\"2\"") && !thin.contains("stroke-width=\"5\""));
+    assert!(thick.contains("stroke-width=\"5\""), "EPTR 5 draws 5-pixel lines");
+    run(&mut gibi, "opti trac 'PSC' ftra 'figs/mesh.ps' ; trac l ;");
+    assert!(assert_svg(&dir.join("figs/mesh.svg")).contains("stroke-width=\"5\""));
+}
+
 /// Decks draw arrows with `TRAC (VECT u ...) s`: the picture has the mesh
 /// (gibi draws no arrows), and the deck goes on.
 #[test]

@@ -54,6 +54,7 @@ impl Interp {
                 self.store.set(&p.name, Value::Proc(p.clone()));
                 Ok(Flow::Next)
             }
+            Stmt::Broken { message, span } => Err(Error::syntax(message.clone(), *span)),
             Stmt::Argu { params, span } => {
                 self.bind_argu(params, *span)?;
                 Ok(Flow::Next)
@@ -71,7 +72,9 @@ impl Interp {
     }
 
     fn echo(&mut self, ins: &Instr) {
-        if self.opts.echo >= 1 {
+        // Library procedures echo only at level 2 (opti.notice: ECHO).
+        let level = if self.in_library > 0 { 2 } else { 1 };
+        if self.opts.echo >= level {
             let text = self.source.slice(ins.span).split_whitespace().collect::<Vec<_>>().join(" ");
             self.println(&format!("$ {}", text));
         }
@@ -146,7 +149,7 @@ impl Interp {
     pub fn exec_instr(&mut self, ins: &Instr) -> Result<()> {
         self.echo(ins);
         if let [t] = ins.targets.as_slice() {
-            if t.keys.is_empty() && t.typed.is_none() {
+            if t.keys.is_empty() && t.typed.is_none() && t.base.is_none() {
                 match self.fast_value(&ins.items) {
                     Some(Ok(v)) => {
                         self.store.set(&t.name, v);
@@ -230,16 +233,23 @@ impl Interp {
                 return Err(Error::runtime(format!("{} is declared {} but receives a {}", t.name, ty, v.type_name())));
             }
         }
-        if t.keys.is_empty() {
+        if t.keys.is_empty() && t.base.is_none() {
             self.store.set(&t.name, v);
             return Ok(());
         }
-        // T . k1 . k2 = v : walk to the last table, then set in place.
-        let mut cur = self
-            .store
-            .get(&t.name)
-            .cloned()
-            .ok_or_else(|| Error::runtime(format!("{} is not a TABLE (it does not exist)", t.name)))?;
+        // T . k1 . k2 = v : walk to the last table, then set in place. The
+        // table may be given by a group: `(T . 1) . 'K' = v`.
+        let mut cur = match &t.base {
+            Some(items) => match self.nested(t.span, |it| it.eval_items(items))?.as_slice() {
+                [v] if !t.keys.is_empty() => v.clone(),
+                _ => return Err(Error::runtime("a group receiving a result must give one TABLE, then . key")),
+            },
+            None => self
+                .store
+                .get(&t.name)
+                .cloned()
+                .ok_or_else(|| Error::runtime(format!("{} is not a TABLE (it does not exist)", t.name)))?,
+        };
         let n = t.keys.len();
         for (i, kit) in t.keys.iter().enumerate() {
             let key = self.key_value(kit)?;

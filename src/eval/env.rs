@@ -19,6 +19,10 @@ pub struct Frame {
     pub results: Vec<Value>,
     /// Active loops of this frame: (name, pass number).
     pub loops: Vec<(String, i64)>,
+    /// Optional parameters that were not given: they do not exist in the
+    /// procedure even if the caller has objects of those names (argu.notice:
+    /// `ARGU L/ENTIER ; SI (EXISTE L)`).
+    pub absent: Vec<String>,
     /// Loops of this frame that have ended, with their last pass number:
     /// in Cast3M `&name` is an ordinary ENTIER that outlives its loop
     /// (`NITER = &BOU1 ;` after the loop or after QUITTER).
@@ -52,7 +56,26 @@ impl Store {
         if name.starts_with('!') {
             return self.top().vars.get(name);
         }
-        self.frames.iter().rev().find_map(|f| f.vars.get(name))
+        for f in self.frames.iter().rev() {
+            if let Some(v) = f.vars.get(name) {
+                return Some(v);
+            }
+            if !f.absent.is_empty() && f.absent.iter().any(|a| a == name) {
+                return None;
+            }
+        }
+        None
+    }
+
+    /// Make a name not exist in the current frame (an optional parameter
+    /// that was not given).
+    pub fn hide(&mut self, name: &str) {
+        let name = truncate(name);
+        let top = self.top_mut();
+        top.vars.remove(name);
+        if !top.absent.iter().any(|a| a == name) {
+            top.absent.push(name.to_string());
+        }
     }
 
     pub fn set(&mut self, name: &str, v: Value) {

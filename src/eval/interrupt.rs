@@ -61,6 +61,7 @@ pub(super) fn stmt_span(s: &crate::syntax::ast::Stmt) -> Span {
         | Stmt::Quit { span, .. }
         | Stmt::Iter { span, .. }
         | Stmt::Argu { span, .. }
+        | Stmt::Broken { span, .. }
         | Stmt::End { span } => *span,
         Stmt::Proc(p) => p.span,
     }

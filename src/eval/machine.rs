@@ -70,10 +70,11 @@ impl Interp {
             let it = &items[i];
             let span = it.span;
             match &it.kind {
+                // A '.' that ends a group or an instruction separates
+                // nothing: Cast3M passes over it (`p = x (-1.*x). ;`).
+                ItemKind::Dot if i + 1 == items.len() => {}
                 ItemKind::Dot => {
-                    let key_item = items
-                        .get(i + 1)
-                        .ok_or_else(|| Error::runtime("'.' must be followed by a table key").at(span))?;
+                    let key_item = &items[i + 1];
                     let table = match out.pop() {
                         Some(Tok { kind: TokKind::Val(v), span: s, .. }) => (v, s),
                         _ => return Err(Error::runtime("'.' must follow a TABLE").at(span)),
@@ -92,7 +93,10 @@ impl Interp {
                 kind => {
                     let named = matches!(kind, ItemKind::Word(_));
                     match self.resolve(kind, span)? {
-                        TokKind::Word(w) => self.word_token(w, span, &mut out)?,
+                        TokKind::Word(w) => match self.library_proc(&w, span)? {
+                            Some(p) => out.push(Tok { kind: TokKind::Val(Value::Proc(p)), span, named }),
+                            None => self.word_token(w, span, &mut out)?,
+                        },
                         kind => out.push(Tok { kind, span, named }),
                     }
                 }
@@ -138,9 +142,11 @@ impl Interp {
             },
             ItemKind::Counter(n) => match self.store.counter(n) {
                 Some(c) => TokKind::Val(Value::Int(c)),
-                None => {
-                    return Err(Error::runtime(format!("&{}: no REPETER {} has run", n, n)).at(span));
-                }
+                // No loop of that name: an object assigned as `&NAME = …`.
+                None => match self.store.get(&format!("&{}", n)) {
+                    Some(v) => TokKind::Val(v.clone()),
+                    None => return Err(Error::runtime(format!("&{}: no REPETER {} has run", n, n)).at(span)),
+                },
             },
             ItemKind::Sym(s) => TokKind::Sym(s),
             ItemKind::Dot | ItemKind::Group(_) => unreachable!("handled by tokens()"),
@@ -173,6 +179,9 @@ impl Interp {
     pub fn run_tokens(&mut self, toks: Vec<Tok>) -> Result<(Vec<Value>, bool)> {
         let mut st = GroupState { left: Vec::new(), right: toks.into() };
         let mut ran = false;
+        // The last operator run in this group: a Cast3M name met after it
+        // may be an argument it does not take.
+        let mut last_op: Option<&'static str> = None;
         while let Some(t) = st.right.pop_front() {
             // A MOT object written by its name in operator position, with
             // an argument after it, calls the operator it names (`OPE =
@@ -182,12 +191,26 @@ impl Interp {
             // `TY = TYPE K ; SI (TY EGA 'RIGIDITE')` must not run RIGI.
             if let TokKind::Val(Value::Mot(s)) = &t.kind {
                 let has_argument = st.right.front().is_some_and(|n| !ends_window(n, &self.registry));
+                // A MOT naming a procedure calls it the same way, named or
+                // made by TEXT (text.notice: a text stands for its content):
+                // `(TEXT NOMFCT) x p` calls the procedure NOMFCT names.
+                if has_argument && wordlike(s) {
+                    if let Some(p) = self.proc_named(&s.to_uppercase(), t.span)? {
+                        let r = self.call_proc(p, &mut st, t.span)?;
+                        self.called_proc = true;
+                        st.left.extend(r);
+                        ran = true;
+                        continue;
+                    }
+                }
                 if t.named && has_argument && wordlike(s) {
                     if let Some(op) = self.registry.find(s) {
+                        last_op = Some(op.name);
                         self.invoke(op, &mut st, t.span)?;
                         ran = true;
                         continue;
                     }
+                    self.refuse(s, t.span, last_op)?;
                 }
             }
             ran |= !matches!(t.kind, TokKind::Val(ref v) if !matches!(v, Value::Proc(_)))
@@ -201,20 +224,58 @@ impl Interp {
                 }
                 TokKind::Val(v) => st.left.push(v),
                 TokKind::Quoted(s) => match self.registry.find(&s).filter(|_| wordlike(&s)) {
-                    Some(op) => self.invoke(op, &mut st, t.span)?,
-                    None => st.left.push(Value::Mot(s)),
+                    Some(op) => {
+                        last_op = Some(op.name);
+                        self.invoke(op, &mut st, t.span)?
+                    }
+                    None => {
+                        // Decks quote operator names ('BRUI' 'BLAN' …), never
+                        // procedure names: those are object names.
+                        if let Some(e) = super::catalogue::operator(&s).filter(|_| wordlike(&s)) {
+                            return Err(refused(super::unimplemented::message(e, false), &s, t.span, last_op));
+                        }
+                        st.left.push(Value::Mot(s))
+                    }
                 },
                 TokKind::Word(w) => match self.registry.find(&w) {
-                    Some(op) => self.invoke(op, &mut st, t.span)?,
-                    None => st.left.push(Value::mot(&w)),
+                    Some(op) => {
+                        last_op = Some(op.name);
+                        self.invoke(op, &mut st, t.span)?
+                    }
+                    None => {
+                        self.refuse(&w, t.span, last_op)?;
+                        st.left.push(Value::mot(&w))
+                    }
                 },
                 TokKind::Sym(s) => match self.registry.find(s) {
-                    Some(op) => self.invoke(op, &mut st, t.span)?,
+                    Some(op) => {
+                        last_op = Some(op.name);
+                        self.invoke(op, &mut st, t.span)?
+                    }
                     None => return Err(Error::runtime(format!("'{}' is not an operator here", s)).at(t.span)),
                 },
             }
         }
         Ok((st.left, ran))
+    }
+
+    /// The procedure a name stands for: an object of the deck, else one
+    /// of the procedure library.
+    fn proc_named(&mut self, name: &str, span: Span) -> Result<Option<Rc<crate::syntax::ast::ProcDef>>> {
+        match self.store.get(name) {
+            Some(Value::Proc(p)) => Ok(Some(p.clone())),
+            Some(_) => Ok(None),
+            None => self.library_proc(name, span),
+        }
+    }
+
+    /// Stop at a Cast3M name that gibi lacks, written where it would run
+    /// (see eval::unimplemented); any other word is a MOT.
+    fn refuse(&self, word: &str, span: Span, last_op: Option<&str>) -> Result<()> {
+        match super::unimplemented::refusal(word, &self.registry, self.library.is_configured()) {
+            Some(e) => Err(refused(e, word, span, last_op)),
+            None => Ok(()),
+        }
     }
 
     /// Run one operator: it reads its arguments through `Args`, and its
@@ -255,6 +316,16 @@ fn finite_results(op: &OpSpec, r: Vec<Value>, nodes: &crate::fem::mesh::Nodes, f
         return Err(Error::runtime(format!("{}: a node it made has {} as a coordinate", op.name, describe(x))));
     }
     Ok(r)
+}
+
+/// A refusal at `span`; after an operator of the same group, the word may
+/// rather be an argument that operator left over.
+fn refused(e: Error, word: &str, span: Span, last_op: Option<&str>) -> Error {
+    let e = e.at(span);
+    match last_op {
+        Some(op) => e.note(format!("if {} is meant as an argument of {}, {} does not take it", word, op, op)),
+        None => e,
+    }
 }
 
 /// `T . k`: the entry of a table (or of an object that acts like one).

@@ -4,16 +4,19 @@
 //! [`args`]; their bodies live in `ops`, which this layer never names.
 
 pub mod args;
+pub mod catalogue;
 mod control;
 pub mod env;
 mod fast;
 mod files;
 mod interrupt;
+pub mod library;
 pub mod machine;
 mod options;
 mod proc;
 pub mod registry;
 pub mod tokens;
+pub mod unimplemented;
 
 pub use files::FilePolicy;
 pub use interrupt::{interrupted, InterruptHandle};
@@ -67,6 +70,11 @@ pub struct Interp {
     /// The last direct factorisations, reused by RESO (see
     /// `solve::bilateral::pool`).
     pub factors: crate::solve::FactorPool,
+    /// Cast3M procedures loaded from files on first use.
+    pub library: library::Library,
+    /// Library procedures being run (their instructions echo only with
+    /// `OPTI ECHO 2`, as Cast3M's external procedures do).
+    pub in_library: usize,
 }
 
 /// How deep blocks, parenthesised groups and procedure calls may run
@@ -132,6 +140,8 @@ impl Interp {
             depth: 0,
             proc_sources: Default::default(),
             factors: Default::default(),
+            library: Default::default(),
+            in_library: 0,
         }
     }
 

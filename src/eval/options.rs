@@ -21,8 +21,30 @@ pub struct Options {
     pub erre: String,
     /// Linear solver: DIRECTE or ITERATIVE.
     pub reso: String,
-    /// Anything else given to OPTI, kept for VALE.
+    /// The other options given to OPTI, as read (ops/opti.rs), for VALE
+    /// and for the operators that use them (SORT, FTRA, TRAC, EPTR).
+    pub kept: BTreeMap<&'static str, crate::value::Value>,
+    /// State operators keep between calls (the steps of a .pvd collection,
+    /// the count of pictures drawn).
     pub other: BTreeMap<String, String>,
+}
+
+impl Options {
+    /// A word or file name given to OPTI `key`, if any.
+    pub fn text(&self, key: &str) -> Option<&str> {
+        match self.kept.get(key)? {
+            crate::value::Value::Mot(s) => Some(s),
+            _ => None,
+        }
+    }
+
+    /// An ENTIER given to OPTI `key`, if any.
+    pub fn int(&self, key: &str) -> Option<i64> {
+        match self.kept.get(key)? {
+            crate::value::Value::Int(n) => Some(*n),
+            _ => None,
+        }
+    }
 }
 
 impl Default for Options {
@@ -35,6 +57,7 @@ impl Default for Options {
             dens: 1.0,
             erre: "NORMAL".into(),
             reso: "DIRECTE".into(),
+            kept: BTreeMap::new(),
             other: BTreeMap::new(),
         }
     }

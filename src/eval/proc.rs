@@ -23,16 +23,21 @@ impl Interp {
                 frame.vars.insert(param.name.clone(), v);
             } else if !param.optional {
                 return Err(missing(&p.name, param).at(span).with_span_if_missing(span, &self.source));
+            } else {
+                frame.absent.push(param.name.clone());
             }
         }
         frame.pending = std::mem::take(st);
         // The body's spans point into the text that defined it, which may
         // be another file or an earlier REPL entry.
         let defined_in = self.proc_sources.get(&proc_key(&p)).cloned().unwrap_or_else(|| self.source.clone());
+        let from_library = usize::from(self.library.owns(&p));
         self.nested(span, |it| {
             it.store.frames.push(frame);
             let caller_source = std::mem::replace(&mut it.source, defined_in);
+            it.in_library += from_library;
             let r = it.run_body(&p);
+            it.in_library -= from_library;
             it.source = caller_source;
             let frame = it.store.frames.pop().expect("pushed above");
             *st = frame.pending;
@@ -99,7 +104,7 @@ impl Interp {
         for p in params {
             match take_param(&mut st, p, &self.registry) {
                 Ok(Some(v)) => self.store.top_mut().vars.insert(p.name.clone(), v).map_or((), |_| ()),
-                Ok(None) if p.optional => {}
+                Ok(None) if p.optional => self.store.hide(&p.name),
                 Ok(None) => {
                     r = Err(missing(&name, p).at(span));
                     break;

@@ -125,9 +125,6 @@ pub fn op_key(word: &str) -> &str {
 #[derive(Debug, Clone, Default)]
 pub struct Registry {
     ops: HashMap<String, Rc<OpSpec>>,
-    /// Cast3M names gibi lacks: found like operators (so a deck that calls
-    /// one stops there, named), but not part of the manual.
-    missing: HashMap<String, Rc<OpSpec>>,
 }
 
 impl Registry {
@@ -135,25 +132,15 @@ impl Registry {
         self.ops.insert(op_key(&spec.name.to_uppercase()).to_string(), Rc::new(spec));
     }
 
-    /// Whether an operator of that name is registered (stubs aside).
-    pub fn contains(&self, name: &str) -> bool {
-        self.ops.contains_key(op_key(name))
-    }
-
-    /// Add a Cast3M name gibi lacks: found like an operator (so a deck
-    /// that calls one stops there, named), but not part of the manual.
-    /// Never hides an operator.
-    pub fn insert_missing(&mut self, spec: OpSpec) {
-        let key = op_key(spec.name).to_string();
-        if !self.ops.contains_key(&key) {
-            self.missing.insert(key, Rc::new(spec));
-        }
-    }
-
-    /// The operator a word names, by its first 4 letters.
+    /// The operator a word names, by its first 4 letters, unless the word
+    /// is the full name of a Cast3M procedure: Cast3M finds procedures
+    /// before operators, so TRANSGEN is a procedure, never TRAN.
     pub fn find(&self, word: &str) -> Option<Rc<OpSpec>> {
-        let key = op_key(word);
-        self.ops.get(key).or_else(|| self.missing.get(key)).cloned()
+        let op = self.ops.get(op_key(word))?;
+        if word.len() > 4 && op.name != word && super::catalogue::procedure(word).is_some() {
+            return None;
+        }
+        Some(op.clone())
     }
 
     /// Every operator, sorted by name.

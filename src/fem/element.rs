@@ -157,7 +157,7 @@ pub fn dual_of(dof: &str) -> Option<&'static str> {
 
 /// Pairs the element library does not produce: multipliers, thermal and
 /// Fourier unknowns.
-const OTHER_DUALS: &[(&str, &str)] =
+pub const OTHER_DUALS: &[(&str, &str)] =
     &[("UT", "FT"), ("RT", "MT"), ("LX", "FLX"), ("T", "Q"), ("TH", "QH"), ("P", "FP"), ("PI", "FPI")];
 
 /// The dual (force) name of any unknown: the element pairs of [`dual_of`],

@@ -53,3 +53,11 @@ pub fn moments(it: &Interp) -> &'static [&'static str] {
 /// The dual (force) name of a primal unknown (one table for the elements
 /// and the language: `fem::element::dual_name`).
 pub use crate::fem::element::dual_name as dual_of;
+
+/// The primal names gibi knows (the mechanical ones, then the other pairs
+/// of `fem::element::dual_name`), for VALE 'INCO'.
+pub fn known_primals() -> Vec<&'static str> {
+    let mut v = vec!["UX", "UY", "UZ", "UR", "RX", "RY", "RZ"];
+    v.extend(crate::fem::element::OTHER_DUALS.iter().map(|(p, _)| *p));
+    v
+}

@@ -1,5 +1,5 @@
-//! Directives that talk to the user or set options: OPTI, VALE, MESS,
-//! LIST, SAUT, TITR, TEMP, ERRE. Output goes to the injected sink.
+//! Directives that talk to the user: DENS, MESS, LIST, SAUT, TITR, TEMP,
+//! ERRE (OPTI and VALE are in opti.rs). Output goes to the injected sink.
 
 use super::{Args, OpDef};
 use crate::error::{Error, ErrorKind, Result};
@@ -15,21 +15,6 @@ pub(crate) const OPS: &[OpDef] = &[
         doc: "Set the density (element size) given to new points, like OPTI DENS.",
         example: "dens 0.1 ;",
         f: dens,
-    },
-    OpDef {
-        name: "OPTI",
-        signature:
-            "OPTI (DIME n) (ELEM type) (MODE mode) (ECHO n) (DENS x) (ERRE w) (TRAC w) (NORM w) (IMPI n) (RESO w) …",
-        doc: "Set options: space dimension, element type, analysis mode, echo, density, …",
-        example: "opti dime 2 elem qua4 mode plan cont ;",
-        f: opti,
-    },
-    OpDef {
-        name: "VALE",
-        signature: "VALE ('PREC'|'DIME'|'MODE'|'ELEM'|'DENS'|'ECHO'|'RESO')",
-        doc: "The value of an option (PREC: machine precision).",
-        example: "tol = (vale prec) ** 0.5 ;",
-        f: vale,
     },
     OpDef {
         name: "MESS",
@@ -76,84 +61,6 @@ pub(crate) const OPS: &[OpDef] = &[
         f: erre,
     },
 ];
-
-const OPTI_KEYS: &[&str] = &[
-    "DIME", "ELEM", "MODE", "ECHO", "DENS", "ERRE", "TRAC", "NORM", "IMPI", "RESO", "EPSI", "SORT", "LOCA", "SAUV",
-    "REST", "DONN", "LECT", "IMPR", "VERI", "PARA", "ACQU", "POTR", "CALC", "INCO", "COUL", "DEBU", "FTRA",
-];
-
-fn opti(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let mut any = false;
-    while let Some(k) = a.keyword(OPTI_KEYS) {
-        any = true;
-        match k {
-            "DIME" => {
-                let d = a.req::<i64>()?;
-                if !(1..=3).contains(&d) {
-                    return Err(a.err(format!("DIME must be 1, 2 or 3, found {}", d)));
-                }
-                it.opts.dime = d as usize;
-                it.opts.mode = if d == 3 {
-                    "TRID".into()
-                } else if d == 2 {
-                    "PLAN CONT".into()
-                } else {
-                    "UNID".into()
-                };
-            }
-            "ELEM" => {
-                let e = a.word().ok_or_else(|| a.missing("an element type"))?;
-                it.opts.elem = e.to_uppercase();
-            }
-            "MODE" => {
-                let m = a.word().ok_or_else(|| a.missing("an analysis mode"))?.to_uppercase();
-                let mode = if m.starts_with("PLAN") {
-                    let sub = a.req_keyword(&["CONT", "DEFO", "GENE"])?;
-                    format!("PLAN {}", sub)
-                } else if m.starts_with("FOUR") {
-                    format!("FOUR {}", a.opt_right::<i64>().unwrap_or(0))
-                } else {
-                    m.chars().take(4).collect()
-                };
-                it.opts.mode = mode;
-            }
-            "ECHO" => it.opts.echo = a.req::<i64>()?,
-            "DENS" => it.opts.dens = a.req_num()?,
-            "ERRE" => it.opts.erre = a.word().ok_or_else(|| a.missing("NORMAL, FATAL, CONTROLE or IGNORE"))?,
-            "RESO" => it.opts.reso = a.word().ok_or_else(|| a.missing("DIRECTE or ITERATIVE"))?.to_uppercase(),
-            other => {
-                // Accepted for compatibility (graphics device, scaling,
-                // debug level, …): keep the value for VALE.
-                let v = match a.right_any() {
-                    Some(Value::Mot(s)) => s.to_string(),
-                    Some(Value::Int(i)) => i.to_string(),
-                    Some(Value::Float(f)) => f.to_string(),
-                    Some(Value::Bool(b)) => b.to_string(),
-                    _ => String::new(),
-                };
-                it.opts.other.insert(other.to_string(), v);
-            }
-        }
-    }
-    if !any && a.peek_right().is_some() {
-        return Err(a.err(format!("unknown option: {}", a.describe_next())));
-    }
-    Ok(vec![])
-}
-
-fn vale(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let k = a.req_keyword(&["PREC", "DIME", "MODE", "ELEM", "DENS", "ECHO", "RESO", "ERRE"])?;
-    Ok(vec![match k {
-        "PREC" => Value::Float(f64::EPSILON),
-        "DIME" => Value::Int(it.opts.dime as i64),
-        "MODE" => Value::mot(&it.opts.mode),
-        "ELEM" => Value::mot(&it.opts.elem),
-        "DENS" => Value::Float(it.opts.dens),
-        "ECHO" => Value::Int(it.opts.echo),
-        "RESO" => Value::mot(&it.opts.reso),
-        _ => Value::mot(&it.opts.erre),
-    }])
-}
 
 /// How MESS shows one value.
 pub(crate) fn show(it: &Interp, v: &Value) -> String {

@@ -5,6 +5,8 @@
 mod arith;
 mod assemble;
 mod bc;
+#[cfg(test)]
+mod catalogue_tests;
 mod colour;
 mod contact;
 mod curves;
@@ -26,6 +28,8 @@ mod mesh_edit;
 mod mesh_query;
 mod model;
 mod objects;
+mod opti;
+mod opti_own;
 mod pointwise;
 mod post;
 mod principal;
@@ -36,7 +40,6 @@ mod superele;
 mod tables;
 mod thermo;
 mod transform;
-pub mod unimplemented;
 mod union;
 
 // The machine and the argument reader live in `eval`; the families name
@@ -59,6 +62,7 @@ impl Registry {
             extract::OPS,
             objects::OPS,
             io::OPS,
+            opti::OPS,
             union::OPS,
             mesh::OPS,
             mesh_query::OPS,
@@ -87,10 +91,6 @@ impl Registry {
             for d in table {
                 r.insert(OpSpec::from(d));
             }
-        }
-        // After every family, so that a stub never hides an operator.
-        for d in unimplemented::ops() {
-            r.insert_missing(OpSpec::from(&d));
         }
         r
     }

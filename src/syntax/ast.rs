@@ -31,7 +31,10 @@ pub struct Item {
 /// A name receiving a result: `x`, `K*ENTIER`, `T . 'K' . 2`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Target {
+    /// Empty when the table is given by a group (`base`).
     pub name: String,
+    /// `(T . 1) . 'K' = …`: the group that gives the table whose keys follow.
+    pub base: Option<Vec<Item>>,
     pub typed: Option<String>,
     pub keys: Vec<Item>,
     pub span: Span,
@@ -89,6 +92,13 @@ pub enum Stmt {
     Respro(Instr),
     /// `FIN ;`: ends the whole run.
     End {
+        span: Span,
+    },
+    /// An instruction inside a block that is not Gibiane: its syntax error
+    /// is raised when the instruction runs, as Cast3M reads an instruction
+    /// only when it gets there (a procedure's unused branch may be broken).
+    Broken {
+        message: String,
         span: Span,
     },
 }

@@ -35,23 +35,36 @@ pub fn instruction(p: Pair<Rule>, base: usize) -> Result<Instr> {
     Ok(Instr { targets, items, span })
 }
 
-fn target(p: Pair<Rule>, base: usize) -> Result<Target> {
-    let span = span_of(&p, base);
+fn target(p: Pair<Rule>, base_offset: usize) -> Result<Target> {
+    let span = span_of(&p, base_offset);
     let mut name = String::new();
     let mut typed = None;
     let mut keys = Vec::new();
+    let mut base = None;
     for c in p.into_inner() {
         match c.as_rule() {
-            Rule::name if name.is_empty() => name = c.as_str().to_uppercase(),
+            Rule::name if name.is_empty() && base.is_none() => name = c.as_str().to_uppercase(),
+            Rule::counter if name.is_empty() && base.is_none() => name = c.as_str().to_uppercase(),
+            Rule::group if name.is_empty() && base.is_none() => {
+                let mut items = Vec::new();
+                push_item(&mut items, c, base_offset)?;
+                if let Some(Item { kind: ItemKind::Group(g), .. }) = items.pop() {
+                    base = Some(g);
+                }
+            }
+            // `x*'FLOTTANT' = …`: the type may be quoted.
             Rule::typed => {
-                let n = c.into_inner().next().map(|n| n.as_str().to_uppercase());
+                let n = c.into_inner().next().map(|n| match n.as_rule() {
+                    Rule::string => n.into_inner().next().map_or("", |i| i.as_str()).to_uppercase(),
+                    _ => n.as_str().to_uppercase(),
+                });
                 typed = n;
             }
             Rule::dot => {}
-            _ => push_item(&mut keys, c, base)?,
+            _ => push_item(&mut keys, c, base_offset)?,
         }
     }
-    Ok(Target { name, typed, keys, span })
+    Ok(Target { name, base, typed, keys, span })
 }
 
 /// Is this item a value that a following glued `-1` or `.1` attaches to?

@@ -18,13 +18,47 @@ pub struct Reader {
     /// The text with column-1 comment lines blanked (same byte offsets).
     text: String,
     pos: usize,
+    /// Where `text` starts in the whole source (spans are given in the
+    /// whole source's offsets).
+    base: usize,
+    /// Whether an SI still open at the end closes there (decks and
+    /// procedure files, read to run) or is an error (the REPL asks whether
+    /// an entry is complete).
+    lenient_end: bool,
     blocks: Builder,
     done: bool,
 }
 
 impl Reader {
     pub fn new(text: &str) -> Self {
-        Reader { text: prepass::blank_comments(text), pos: 0, blocks: Builder::default(), done: false }
+        Reader {
+            text: prepass::blank_comments(text),
+            pos: 0,
+            base: 0,
+            lenient_end: false,
+            blocks: Builder::default(),
+            done: false,
+        }
+    }
+
+    /// A reader for a text that is run to its end (a deck): an SI left
+    /// open ends with the text, as in Cast3M.
+    pub fn to_run(text: &str) -> Self {
+        Reader { lenient_end: true, ..Reader::new(text) }
+    }
+
+    /// Warnings about forms Cast3M lets pass (an extra FINSI, an SI that
+    /// the end of the text closes), with their spans, since last asked.
+    pub fn take_warnings(&mut self) -> Vec<(String, Span)> {
+        std::mem::take(&mut self.blocks.warnings)
+    }
+
+    /// Read only `text[start..end]`, with spans in the offsets of the whole
+    /// `text` (one procedure of a procedure library file: the file's other
+    /// procedures are not even looked at).
+    pub fn range(text: &str, start: usize, end: usize) -> Self {
+        let text = prepass::blank_comments(&text[start..end]);
+        Reader { text, pos: 0, base: start, lenient_end: true, blocks: Builder::default(), done: false }
     }
 
     /// The next instruction, or None at the end of the text.
@@ -36,7 +70,7 @@ impl Reader {
             None => self.text.len(),
         };
         self.pos = end;
-        Some(parse_one(&self.text[start..end], start))
+        Some(parse_one(&self.text[start..end], self.base + start))
     }
 }
 
@@ -44,13 +78,20 @@ impl Iterator for Reader {
     type Item = Result<Stmt>;
 
     fn next(&mut self) -> Option<Result<Stmt>> {
+        if let Some(s) = self.blocks.ready.pop_front() {
+            return Some(Ok(s));
+        }
         while !self.done {
             let r = match self.instruction() {
                 None => {
                     self.done = true;
+                    if self.lenient_end {
+                        return self.blocks.finish_text().transpose();
+                    }
                     return self.blocks.finish().err().map(Err);
                 }
-                Some(r) => r.and_then(|ins| self.blocks.push(ins)),
+                Some(Ok(ins)) => self.blocks.push(ins),
+                Some(Err(e)) => self.blocks.push_broken(e),
             };
             match r {
                 Err(e) => {

@@ -112,6 +112,12 @@ pub const MAX_BLOCK_DEPTH: usize = 100;
 #[derive(Default)]
 pub struct Builder {
     stack: Vec<Open>,
+    /// Top-level statements completed by an instruction that holds two
+    /// (`FINSI 'FORM' u ;`), waiting for the reader to hand them out.
+    pub ready: std::collections::VecDeque<Stmt>,
+    /// Forms Cast3M lets pass that are likely mistakes (an extra FINSI,
+    /// an SI closed by the end of the text), for the host to show.
+    pub warnings: Vec<(String, Span)>,
 }
 
 impl Builder {
@@ -154,13 +160,41 @@ impl Builder {
                 }
                 _ => return Err(Error::syntax("SINON without an open SI", span)),
             },
+            // A FINSI that closes no SI: in Cast3M FINSI does nothing when it
+            // runs, and Cast3M's own procedures and decks hold a few extra
+            // ones. Noted, and passed over.
+            Some(Directive::Finsi) if !self.stack.iter().any(|o| matches!(o, Open::If { .. })) => {
+                self.warnings.push(("FINSI closes no SI: passed over, as Cast3M does".into(), span));
+                None
+            }
             Some(Directive::Finsi) => {
-                nothing_after("FINSI", &ins)?;
-                match self.stack.pop() {
-                    Some(Open::If { branches, otherwise, span: s }) => Some(Stmt::If { branches, otherwise, span: s }),
+                let closed = match self.stack.pop() {
+                    Some(Open::If { branches, otherwise, span: s }) => Stmt::If { branches, otherwise, span: s },
                     Some(o) => return Err(mismatch("FINSI", &o, span)),
                     None => return Err(Error::syntax("FINSI without an open SI", span)),
+                };
+                // Cast3M runs the operators of an instruction one after
+                // the other: after FINSI (its `;` forgotten), a directive or
+                // a quoted operator name starts an instruction of its own
+                // (`'FINSI' 'SI' ok ;`). Anything else is a mistake.
+                if ins.items.len() > 1 {
+                    let next = rest(&ins);
+                    let runs = directive(&next).is_some()
+                        || matches!(&next.items[0].kind, ItemKind::Str(w) if !w.contains(' '));
+                    if !runs {
+                        nothing_after("FINSI", &ins)?;
+                    }
+                    let first = self.place(closed);
+                    let second = self.push(next)?;
+                    return Ok(match (first, second) {
+                        (Some(a), Some(b)) => {
+                            self.ready.push_back(b);
+                            Some(a)
+                        }
+                        (a, b) => a.or(b),
+                    });
                 }
+                Some(closed)
             }
             Some(Directive::Repeter) => {
                 let r = rest(&ins);
@@ -215,13 +249,70 @@ impl Builder {
             Some(Directive::Argu) => Some(Stmt::Argu { params: params(&ins.items[1..])?, span }),
             Some(Directive::Respro) => Some(Stmt::Respro(rest(&ins))),
         };
-        Ok(match (stmt, self.stack.last_mut()) {
-            (Some(s), Some(o)) => {
+        Ok(stmt.and_then(|s| self.place(s)))
+    }
+
+    /// A complete statement goes into the innermost open block, or out
+    /// when no block is open.
+    fn place(&mut self, s: Stmt) -> Option<Stmt> {
+        match self.stack.last_mut() {
+            Some(o) => {
                 o.body().push(s);
                 None
             }
-            (s, _) => s,
-        })
+            None => Some(s),
+        }
+    }
+
+    /// An instruction that failed to parse inside an open block: kept as
+    /// a statement that raises the error when it runs. Outside any block
+    /// the error is returned at once (it would run right away).
+    pub fn push_broken(&mut self, e: Error) -> Result<Option<Stmt>> {
+        match (self.stack.last_mut(), e.span) {
+            (Some(o), Some(span)) if e.kind == crate::error::ErrorKind::Syntax => {
+                o.body().push(Stmt::Broken { message: e.message, span });
+                Ok(None)
+            }
+            _ => Err(e),
+        }
+    }
+
+    /// The end of a deck or a procedure file: an SI still open ends with
+    /// the text (Cast3M runs an SI branch up to its FINSI or SINON and
+    /// never looks further: a deck that forgets the last FINSI runs), and
+    /// a REPETER still open runs once (Cast3M meets the end of the text in
+    /// its first pass). The statement completed that way, if any; an open
+    /// DEBPROC is an error.
+    pub fn finish_text(&mut self) -> Result<Option<Stmt>> {
+        let mut done = None;
+        loop {
+            let closed = match self.stack.pop() {
+                Some(Open::If { branches, otherwise, span }) => {
+                    let w = "this SI is never closed by FINSI: it ends with the text, as in Cast3M";
+                    self.warnings.push((w.into(), span));
+                    Stmt::If { branches, otherwise, span }
+                }
+                // Cast3M reaches the end of the text in the first pass, and
+                // stops there: one pass.
+                Some(Open::Loop { name, body, span, .. }) => {
+                    let w = format!(
+                        "REPETER {} is never closed by FIN: it runs once, up to the end of the text, as in Cast3M",
+                        name
+                    );
+                    self.warnings.push((w, span));
+                    let one = Item { kind: ItemKind::Int(1), span };
+                    Stmt::Loop { name, count: Some(Instr { targets: vec![], items: vec![one], span }), body, span }
+                }
+                Some(o) => {
+                    self.stack.push(o);
+                    break;
+                }
+                None => break,
+            };
+            done = self.place(closed);
+        }
+        self.finish()?;
+        Ok(done)
     }
 
     /// The text has ended: every block must be closed.

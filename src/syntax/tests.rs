@@ -117,7 +117,25 @@ fn structure_is_rebuilt() {
 #[test]
 fn unclosed_blocks_and_strays() {
     assert!(parse("si (a) ; x = 1 ;").unwrap_err().message.contains("never closed"));
-    assert!(parse("finsi ;").is_err());
+    // A FINSI that closes nothing does nothing (as in Cast3M), noted.
+    let mut r = Reader::new("finsi ; x = 1 ;");
+    assert!(matches!(r.next(), Some(Ok(Stmt::Instr(_)))));
+    assert_eq!(r.take_warnings().len(), 1);
+    // A text read to run closes an SI left open at its end.
+    let mut r = Reader::to_run("si (a) ; x = 1 ; sinon ; x = 2 ;");
+    assert!(matches!(r.next(), Some(Ok(Stmt::If { otherwise: Some(_), .. }))));
+    assert!(r.next().is_none());
+    // A REPETER left open runs once: Cast3M meets the end of the text in
+    // its first pass. A DEBPROC left open is an error.
+    let mut r = Reader::to_run("repeter b 5 ; si (a) ; x = 1 ;");
+    match r.next() {
+        Some(Ok(Stmt::Loop { count: Some(c), body, .. })) => {
+            assert_eq!(c.items[0].kind, Int(1));
+            assert!(matches!(body[0], Stmt::If { .. }));
+        }
+        s => panic!("{:?}", s),
+    }
+    assert!(Reader::to_run("debproc f ; si (a) ; x = 1 ;").next().unwrap().is_err());
     assert!(parse("repeter a ; fin b ;").is_err());
     assert!(parse("x = (1 + 2 ;").unwrap_err().message.contains("'('"));
     assert!(parse("x = 1 + 2) ;").is_err());
@@ -130,7 +148,51 @@ fn completeness_for_the_repl() {
     assert!(matches!(check_complete("x = (1"), Completeness::Incomplete));
     assert!(matches!(check_complete("x = 1 ;"), Completeness::Complete(_)));
     assert!(matches!(check_complete("x = 1) ;"), Completeness::Invalid(_)));
-    assert!(matches!(check_complete("finsi ;"), Completeness::Invalid(_)));
+    assert!(matches!(check_complete("fin b ;"), Completeness::Invalid(_)));
+}
+
+#[test]
+fn forms_of_cast3m_procedures() {
+    // A broken instruction inside a block raises its error when it runs.
+    let p = parse("si (a) ; x = (1 ; finsi ;").unwrap();
+    match &p.stmts[0] {
+        Stmt::If { branches, .. } => assert!(matches!(branches[0].body[0], Stmt::Broken { .. })),
+        s => panic!("{:?}", s),
+    }
+    assert!(parse("x = (1 ; si (a) ; finsi ;").is_err(), "at top level it is an error at once");
+    // FINSI followed by a directive or a quoted operator: two instructions.
+    let p = parse("si (a) ; x = 1 ; 'FINSI' 'SI' b ; y = 2 ; finsi ;").unwrap();
+    assert_eq!(p.stmts.len(), 2);
+    assert!(parse("si (a) ; finsi garbage ;").is_err());
+    // Names may begin with digits; numbers end at a separator.
+    assert_eq!(
+        items("4filtre 1.5e3 2*3 ;"),
+        vec![
+            ItemKind::Word("4FILTRE".into()),
+            ItemKind::Float(1500.0),
+            ItemKind::Int(2),
+            ItemKind::Sym("*"),
+            ItemKind::Int(3),
+        ]
+    );
+    // `<` and `>` glued to a name are part of it (`T.<PLAN`, `>X`).
+    assert_eq!(
+        items("t.<plan >eg >x ;"),
+        vec![Word("T".into()), Dot, Word("<PLAN".into()), Sym(">EG"), Word(">X".into()),]
+    );
+    // Targets: a quoted type, a group before keys, &NAME.
+    let p = parse("x*'FLOTTANT' = 1. ; (t . 1) . 'K' = 2 ; &d = 3 ;").unwrap();
+    let targets: Vec<_> = p
+        .stmts
+        .iter()
+        .map(|s| match s {
+            Stmt::Instr(i) => i.targets[0].clone(),
+            s => panic!("{:?}", s),
+        })
+        .collect();
+    assert_eq!(targets[0].typed.as_deref(), Some("FLOTTANT"));
+    assert!(targets[1].base.is_some() && targets[1].keys.len() == 1);
+    assert_eq!(targets[2].name, "&D");
 }
 
 #[test]

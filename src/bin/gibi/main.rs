@@ -29,6 +29,11 @@ struct Cli {
     /// Do not print a line for each file written (and no REPL banner).
     #[arg(short = 'q', long)]
     quiet: bool,
+    /// A Cast3M procedure library: a file of `$$$$ NAME` procedures or a
+    /// folder of *.procedur files (repeatable; searched before the paths
+    /// of $GIBI_PROCEDURES).
+    #[arg(long = "procedures", value_name = "PATH")]
+    procedures: Vec<std::path::PathBuf>,
 }
 
 fn exit_code(kind: ErrorKind) -> u8 {
@@ -95,8 +100,24 @@ fn os_bytes(s: &OsStr) -> std::borrow::Cow<'_, [u8]> {
 fn run() -> ExitCode {
     let cli = Cli::parse();
     let cwd = std::env::current_dir().unwrap_or_else(|_| ".".into());
-    let mut gibi =
-        Interpreter::builder().output(std::io::stdout()).files(FilePolicy::Under(cwd)).report_files(!cli.quiet).build();
+    let env_procedures = std::env::var_os("GIBI_PROCEDURES");
+    let procedures: Vec<_> = cli
+        .procedures
+        .iter()
+        .cloned()
+        .chain(env_procedures.iter().flat_map(std::env::split_paths))
+        .filter(|p| !p.as_os_str().is_empty())
+        .collect();
+    if let Some(p) = procedures.iter().find(|p| !p.exists()) {
+        eprintln!("gibi: cannot read the procedure library {}: no such file or folder", p.display());
+        return ExitCode::from(66);
+    }
+    let mut gibi = Interpreter::builder()
+        .output(std::io::stdout())
+        .files(FilePolicy::Under(cwd))
+        .procedures(procedures)
+        .report_files(!cli.quiet)
+        .build();
 
     if cli.list_operators {
         println!("{}", repl::catalogue_json(gibi.registry()));

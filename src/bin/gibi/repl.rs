@@ -167,12 +167,13 @@ pub fn catalogue_json(registry: &Registry) -> String {
             })
             .collect()
     }
-    let items: Vec<String> = registry
+    use gibi::eval::catalogue::{self, Status};
+    let mut items: Vec<String> = registry
         .all()
         .iter()
         .map(|o| {
             format!(
-                "  {{\"name\": \"{}\", \"signature\": \"{}\", \"doc\": \"{}\", \"example\": \"{}\"}}",
+                "  {{\"name\": \"{}\", \"status\": \"implemented\", \"signature\": \"{}\", \"doc\": \"{}\", \"example\": \"{}\"}}",
                 esc(o.name),
                 esc(o.signature),
                 esc(o.doc),
@@ -180,6 +181,22 @@ pub fn catalogue_json(registry: &Registry) -> String {
             )
         })
         .collect();
+    // Then every other name of Cast3M's catalogue, with what gibi does
+    // with it: the language's directives, refused operators, procedures.
+    for e in catalogue::entries() {
+        let status = catalogue::status(e, registry);
+        if status == Status::Implemented && registry.find(e.key).is_some() {
+            continue;
+        }
+        items.push(format!(
+            "  {{\"name\": \"{}\", \"status\": \"{}\", \"kind\": \"{}\", \"cast3m\": \"{}\", \"section\": \"{}\"}}",
+            esc(e.key),
+            status.as_str(),
+            if e.kind == catalogue::Kind::Procedure { "procedure" } else { "operator" },
+            esc(e.name),
+            esc(e.section)
+        ));
+    }
     format!("[\n{}\n]", items.join(",\n"))
 }
 

@@ -20,6 +20,8 @@ pub struct CurvePicture {
     pub x_label: String,
     pub y_label: String,
     pub curves: Vec<Curve>,
+    /// Width of the curves in pixels (Cast3M's OPTI EPTR); None for 2.
+    pub line_width: Option<u32>,
 }
 
 /// Draw the curves on one chart and write an SVG or PNG file.
@@ -56,15 +58,16 @@ impl Paint for CurvePicture {
             .y_desc(self.y_label.as_str())
             .draw()
             .map_err(s)?;
+        let width = self.line_width.unwrap_or(2);
         for (i, c) in self.curves.iter().enumerate() {
             let color = PALETTE[i % PALETTE.len()];
             let pts: Vec<(f64, f64)> =
                 c.x.iter().zip(&c.y).filter(|(x, y)| x.is_finite() && y.is_finite()).map(|(x, y)| (*x, *y)).collect();
-            let series = chart.draw_series(LineSeries::new(pts, color.stroke_width(2))).map_err(s)?;
+            let series = chart.draw_series(LineSeries::new(pts, color.stroke_width(width))).map_err(s)?;
             if !c.label.is_empty() {
                 series
                     .label(c.label.as_str())
-                    .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2)));
+                    .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(width)));
             }
         }
         if self.curves.iter().any(|c| !c.label.is_empty()) {

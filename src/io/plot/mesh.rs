@@ -64,6 +64,9 @@ pub struct MeshPicture<'a> {
     pub meshes: Vec<Mesh>,
     pub field: Option<Field>,
     pub title: String,
+    /// Width of the element edges in pixels (Cast3M's OPTI EPTR); None
+    /// for the default (2, and 1 for the outlines of filled faces).
+    pub line_width: Option<u32>,
 }
 
 /// Draw meshes and an optional field and write an SVG or PNG file.
@@ -178,6 +181,10 @@ enum Prim {
 }
 
 impl MeshPicture<'_> {
+    fn edge_width(&self) -> u32 {
+        self.line_width.unwrap_or(2)
+    }
+
     /// Everything to draw, in drawing order.
     fn prims(&self) -> (Vec<Prim>, Option<(f64, f64)>) {
         let deep = self.deep();
@@ -234,7 +241,7 @@ impl MeshPicture<'_> {
                     let v = 0.5 * (val(w[0]) + val(w[1]));
                     let pts = w.iter().map(|&n| (at(n).0, at(n).1)).collect();
                     let depth = 0.5 * (at(w[0]).2 + at(w[1]).2);
-                    prims.push((depth, Prim::Line { pts, color: colormap(scale(v)), width: 4 }));
+                    prims.push((depth, Prim::Line { pts, color: colormap(scale(v)), width: 2 * self.edge_width() }));
                 }
             }
         }
@@ -258,7 +265,11 @@ impl MeshPicture<'_> {
                 let depth = line.iter().map(|&n| at(n).2).sum::<f64>() / line.len() as f64;
                 prims.push((
                     depth,
-                    Prim::Line { pts: line.iter().map(|&n| (at(n).0, at(n).1)).collect(), color, width: 2 },
+                    Prim::Line {
+                        pts: line.iter().map(|&n| (at(n).0, at(n).1)).collect(),
+                        color,
+                        width: self.edge_width(),
+                    },
                 ));
             }
             for &n in &o.points {
@@ -394,7 +405,8 @@ impl Paint for MeshPicture<'_> {
                         chart.draw_series(std::iter::once(Polygon::new(pts.clone(), c.filled()))).map_err(s)?;
                     }
                     if let Some(c) = stroke {
-                        chart.draw_series(std::iter::once(PathElement::new(pts, c.stroke_width(1)))).map_err(s)?;
+                        let w = self.line_width.unwrap_or(1);
+                        chart.draw_series(std::iter::once(PathElement::new(pts, c.stroke_width(w)))).map_err(s)?;
                     }
                 }
                 Prim::Line { pts, color, width } => {

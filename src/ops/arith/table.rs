@@ -30,9 +30,10 @@ const ANY: &[Ty] = &[];
 /// The first row whose types match decides.
 const ROWS: &[Row] = &[
     Row { x: NUM, y: NUM, rule: scalars },
-    Row { x: &[Ty::ListReel], y: &[Ty::ListReel, Ty::Entier, Ty::Flottant], rule: reals },
-    Row { x: NUM, y: &[Ty::ListReel], rule: reals },
     Row { x: &[Ty::ListEnti], y: &[Ty::ListEnti, Ty::Entier], rule: integers },
+    Row { x: &[Ty::Entier], y: &[Ty::ListEnti], rule: integers },
+    Row { x: &[Ty::ListReel, Ty::ListEnti], y: &[Ty::ListReel, Ty::ListEnti, Ty::Entier, Ty::Flottant], rule: reals },
+    Row { x: NUM, y: &[Ty::ListReel, Ty::ListEnti], rule: reals },
     Row { x: &[Ty::Point], y: &[Ty::Point, Ty::Entier, Ty::Flottant], rule: points },
     Row { x: NUM, y: &[Ty::Point], rule: points },
     Row { x: &[Ty::Chpoint], y: &[Ty::Chpoint, Ty::Entier, Ty::Flottant], rule: node_fields },
@@ -75,18 +76,25 @@ fn scalars(_: &mut Interp, a: &Args, op: Bin, x: &Value, y: &Value) -> Result<Op
     numbers(op, p, q).map(|n| Some(n.value())).map_err(|e| a.err(e))
 }
 
-/// LISTREEL value by value, with a number or a list of the same length.
+/// LISTREEL value by value, with a number or a list of the same length;
+/// a LISTENTI with a FLOTTANT or a LISTREEL counts as reals and gives
+/// reals (the integer cases took the rows above).
 fn reals(_: &mut Interp, a: &Args, op: Bin, x: &Value, y: &Value) -> Result<Option<Value>> {
-    let out: Vec<f64> = match (x, y) {
-        (Value::ListReel(l), Value::ListReel(m)) => {
+    let list = |v: &Value| match v {
+        Value::ListReel(l) => Some(l.to_vec()),
+        Value::ListEnti(l) => Some(l.iter().map(|&i| i as f64).collect()),
+        _ => None,
+    };
+    let out: Vec<f64> = match (list(x), list(y)) {
+        (Some(l), Some(m)) => {
             if l.len() != m.len() {
                 return Err(a.err(format!("lists of different lengths ({} and {})", l.len(), m.len())));
             }
             l.iter().zip(m.iter()).map(|(p, q)| float_op(op, *p, *q)).collect()
         }
-        (Value::ListReel(l), s) => l.iter().map(|p| float_op(op, *p, scalar(s))).collect(),
-        (s, Value::ListReel(l)) => l.iter().map(|q| float_op(op, scalar(s), *q)).collect(),
-        _ => return Ok(None),
+        (Some(l), None) => l.iter().map(|p| float_op(op, *p, scalar(y))).collect(),
+        (None, Some(l)) => l.iter().map(|q| float_op(op, scalar(x), *q)).collect(),
+        (None, None) => return Ok(None),
     };
     Ok(Some(Value::ListReel(Rc::new(out))))
 }
@@ -98,6 +106,7 @@ fn integers(_: &mut Interp, a: &Args, op: Bin, x: &Value, y: &Value) -> Result<O
             l.iter().copied().zip(m.iter().copied()).collect()
         }
         (Value::ListEnti(l), Value::Int(j)) => l.iter().map(|&p| (p, *j)).collect(),
+        (Value::Int(i), Value::ListEnti(l)) => l.iter().map(|&q| (*i, q)).collect(),
         _ => return Ok(None),
     };
     let mut out = Vec::with_capacity(pairs.len());

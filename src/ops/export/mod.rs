@@ -98,12 +98,20 @@ fn wrote(it: &mut Interp, path: &Path) {
 
 /// The base name set by OPTI SORT, without a known extension.
 fn sort_base(it: &Interp) -> Option<String> {
-    let s = it.opts.other.get("SORT")?.trim();
+    base_of(it.opts.text("SORT")?)
+}
+
+/// A file name without a known extension (None when blank).
+fn base_of(s: &str) -> Option<String> {
+    let s = s.trim();
     if s.is_empty() {
         return None;
     }
     let lower = s.to_lowercase();
-    let cut = [".vtu", ".pvd", ".svg", ".png"].iter().find(|e| lower.ends_with(*e)).map_or(0, |e| e.len());
+    let cut = [".vtu", ".pvd", ".svg", ".png", ".ps", ".eps", ".mif"]
+        .iter()
+        .find(|e| lower.ends_with(*e))
+        .map_or(0, |e| e.len());
     Some(s[..s.len() - cut].to_string())
 }
 

@@ -3,7 +3,7 @@
 //! as SVG or PNG files, and VECT, the arrows object decks hand to TRAC.
 
 use super::trac_fields::{element_field, nodal_field};
-use super::{out_path, sort_base, write_err, wrote};
+use super::{base_of, out_path, sort_base, write_err, wrote};
 use crate::error::Result;
 use crate::eval::args::Args;
 use crate::eval::{FilePolicy, Interp};
@@ -20,9 +20,11 @@ fn picture_path(it: &mut Interp) -> Result<Option<(plot::Format, PathBuf)>> {
     if matches!(it.files, FilePolicy::Nothing) {
         return Ok(None);
     }
-    let dev = it.opts.other.get("TRAC").map(|s| s.trim().to_uppercase()).unwrap_or_default();
-    let format = if dev.starts_with("PNG") { plot::Format::Png } else { plot::Format::Svg };
-    let name = match sort_base(it) {
+    let dev = it.opts.text("TRAC").unwrap_or_default();
+    let format = if dev == "PNG" { plot::Format::Png } else { plot::Format::Svg };
+    // OPTI FTRA names Cast3M's picture file; else OPTI SORT's name.
+    let base = it.opts.text("FTRA").and_then(base_of).or_else(|| sort_base(it));
+    let name = match base {
         Some(b) => format!("{}.{}", b, format.ext()),
         None => {
             it.exports.pictures += 1;
@@ -30,6 +32,11 @@ fn picture_path(it: &mut Interp) -> Result<Option<(plot::Format, PathBuf)>> {
         }
     };
     Ok(Some((format, out_path(it, &name)?)))
+}
+
+/// The line width set by OPTI EPTR (pixels, at least 1; at most 20).
+fn eptr(it: &Interp) -> Option<u32> {
+    it.opts.int("EPTR").map(|n| n.clamp(1, 20) as u32)
 }
 
 /// Title from `'TITR' text` (`title` starts as the deck's TITR); other
@@ -107,7 +114,8 @@ pub(super) fn trac(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         return Err(a.missing("MAILLAGE, CHPOINT or MCHAML"));
     }
     let Some((format, path)) = picture_path(it)? else { return Ok(vec![]) };
-    let pic = plot::MeshPicture { nodes: &it.nodes, meshes, field, title };
+    let line_width = eptr(it);
+    let pic = plot::MeshPicture { nodes: &it.nodes, meshes, field, title, line_width };
     plot::draw_mesh(&pic, format, &path).map_err(write_err)?;
     wrote(it, &path);
     Ok(vec![])
@@ -192,6 +200,7 @@ pub(super) fn dess(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             .iter()
             .map(|c| plot::Curve { label: c.legend.clone(), x: c.x.clone(), y: c.y.clone() })
             .collect(),
+        line_width: eptr(it),
     };
     let Some((format, path)) = picture_path(it)? else { return Ok(vec![]) };
     plot::draw_curves(&pic, format, &path).map_err(write_err)?;
