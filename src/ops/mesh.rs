@@ -37,7 +37,6 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "SYME", signature: "POINT|MAILLAGE SYME ('DROIT' P1 P2 | 'PLAN' P1 P2 P3 | 'POINT' P)", doc: "Mirror image on new nodes: about a line (2D; in 3D the half-turn about it), a plane (3D) or a point. Surfaces and volumes keep their orientation.", example: "s2 = s1 syme 'DROIT' p1 p2 ;", f: syme },
     OpDef { name: "TOUR", signature: "POINT|MAILLAGE TOUR angle P1 (P2)", doc: "A copy on new nodes turned by angle degrees about P1 (2D) or about the axis P1 P2 (3D).", example: "s2 = s1 tour 90. p0 ;", f: tour },
     OpDef { name: "INVE", signature: "INVE GEO", doc: "Reverse the orientation of a mesh.", example: "l2 = inve l ;", f: inve },
-    OpDef { name: "SURF", signature: "SURF LINE ('PLAN')", doc: "Free meshing — not available in gibi: use DALL, TRAN or ROTA, or import a Gmsh mesh.", example: "s = dall bas dro hau gau ;", f: surf },
 ];
 
 fn coor(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
@@ -546,10 +545,6 @@ fn tour(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 fn inve(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let m = a.req::<Rc<Mesh>>()?;
     Ok(mesh_val(mg::inve(&m)?))
-}
-
-fn surf(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    Err(a.err("free meshing (SURF) is out of gibi's scope: mesh with DALL, TRAN or ROTA, or read a Gmsh mesh"))
 }
 
 fn noeu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {

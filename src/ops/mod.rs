@@ -23,6 +23,7 @@ mod manu;
 mod masq;
 mod math;
 mod mesh;
+mod mesh_free;
 mod model;
 mod objects;
 mod pointwise;
@@ -179,6 +180,7 @@ impl Registry {
             io::OPS,
             union::OPS,
             mesh::OPS,
+            mesh_free::OPS,
             transform::OPS,
             colour::OPS,
             bc::OPS,

@@ -18,13 +18,17 @@
 //! Errors never panic: they come back as a [`MeshError`] whose message names
 //! the operator and says what is wrong with the input.
 
+pub mod contour;
 pub mod dall;
 pub mod edit;
 pub mod extract;
+pub mod free;
 pub mod grading;
 pub mod line;
 pub mod orient;
+pub mod pairing;
 pub mod query;
+pub mod surf;
 pub mod sweep;
 pub mod symmetry;
 pub mod transform;
