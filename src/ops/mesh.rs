@@ -18,8 +18,6 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "DROI", signature: "DROI (n) P1|LINE P2 ('DINI' d1) ('DFIN' d2)", doc: "A straight line of n elements (SEG2 or SEG3 per OPTI ELEM).", example: "l = droi 10 p1 p2 ;", f: droi },
     // D and C are Cast3M's own abbreviations of DROI and CERC (`p1 d 10 p2`).
     OpDef { name: "D", signature: "D (n) P1|LINE P2 ('DINI' d1) ('DFIN' d2)", doc: "Abbreviation of DROI.", example: "l = p1 d 10 p2 ;", f: droi },
-    OpDef { name: "CERC", signature: "CERC (n) P1 CENTRE P2 ('DINI' d1) ('DFIN' d2)", doc: "An arc of circle from P1 to P2 around CENTRE.", example: "c = cerc 8 p1 o p2 ;", f: cerc },
-    OpDef { name: "C", signature: "C (n) P1 CENTRE P2 ('DINI' d1) ('DFIN' d2)", doc: "Abbreviation of CERC.", example: "c = c 8 p1 o p2 ;", f: cerc },
     OpDef { name: "DALL", signature: "DALL LINE1 LINE2 LINE3 LINE4 ('PLAN')", doc: "A structured surface (OPTI ELEM QUA4, TRI3, QUA8, TRI6) from four sides forming a closed contour.", example: "s = dall bas dro hau gau ;", f: dall },
     OpDef { name: "TRAN", signature: "GEO TRAN (n) ('DINI' d1) ('DFIN' d2) VECTOR", doc: "Sweep a line into a surface or a surface into a volume along a vector.", example: "s = l tran 4 (0. 1.) ;", f: tran },
     OpDef { name: "ROTA", signature: "GEO ROTA (n) ANGLE CENTRE (AXIS_POINT)", doc: "Sweep by rotation (angle in degrees) about a point (2D) or an axis (3D).", example: "s = l rota 8 90. o ;", f: rota },
@@ -110,6 +108,9 @@ fn poin(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         return poin_of_field(a, &ch);
     }
     if let Some(m) = a.opt::<Rc<Mesh>>() {
+        if let Some(k) = a.keyword(&["SPHE", "CYLI", "CONE", "TORE", "JONC"]) {
+            return super::mesh_select::poin_on(it, a, &m, k);
+        }
         if let Some(k) = a.keyword(&["INIT", "FINAL", "PROC", "DROIT", "PLAN"]) {
             return Ok(vec![match k {
                 "INIT" => Value::Point(mg::poin_init(&m)?),
@@ -121,14 +122,14 @@ fn poin(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 "DROIT" => {
                     let p1 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
                     let p2 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
-                    let tol = a.opt_num().unwrap_or(1e-6 * it.opts.dens.max(1e-12));
+                    let tol = a.opt_num().unwrap_or(super::mesh_select::default_crit(it));
                     Value::Mesh(Rc::new(mg::poin_droit(&it.nodes, &m, p1, p2, tol)?))
                 }
                 _ => {
                     let p1 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
                     let p2 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
                     let p3 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
-                    let tol = a.opt_num().unwrap_or(1e-6 * it.opts.dens.max(1e-12));
+                    let tol = a.opt_num().unwrap_or(super::mesh_select::default_crit(it));
                     Value::Mesh(Rc::new(mg::poin_plan(&it.nodes, &m, p1, p2, p3, tol)?))
                 }
             }]);
@@ -186,7 +187,7 @@ fn poin_of_field(a: &mut Args, ch: &crate::value::Chpoint) -> Result<Vec<Value>>
 }
 
 /// `(n) … ('DINI' d1) ('DFIN' d2)` read in any order around the geometry.
-fn spacing(a: &mut Args) -> Result<mg::Spacing> {
+pub(crate) fn spacing(a: &mut Args) -> Result<mg::Spacing> {
     let mut s = mg::Spacing { n: None, dini: None, dfin: None };
     loop {
         if let Some(k) = a.keyword(&["DINI", "DFIN"]) {
@@ -208,7 +209,7 @@ fn spacing(a: &mut Args) -> Result<mg::Spacing> {
     Ok(s)
 }
 
-fn elem_type_opt(it: &Interp) -> ElemType {
+pub(crate) fn elem_type_opt(it: &Interp) -> ElemType {
     ElemType::from_name(&it.opts.elem).unwrap_or(ElemType::Seg2)
 }
 
@@ -228,20 +229,10 @@ fn droi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     Ok(mesh_val(mg::droi(&mut it.nodes, p1.0, p2.0, &sp, ty)?))
 }
 
-fn merge(s: &mut mg::Spacing, more: mg::Spacing) {
+pub(crate) fn merge(s: &mut mg::Spacing, more: mg::Spacing) {
     s.n = s.n.or(more.n);
     s.dini = s.dini.or(more.dini);
     s.dfin = s.dfin.or(more.dfin);
-}
-
-fn cerc(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let mut sp = spacing(a)?;
-    let p1 = a.req::<PointId>()?;
-    let c = a.req::<PointId>()?;
-    let p2 = a.req::<PointId>()?;
-    merge(&mut sp, spacing(a)?);
-    let ty = elem_type_opt(it);
-    Ok(mesh_val(mg::cerc(&mut it.nodes, p1.0, c.0, p2.0, &sp, ty)?))
 }
 
 fn dall(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
@@ -268,7 +259,7 @@ fn tran(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 
 /// A line swept under `OPTI ELEM TRI3` gives triangles, as DALL does (each
 /// quadrangle cut along its first diagonal); volumes are left as swept.
-fn swept_surface(it: &Interp, m: Mesh) -> Mesh {
+pub(crate) fn swept_surface(it: &Interp, m: Mesh) -> Mesh {
     let tri = ElemType::from_name(&it.opts.elem) == Some(ElemType::Tri3);
     if tri && m.parts.iter().any(|p| p.ty == ElemType::Qua4) {
         mg::change_to_triangles(&m)

@@ -24,6 +24,9 @@ mod masq;
 mod math;
 mod mesh;
 mod mesh_free;
+mod mesh_lines;
+mod mesh_ruled;
+mod mesh_select;
 mod model;
 mod objects;
 mod pointwise;
@@ -181,6 +184,8 @@ impl Registry {
             union::OPS,
             mesh::OPS,
             mesh_free::OPS,
+            mesh_lines::OPS,
+            mesh_ruled::OPS,
             transform::OPS,
             colour::OPS,
             bc::OPS,

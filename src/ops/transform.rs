@@ -35,8 +35,8 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "ORIE",
-        signature: "ORIE MAILLAGE",
-        doc: "The mesh with one orientation: lines head to tail, plane surfaces counter-clockwise, surfaces in space consistent across edges, volumes positive (each connected piece follows its first element).",
+        signature: "ORIE MAILLAGE (('DIRE') VECTOR | 'POIN' POINT)",
+        doc: "The mesh with one orientation: lines head to tail, plane surfaces counter-clockwise, surfaces in space consistent across edges, volumes positive (each connected piece follows its first element). With a vector (or 'POIN' a point), each surface element's normal is turned along the vector (or towards the point's side).",
         example: "l2 = orie l ;",
         f: orie,
     },
@@ -130,8 +130,8 @@ fn bary(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 
 fn orie(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let m = a.req::<Rc<Mesh>>()?;
-    if let Some(k) = a.keyword(&["POIN", "VECT"]) {
-        return Err(a.err(format!("ORIE '{}' (a chosen side for the normals) is not implemented in gibi", k)));
+    if let Some(to) = super::mesh_select::towards(it, a)? {
+        return Ok(mesh_val(mg::orient_to::orie_towards(&it.nodes, &m, to)?));
     }
     Ok(mesh_val(mg::orie(&it.nodes, &m, it.opts.dime.max(1))?))
 }

@@ -18,7 +18,9 @@
 //! Errors never panic: they come back as a [`MeshError`] whose message names
 //! the operator and says what is wrong with the input.
 
+pub mod arcs;
 pub mod contour;
+pub mod couture;
 pub mod dall;
 pub mod edit;
 pub mod extract;
@@ -26,8 +28,11 @@ pub mod free;
 pub mod grading;
 pub mod line;
 pub mod orient;
+pub mod orient_to;
 pub mod pairing;
+pub mod polyline;
 pub mod query;
+pub mod select;
 pub mod surf;
 pub mod sweep;
 pub mod symmetry;

@@ -141,7 +141,7 @@ pub fn poin_plan(nodes: &Nodes, mesh: &Mesh, a: V3, b: V3, c: V3, tol: f64) -> R
     Ok(select(nodes, mesh, keep))
 }
 
-fn select(nodes: &Nodes, mesh: &Mesh, keep: impl Fn(V3) -> bool) -> Mesh {
+pub(super) fn select(nodes: &Nodes, mesh: &Mesh, keep: impl Fn(V3) -> bool) -> Mesh {
     let picked: Vec<usize> = mesh.node_list().into_iter().filter(|&n| keep(nodes.get(n))).collect();
     super::mesh_of(vec![(ElemType::Poi1, picked)])
 }
