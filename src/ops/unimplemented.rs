@@ -46,7 +46,7 @@ const fn proc(key: &'static str, name: &'static str, hint: &'static str) -> Miss
 
 const STATICS: &str = "gibi solves linear statics: RIGI, BLOQ/RELA, RESO (UNIL for unilateral conditions)";
 const FILES: &str = "gibi writes results with SORT 'VTK' (ParaView) and reads meshes with LIRE 'GMSH'";
-const MESHING: &str = "gibi meshes with DROI, CERC, DALL, TRAN, ROTA, VOLU, SYME, PLUS, ELIM and ET";
+const MESHING: &str = "gibi meshes with DROI, CERC, DALL, SURF, REGL, COUT, TRAN, ROTA, VOLU, SYME, PLUS, ELIM and ET";
 
 /// The table, sorted by key.
 pub const MISSING: &[Missing] = &[
@@ -80,7 +80,6 @@ pub const MISSING: &[Missing] = &[
     op("PROI", "PROI", ""),
     op("RACC", "RACCORDER", MESHING),
     op("RECO", "RECOMBINER", STATICS),
-    op("REGL", "REGLER", MESHING),
     op("REST", "RESTITUER", FILES),
     op("SAUV", "SAUVER", FILES),
     op("TIRE", "TIRER", ""),
