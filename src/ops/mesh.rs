@@ -187,6 +187,9 @@ fn poin_of_field(a: &mut Args, ch: &crate::value::Chpoint) -> Result<Vec<Value>>
 }
 
 /// `(n) … ('DINI' d1) ('DFIN' d2)` read in any order around the geometry.
+/// The count is the operand just before or the token just after: looking
+/// further would take the count of the next operator of a chain written
+/// with quoted names (`p0 'DROI' n p1 'DROI' n p2`).
 pub(crate) fn spacing(a: &mut Args) -> Result<mg::Spacing> {
     let mut s = mg::Spacing { n: None, dini: None, dfin: None };
     loop {
@@ -198,7 +201,7 @@ pub(crate) fn spacing(a: &mut Args) -> Result<mg::Spacing> {
                 s.dfin = Some(d)
             }
         } else if s.n.is_none() {
-            match a.opt::<i64>() {
+            match a.left_top::<i64>().or_else(|| a.opt_right::<i64>()) {
                 Some(n) => s.n = Some(n),
                 None => break,
             }
@@ -440,8 +443,10 @@ fn translate(it: &mut Interp, a: &mut Args, sign: f64) -> Result<Vec<Value>> {
     let v = vector(it, a).ok_or_else(|| a.missing("a vector (POINT)"))?.map(|c| c * sign);
     Ok(match obj {
         Value::Point(p) => {
+            // A translated point is a new point: the current density, as
+            // Cast3M gives it (meshes keep their nodes' densities).
             let x = it.nodes.get(p);
-            let d = it.nodes.density[p];
+            let d = it.opts.dens;
             vec![Value::Point(it.nodes.push([x[0] + v[0], x[1] + v[1], x[2] + v[2]], d))]
         }
         Value::Mesh(m) => mesh_val(mg::translate_copy(&mut it.nodes, &m, v)?),

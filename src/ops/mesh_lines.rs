@@ -132,7 +132,7 @@ fn lign(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         let v = vector(it, a).ok_or_else(|| a.missing("POINT (the vector)"))?;
         merge(&mut sp, spacing(a)?);
         let x = it.nodes.get(p1);
-        let d = it.nodes.density[p1];
+        let d = it.opts.dens;
         let p2 = it.nodes.push([x[0] + v[0], x[1] + v[1], x[2] + v[2]], d);
         mg::droi(&mut it.nodes, p1, p2, &sp, ty)?
     };
