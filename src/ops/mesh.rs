@@ -187,9 +187,9 @@ fn poin_of_field(a: &mut Args, ch: &crate::value::Chpoint) -> Result<Vec<Value>>
 }
 
 /// `(n) … ('DINI' d1) ('DFIN' d2)` read in any order around the geometry.
-/// The count is the operand just before or the token just after: looking
-/// further would take the count of the next operator of a chain written
-/// with quoted names (`p0 'DROI' n p1 'DROI' n p2`).
+/// The count is among the operands written before, or the token just
+/// after: looking further right would take the count of the next operator
+/// of a chain written with quoted names (`p0 'DROI' n p1 'DROI' n p2`).
 pub(crate) fn spacing(a: &mut Args) -> Result<mg::Spacing> {
     let mut s = mg::Spacing { n: None, dini: None, dfin: None };
     loop {
@@ -201,7 +201,8 @@ pub(crate) fn spacing(a: &mut Args) -> Result<mg::Spacing> {
                 s.dfin = Some(d)
             }
         } else if s.n.is_none() {
-            match a.left_top::<i64>().or_else(|| a.opt_right::<i64>()) {
+            let n = if a.left_len() > 0 { a.opt::<i64>() } else { a.opt_right::<i64>() };
+            match n {
                 Some(n) => s.n = Some(n),
                 None => break,
             }

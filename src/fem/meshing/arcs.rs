@@ -68,7 +68,8 @@ pub fn cer3(
     let (u, v) = (sub(x2, x1), sub(x3, x1));
     let w = cross(u, v);
     let w2 = dot(w, w);
-    if !(w2 > 1e-24 * dot(u, u) * dot(v, v)) || p[0] == p[2] {
+    let aligned = w2.is_nan() || w2 <= 1e-24 * dot(u, u) * dot(v, v);
+    if aligned || p[0] == p[2] {
         return fail(op, "the three points are aligned (or two coincide): no circle passes through them");
     }
     // The circumcentre, and the sense p1 -> p2 -> p3 as the axis.

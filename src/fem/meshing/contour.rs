@@ -53,10 +53,14 @@ pub fn loops(op: &'static str, nodes: &Nodes, mesh: &Mesh) -> Result<Vec<Loop>, 
     for s in &segs {
         for n in [s.0, s.1] {
             let k = at[&n].len();
+            if k == 1 {
+                return fail(op, format!("node {} ends the line: the contour is not closed", n + 1));
+            }
             if k != 2 {
-                let why =
-                    if k == 1 { "ends the line: the contour is not closed" } else { "is where the contour branches" };
-                return fail(op, format!("node {} {} ({} contour segments meet there, 2 are needed)", n + 1, why, k));
+                return fail(
+                    op,
+                    format!("the contour branches at node {} ({k} segments meet there, 2 are needed)", n + 1),
+                );
             }
         }
     }

@@ -59,8 +59,11 @@ pub fn dall(nodes: &mut Nodes, sides: [&Mesh; 4], ty: ElemType) -> Result<Mesh, 
                 ),
             );
         }
-        let c =
-            line_chain(OP, side).map_err(|e| super::MeshError::new(OP, format!("side {}: {}", k + 1, e.message)))?;
+        // A side whose elements are not listed head to tail (`l2 ET l1`)
+        // is put in order first, as ORIE does for lines.
+        let c = line_chain(OP, side)
+            .or_else(|e| super::orie(nodes, side, 3).and_then(|o| line_chain(OP, &o)).map_err(|_| e))
+            .map_err(|e| super::MeshError::new(OP, format!("side {}: {}", k + 1, e.message)))?;
         chains.push(c);
     }
     orient_sides(&mut chains);

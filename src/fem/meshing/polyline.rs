@@ -17,7 +17,7 @@ pub fn quel(nodes: &Nodes, pts: &[usize], ty: ElemType) -> Result<Mesh, MeshErro
         ElemType::Seg3 => 2,
         other => return fail(OP, format!("makes SEG2 or SEG3 lines, not {}", other.name())),
     };
-    if pts.len() < step + 1 || (pts.len() - 1) % step != 0 {
+    if pts.len() < step + 1 || !(pts.len() - 1).is_multiple_of(step) {
         return fail(
             OP,
             match step {

@@ -109,14 +109,22 @@ pub fn between(
     check_nodes(op, nodes, s2)?;
     let types = |m: &Mesh| m.parts.iter().filter(|p| !p.is_empty()).map(|p| (p.ty, p.len())).collect::<Vec<_>>();
     if types(s1) != types(s2) {
-        return fail(op, "the two surfaces do not have the same element types and counts");
+        let show = |m: &Mesh| types(m).iter().map(|(t, n)| format!("{n} {}", t.name())).collect::<Vec<_>>().join(" + ");
+        return fail(
+            op,
+            format!(
+                "the two meshes must have the same elements, in number and type: the first has {}, the second {}",
+                show(s1),
+                show(s2)
+            ),
+        );
     }
     let mut map: HashMap<usize, usize> = HashMap::new();
     let c1 = s1.parts.iter().flat_map(|p| p.conn.iter().copied());
     let c2 = s2.parts.iter().flat_map(|p| p.conn.iter().copied());
     for (a, b) in c1.zip(c2) {
         if *map.entry(a).or_insert(b) != b {
-            return fail(op, format!("node {a} of the first surface faces two different nodes of the second"));
+            return fail(op, format!("node {} of the first mesh faces two different nodes of the second", a + 1));
         }
     }
     let targets: Vec<(usize, V3, f64)> = map.iter().map(|(&a, &b)| (a, nodes.get(b), nodes.density[b])).collect();
