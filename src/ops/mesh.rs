@@ -441,8 +441,14 @@ fn translate(it: &mut Interp, a: &mut Args, sign: f64) -> Result<Vec<Value>> {
     if let (Value::Mesh(m), Some(u)) = (&obj, a.opt::<Rc<Chpoint>>()) {
         return Ok(mesh_val(moved_by_field(it, m, &u, sign)));
     }
-    let v = vector(it, a).ok_or_else(|| a.missing("a vector (POINT)"))?.map(|c| c * sign);
-    Ok(match obj {
+    // Several objects move together (`a b = a b PLUS v`); the last POINT
+    // is the vector.
+    let (mut objs, tail) = super::mesh_move::gather(a, obj, 1, "a vector (POINT)")?;
+    let v = it.nodes.get(tail[0]).map(|c| c * sign);
+    if objs.len() > 1 {
+        return super::mesh_move::copies(it, a, &objs, mg::motion::Motion::Translate(v));
+    }
+    Ok(match objs.remove(0) {
         Value::Point(p) => {
             // A translated point is a new point: the current density, as
             // Cast3M gives it (meshes keep their nodes' densities).
@@ -522,17 +528,25 @@ fn syme(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 fn tour(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    // The object is the operand before TOUR (`s2 = s1 tour 90. p`), else
-    // the first value after it.
-    let obj = match a.left_value() {
+    // The object is the operand before TOUR (`s2 = s1 tour 90. p`; the
+    // first of several), else the first value after it.
+    let first = a.opt_with(|v| matches!(v, Value::Point(_) | Value::Mesh(_)).then(|| v.clone()));
+    let obj = match first.or_else(|| a.left_value()) {
         Some(v) => v,
         None => a.right_any().ok_or_else(|| a.missing("POINT or MAILLAGE"))?,
     };
     let angle = a.req_num()?;
-    let centre = vector(it, a).ok_or_else(|| a.missing("POINT (the centre)"))?;
-    let axis_end =
-        if it.opts.dime >= 3 { Some(vector(it, a).ok_or_else(|| a.missing("POINT (the axis)"))?) } else { None };
-    match obj {
+    // Several objects turn together; the last POINTs are the centre and,
+    // in 3D, the axis.
+    let n = if it.opts.dime >= 3 { 2 } else { 1 };
+    let (mut objs, tail) = super::mesh_move::gather(a, obj, n, "POINT (the centre, and the axis in 3D)")?;
+    let centre = it.nodes.get(tail[0]);
+    let axis_end = tail.get(1).map(|&p| it.nodes.get(p));
+    if objs.len() > 1 {
+        let turn = mg::motion::Motion::Rotate { angle_deg: angle, centre, axis_end };
+        return super::mesh_move::copies(it, a, &objs, turn);
+    }
+    match objs.remove(0) {
         Value::Point(p) => Ok(vec![Value::Point(mg::rotate_point(&mut it.nodes, p, angle, centre, axis_end)?)]),
         Value::Mesh(m) => Ok(mesh_val(mg::rotate_copy(&mut it.nodes, &m, angle, centre, axis_end)?)),
         other => Err(a.err(format!("cannot turn a {}", other.type_name()))),

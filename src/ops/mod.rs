@@ -25,6 +25,7 @@ mod math;
 mod mesh;
 mod mesh_free;
 mod mesh_lines;
+mod mesh_move;
 mod mesh_ruled;
 mod mesh_select;
 mod model;
@@ -186,6 +187,7 @@ impl Registry {
             mesh_free::OPS,
             mesh_lines::OPS,
             mesh_ruled::OPS,
+            mesh_move::OPS,
             transform::OPS,
             colour::OPS,
             bc::OPS,

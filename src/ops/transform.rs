@@ -94,6 +94,12 @@ fn affi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 
 fn proj(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let obj = object(a)?;
+    let map = read_proj(it, a)?;
+    apply(it, a, obj, map)
+}
+
+/// PROJ's arguments after the object (DEPL 'PROJ' reads the same).
+pub(crate) fn read_proj(it: &Interp, a: &mut Args) -> Result<PointMap> {
     let how = a.req_keyword(&["CYLI", "CONI"])?;
     let v = point(it, a, if how == "CYLI" { "the direction" } else { "the apex" })?;
     let target = match a.req_keyword(&["PLAN", "DROI", "SPHE", "CYLI", "CONI", "TORI"])? {
@@ -116,9 +122,7 @@ fn proj(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             return Err(a.err(format!("projection on a {} is not implemented in gibi (only 'PLAN' and 'DROI')", other)))
         }
     };
-    let map =
-        if how == "CYLI" { PointMap::Cylindrical { dir: v, target } } else { PointMap::Conical { apex: v, target } };
-    apply(it, a, obj, map)
+    Ok(if how == "CYLI" { PointMap::Cylindrical { dir: v, target } } else { PointMap::Conical { apex: v, target } })
 }
 
 fn bary(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {

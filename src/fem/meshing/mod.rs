@@ -27,6 +27,7 @@ pub mod extract;
 pub mod free;
 pub mod grading;
 pub mod line;
+pub mod motion;
 pub mod orient;
 pub mod orient_to;
 pub mod pairing;
