@@ -103,10 +103,9 @@ pub fn copy_together(nodes: &mut Nodes, meshes: &[&Mesh], motion: Motion, dim: u
     for m in meshes {
         check_nodes("PLUS", nodes, m)?;
         for n in m.node_list() {
-            if !map.contains_key(&n) {
+            if let std::collections::hash_map::Entry::Vacant(e) = map.entry(n) {
                 let x = motion.image(nodes.get(n))?;
-                let c = nodes.push(x, nodes.density[n]);
-                map.insert(n, c);
+                e.insert(nodes.push(x, nodes.density[n]));
             }
         }
     }
