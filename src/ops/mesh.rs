@@ -22,7 +22,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "TRAN", signature: "GEO TRAN (n) ('DINI' d1) ('DFIN' d2) VECTOR", doc: "Sweep a line into a surface or a surface into a volume along a vector.", example: "s = l tran 4 (0. 1.) ;", f: tran },
     OpDef { name: "ROTA", signature: "GEO ROTA (n) ANGLE CENTRE (AXIS_POINT)", doc: "Sweep by rotation (angle in degrees) about a point (2D) or an axis (3D).", example: "s = l rota 8 90. o ;", f: rota },
     OpDef { name: "VOLU", signature: "VOLU (n) SURF1 SURF2 | VOLU (n) SURF 'TRAN' VECTOR | VOLU (n) SURF 'ROTA' ANGLE P1 (P2)", doc: "Volume between two compatible surfaces, or swept from a surface by a translation or a rotation (as TRAN and ROTA).", example: "v = volu 3 s1 s2 ;", f: volu },
-    OpDef { name: "ELEM", signature: "GEO ELEM TYPE | GEO ELEM n|LISTENTI | GEO ELEM 'APPU' ('STRI'|'LARG') GEO2", doc: "Elements of a mesh by type, by number, or resting on another mesh.", example: "q = s elem qua4 ;", f: elem },
+    OpDef { name: "ELEM", signature: "GEO ELEM TYPE | GEO ELEM n|LISTENTI | GEO ELEM 'APPU' ('STRI'|'LARG') GEO2 | LINE ELEM 'COMP' P1 P2 | GEO ELEM 'TYPE'", doc: "Elements of a mesh by type, by number, or resting on another mesh; the part of a line between two of its points; the element types of a mesh (LISTMOTS).", example: "q = s elem qua4 ;", f: elem },
     OpDef { name: "COTE", signature: "COTE n SURFACE", doc: "Side n of a structured (DALL/TRAN) surface.", example: "b = cote 1 s ;", f: cote },
     OpDef { name: "FACE", signature: "FACE n VOLUME", doc: "Face n of a volume made by VOLU, TRAN or ROTA: 1 the base, 2 the opposite face, 3 the lateral surface.", example: "haut = face 2 v ;", f: face },
     OpDef { name: "ENVE", signature: "ENVE VOLUME", doc: "The envelope of a volume mesh: the faces that belong to one element only (TRI3/QUA4), oriented outwards as in their elements.", example: "peau = enve v ;", f: enve },
@@ -331,8 +331,11 @@ fn face(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     Ok(mesh_val(mg::face(&v, n)?))
 }
 
-fn elem(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+fn elem(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let m = a.req::<Rc<Mesh>>()?;
+    if let Some(k) = a.keyword(&["COMP", "TYPE"]) {
+        return super::mesh_select::elem_keyword(it, a, &m, k);
+    }
     if a.keyword(&["APPU"]).is_some() {
         let strict = a.keyword(&["STRI", "LARG"]) != Some("LARG");
         let support = req_geo(a)?;

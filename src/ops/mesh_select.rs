@@ -64,3 +64,19 @@ pub(crate) fn towards(it: &Interp, a: &mut Args) -> Result<Option<Towards>> {
         None => Ok(a.opt::<PointId>().map(|p| Towards::Direction(it.nodes.get(p.0)))),
     }
 }
+
+/// `LINE ELEM 'COMP' P1 P2` and `GEO ELEM 'TYPE'`.
+pub(crate) fn elem_keyword(it: &mut Interp, a: &mut Args, m: &Mesh, k: &str) -> Result<Vec<Value>> {
+    if k == "TYPE" {
+        let mut names: Vec<String> = Vec::new();
+        for p in m.parts.iter().filter(|p| !p.is_empty()) {
+            if !names.iter().any(|n| n == p.ty.name()) {
+                names.push(p.ty.name().to_string());
+            }
+        }
+        return Ok(vec![Value::ListMots(std::rc::Rc::new(names))]);
+    }
+    let p1 = a.req::<PointId>()?.0;
+    let p2 = a.req::<PointId>()?.0;
+    Ok(mesh_val(mg::between::elem_compris(&it.nodes, m, p1, p2)?))
+}

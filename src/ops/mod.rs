@@ -23,6 +23,7 @@ mod manu;
 mod masq;
 mod math;
 mod mesh;
+mod mesh_edit;
 mod mesh_free;
 mod mesh_lines;
 mod mesh_move;
@@ -188,6 +189,7 @@ impl Registry {
             mesh_lines::OPS,
             mesh_ruled::OPS,
             mesh_move::OPS,
+            mesh_edit::OPS,
             transform::OPS,
             colour::OPS,
             bc::OPS,

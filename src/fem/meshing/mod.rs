@@ -19,9 +19,11 @@
 //! the operator and says what is wrong with the input.
 
 pub mod arcs;
+pub mod between;
 pub mod contour;
 pub mod couture;
 pub mod dall;
+pub mod edges;
 pub mod edit;
 pub mod extract;
 pub mod free;
@@ -33,6 +35,7 @@ pub mod orient_to;
 pub mod pairing;
 pub mod polyline;
 pub mod query;
+pub mod regenerate;
 pub mod select;
 pub mod surf;
 pub mod sweep;
