@@ -86,10 +86,32 @@ fn line_ends(line: &Mesh) -> Result<(usize, usize), MeshError> {
     }
 }
 
-/// `GEO POIN n`: the n-th node (1-based) in node order. For a DROI line this
-/// is the first node of element n (and the last node for n = NBEL + 1).
+/// The nodes of a mesh as Cast3M lists them when it makes points of it
+/// (`CHAN POI1`, `POIN n`): part by part, the first node of every element,
+/// then the second node of every element, and so on, each node at its
+/// first appearance. For a line this is the start of each element in
+/// turn, then (SEG3) the middle nodes, then the end of the last element.
+pub fn point_order(mesh: &Mesh) -> Vec<usize> {
+    let mut seen = std::collections::HashSet::new();
+    let mut out = Vec::new();
+    for p in &mesh.parts {
+        let k = p.ty.nodes();
+        for i in 0..k {
+            for e in p.conn.chunks(k) {
+                if seen.insert(e[i]) {
+                    out.push(e[i]);
+                }
+            }
+        }
+    }
+    out
+}
+
+/// `GEO POIN n`: the n-th node (1-based) in [`point_order`]. For a DROI
+/// line, SEG2 or SEG3, this is the first node of element n (and the last
+/// node for n = NBEL + 1 on SEG2).
 pub fn poin_nth(mesh: &Mesh, n: i64) -> Result<usize, MeshError> {
-    let list = mesh.node_list();
+    let list = point_order(mesh);
     if n < 1 || n as usize > list.len() {
         return fail("POIN", format!("node number {n} is out of range (the mesh has {} nodes)", list.len()));
     }
