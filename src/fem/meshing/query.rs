@@ -107,15 +107,22 @@ pub fn point_order(mesh: &Mesh) -> Vec<usize> {
     out
 }
 
-/// `GEO POIN n`: the n-th node (1-based) in [`point_order`]. For a DROI
-/// line, SEG2 or SEG3, this is the first node of element n (and the last
-/// node for n = NBEL + 1 on SEG2).
+/// `GEO POIN n`: the first node of element n (1-based, elements counted
+/// over the parts in order), or the last node of the last element for
+/// n = NBEL + 1; of a POI1 mesh, its n-th point. For a DROI line, SEG2 or
+/// SEG3, this is the n-th point along it.
 pub fn poin_nth(mesh: &Mesh, n: i64) -> Result<usize, MeshError> {
-    let list = point_order(mesh);
-    if n < 1 || n as usize > list.len() {
-        return fail("POIN", format!("node number {n} is out of range (the mesh has {} nodes)", list.len()));
+    let elems: Vec<(&[usize], ElemType)> = mesh.parts.iter().flat_map(|p| p.elems().map(move |e| (e, p.ty))).collect();
+    let count = elems.len();
+    let last_end = elems.last().filter(|(_, t)| *t != ElemType::Poi1).map(|(e, _)| e[e.len() - 1]);
+    if n >= 1 && (n as usize) <= count {
+        return Ok(elems[n as usize - 1].0[0]);
     }
-    Ok(list[n as usize - 1])
+    if let (true, Some(end)) = (n >= 1 && n as usize == count + 1, last_end) {
+        return Ok(end);
+    }
+    let top = count + usize::from(last_end.is_some());
+    fail("POIN", format!("point number {n} is out of range (the mesh has {count} elements, so 1 to {top})"))
 }
 
 /// `GEO POIN 'PROC' P`: the node of `mesh` nearest to `x`; on a tie, the
