@@ -107,11 +107,20 @@ pub fn point_order(mesh: &Mesh) -> Vec<usize> {
     out
 }
 
-/// `GEO POIN n`: the first node of element n (1-based, elements counted
-/// over the parts in order), or the last node of the last element for
-/// n = NBEL + 1; of a POI1 mesh, its n-th point. For a DROI line, SEG2 or
-/// SEG3, this is the n-th point along it.
+/// `GEO POIN n`. Of points and lines (Cast3M's case): the first node of
+/// element n (1-based, elements counted over the parts in order), or the
+/// last node of the last element for n = NBEL + 1; of a POI1 mesh, its
+/// n-th point. For a DROI line, SEG2 or SEG3, this is the n-th point along
+/// it. Of surfaces and volumes (which Cast3M refuses), the n-th node in
+/// node order.
 pub fn poin_nth(mesh: &Mesh, n: i64) -> Result<usize, MeshError> {
+    if mesh.parts.iter().any(|p| p.ty.dim() > 1) {
+        let list = mesh.node_list();
+        if n < 1 || n as usize > list.len() {
+            return fail("POIN", format!("node number {n} is out of range (the mesh has {} nodes)", list.len()));
+        }
+        return Ok(list[n as usize - 1]);
+    }
     let elems: Vec<(&[usize], ElemType)> = mesh.parts.iter().flat_map(|p| p.elems().map(move |e| (e, p.ty))).collect();
     let count = elems.len();
     let last_end = elems.last().filter(|(_, t)| *t != ElemType::Poi1).map(|(e, _)| e[e.len() - 1]);
