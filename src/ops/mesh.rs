@@ -23,7 +23,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "ROTA", signature: "GEO ROTA (n) ANGLE CENTRE (AXIS_POINT)", doc: "Sweep by rotation (angle in degrees) about a point (2D) or an axis (3D).", example: "s = l rota 8 90. o ;", f: rota },
     OpDef { name: "VOLU", signature: "VOLU (n) SURF1 SURF2 | VOLU (n) SURF 'TRAN' VECTOR | VOLU (n) SURF 'ROTA' ANGLE P1 (P2)", doc: "Volume between two compatible surfaces, or swept from a surface by a translation or a rotation (as TRAN and ROTA).", example: "v = volu 3 s1 s2 ;", f: volu },
     OpDef { name: "ELEM", signature: "GEO ELEM TYPE | GEO ELEM n|LISTENTI | GEO ELEM 'APPU' ('STRI'|'LARG') GEO2 | LINE ELEM 'COMP' P1 P2 | GEO ELEM 'TYPE'", doc: "Elements of a mesh by type, by number, or resting on another mesh; the part of a line between two of its points; the element types of a mesh (LISTMOTS).", example: "q = s elem qua4 ;", f: elem },
-    OpDef { name: "COTE", signature: "COTE n SURFACE", doc: "Side n of a structured (DALL/TRAN) surface.", example: "b = cote 1 s ;", f: cote },
+    OpDef { name: "COTE", signature: "COTE (n) SURFACE", doc: "Side n of a structured (DALL/TRAN) surface, or its four sides.", example: "b = cote 1 s ;", f: cote },
     OpDef { name: "FACE", signature: "FACE n VOLUME", doc: "Face n of a volume made by VOLU, TRAN or ROTA: 1 the base, 2 the opposite face, 3 the lateral surface.", example: "haut = face 2 v ;", f: face },
     OpDef { name: "ENVE", signature: "ENVE VOLUME", doc: "The envelope of a volume mesh: the faces that belong to one element only (TRI3/QUA4), oriented outwards as in their elements.", example: "peau = enve v ;", f: enve },
     OpDef { name: "CONT", signature: "CONT GEO", doc: "Contour: boundary edges of a surface, end points of a line.", example: "c = cont s ;", f: cont },
@@ -191,6 +191,18 @@ fn poin_of_field(a: &mut Args, ch: &crate::value::Chpoint) -> Result<Vec<Value>>
 /// after: looking further right would take the count of the next operator
 /// of a chain written with quoted names (`p0 'DROI' n p1 'DROI' n p2`).
 pub(crate) fn spacing(a: &mut Args) -> Result<mg::Spacing> {
+    read_spacing(a, true)
+}
+
+/// More of the spacing after other arguments: a count only if none was
+/// read yet (`VOLU s 3 'ROTA' 90 p1 p2`: 90 is the angle).
+pub(crate) fn more_spacing(a: &mut Args, s: &mut mg::Spacing) -> Result<()> {
+    let more = read_spacing(a, s.n.is_none())?;
+    merge(s, more);
+    Ok(())
+}
+
+fn read_spacing(a: &mut Args, count: bool) -> Result<mg::Spacing> {
     let mut s = mg::Spacing { n: None, dini: None, dfin: None };
     loop {
         if let Some(k) = a.keyword(&["DINI", "DFIN"]) {
@@ -200,7 +212,7 @@ pub(crate) fn spacing(a: &mut Args) -> Result<mg::Spacing> {
             } else {
                 s.dfin = Some(d)
             }
-        } else if s.n.is_none() {
+        } else if count && s.n.is_none() {
             let n = if a.left_len() > 0 { a.opt::<i64>() } else { a.opt_right::<i64>() };
             match n {
                 Some(n) => s.n = Some(n),
@@ -213,6 +225,19 @@ pub(crate) fn spacing(a: &mut Args) -> Result<mg::Spacing> {
     Ok(s)
 }
 
+/// The angle of a turn, which may be written as an ENTIER (`ROTA 90 p`):
+/// when no other number follows, an ENTIER read as the count was the
+/// angle.
+fn angle_after_count(a: &mut Args, sp: &mut mg::Spacing) -> Result<f64> {
+    match a.opt_num() {
+        Some(x) => Ok(x),
+        None => match sp.n.take() {
+            Some(n) => Ok(n as f64),
+            None => Err(a.missing("FLOTTANT (the angle)")),
+        },
+    }
+}
+
 pub(crate) fn elem_type_opt(it: &Interp) -> ElemType {
     ElemType::from_name(&it.opts.elem).unwrap_or(ElemType::Seg2)
 }
@@ -222,18 +247,16 @@ fn droi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let ty = elem_type_opt(it);
     if let Some(line) = a.opt::<Rc<Mesh>>() {
         let p2 = a.req::<PointId>()?;
-        let more = spacing(a)?;
-        merge(&mut sp, more);
+        more_spacing(a, &mut sp)?;
         return Ok(mesh_val(mg::droi_extend(&mut it.nodes, &line, p2.0, &sp, ty)?));
     }
     let p1 = a.req::<PointId>()?;
     let p2 = a.req::<PointId>()?;
-    let more = spacing(a)?;
-    merge(&mut sp, more);
+    more_spacing(a, &mut sp)?;
     Ok(mesh_val(mg::droi(&mut it.nodes, p1.0, p2.0, &sp, ty)?))
 }
 
-pub(crate) fn merge(s: &mut mg::Spacing, more: mg::Spacing) {
+fn merge(s: &mut mg::Spacing, more: mg::Spacing) {
     s.n = s.n.or(more.n);
     s.dini = s.dini.or(more.dini);
     s.dfin = s.dfin.or(more.dfin);
@@ -256,7 +279,7 @@ fn tran(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let geo = req_geo(a)?;
     let mut sp = spacing(a)?;
     let v = vector(it, a).ok_or_else(|| a.missing("a vector (POINT)"))?;
-    merge(&mut sp, spacing(a)?);
+    more_spacing(a, &mut sp)?;
     let m = mg::tran(&mut it.nodes, &geo, &sp, v)?;
     Ok(mesh_val(swept_surface(it, m)))
 }
@@ -275,10 +298,10 @@ pub(crate) fn swept_surface(it: &Interp, m: Mesh) -> Mesh {
 fn rota(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let geo = req_geo(a)?;
     let mut sp = spacing(a)?;
-    let angle = a.req_num()?;
+    let angle = angle_after_count(a, &mut sp)?;
     let c = vector(it, a).ok_or_else(|| a.missing("the centre (POINT)"))?;
     let axis = vector(it, a);
-    merge(&mut sp, spacing(a)?);
+    more_spacing(a, &mut sp)?;
     let m = mg::rota(&mut it.nodes, &geo, &sp, angle, c, axis)?;
     Ok(mesh_val(swept_surface(it, m)))
 }
@@ -289,12 +312,12 @@ fn rota(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 fn volu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let mut sp = spacing(a)?;
     let mut s1 = a.opt::<Rc<Mesh>>();
-    merge(&mut sp, spacing(a)?);
+    more_spacing(a, &mut sp)?;
     match a.keyword(&["TRAN", "ROTA"]) {
         Some("TRAN") => {
-            merge(&mut sp, spacing(a)?);
+            more_spacing(a, &mut sp)?;
             let v = vector(it, a).ok_or_else(|| a.missing("a vector (POINT)"))?;
-            merge(&mut sp, spacing(a)?);
+            more_spacing(a, &mut sp)?;
             let s = match s1.take() {
                 Some(s) => s,
                 None => a.req::<Rc<Mesh>>()?,
@@ -302,11 +325,11 @@ fn volu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             Ok(mesh_val(mg::tran(&mut it.nodes, &s, &sp, v)?))
         }
         Some(_) => {
-            merge(&mut sp, spacing(a)?);
-            let angle = a.req_num()?;
+            more_spacing(a, &mut sp)?;
+            let angle = angle_after_count(a, &mut sp)?;
             let c = vector(it, a).ok_or_else(|| a.missing("the centre (POINT)"))?;
             let axis = vector(it, a);
-            merge(&mut sp, spacing(a)?);
+            more_spacing(a, &mut sp)?;
             let s = match s1.take() {
                 Some(s) => s,
                 None => a.req::<Rc<Mesh>>()?,
@@ -319,7 +342,7 @@ fn volu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 None => a.req::<Rc<Mesh>>()?,
             };
             let s2 = a.req::<Rc<Mesh>>()?;
-            merge(&mut sp, spacing(a)?);
+            more_spacing(a, &mut sp)?;
             Ok(mesh_val(mg::volu(&mut it.nodes, &s1, &s2, &sp)?))
         }
     }
@@ -353,9 +376,13 @@ fn elem(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 fn cote(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let n = a.req::<i64>()?;
+    let n = a.opt::<i64>();
     let s = a.req::<Rc<Mesh>>()?;
-    Ok(mesh_val(mg::cote(&s, n)?))
+    match n {
+        Some(n) => Ok(mesh_val(mg::cote(&s, n)?)),
+        // `l1 l2 l3 l4 = COTE s`: the four sides.
+        None => (1..=4).map(|k| Ok(Value::Mesh(Rc::new(mg::cote(&s, k)?)))).collect(),
+    }
 }
 
 /// ENVE: the faces of the volume elements that no other element shares

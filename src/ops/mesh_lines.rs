@@ -1,7 +1,7 @@
 //! Curved and broken lines: CERC (C) in all its forms, CER3, LIGN,
 //! QUELCONQUE. The algorithms are in `fem::meshing::{line, arcs, polyline}`.
 
-use super::mesh::{elem_type_opt, merge, mesh_val, spacing, vector};
+use super::mesh::{elem_type_opt, mesh_val, more_spacing, spacing, vector};
 use super::{Args, OpDef, PointId};
 use crate::error::Result;
 use crate::eval::Interp;
@@ -39,7 +39,7 @@ fn cerc(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     match a.keyword(&["CENT", "PASS", "ROTA"]) {
         Some("PASS") => {
             let p = [a.req::<PointId>()?.0, a.req::<PointId>()?.0, a.req::<PointId>()?.0];
-            merge(&mut sp, spacing(a)?);
+            more_spacing(a, &mut sp)?;
             return Ok(mesh_val(arcs::cer3("CERC", &mut it.nodes, p, &sp, ty)?));
         }
         Some("ROTA") => {
@@ -52,7 +52,7 @@ fn cerc(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             } else {
                 None
             };
-            merge(&mut sp, spacing(a)?);
+            more_spacing(a, &mut sp)?;
             let k = arcs::axis("CERC", dir)?;
             let m = arcs::arc("CERC", &mut it.nodes, p1, c, k, angle.to_radians(), None, &sp, ty)?;
             return Ok(mesh_val(m));
@@ -60,11 +60,11 @@ fn cerc(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         _ => {}
     }
     let first = opt_geo(a).ok_or_else(|| a.missing("POINT or MAILLAGE"))?;
-    merge(&mut sp, spacing(a)?);
+    more_spacing(a, &mut sp)?;
     let c = a.req::<PointId>()?.0;
-    merge(&mut sp, spacing(a)?);
+    more_spacing(a, &mut sp)?;
     let last = opt_geo(a);
-    merge(&mut sp, spacing(a)?);
+    more_spacing(a, &mut sp)?;
     let arc = |it: &mut Interp, p1: usize, p2: usize| mg::cerc(&mut it.nodes, p1, c, p2, &sp, ty);
     let m = match (first, last) {
         (Geo::Point(p1), Some(Geo::Point(p2))) => arc(it, p1, p2)?,
@@ -83,11 +83,11 @@ fn cer3(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let mut sp = spacing(a)?;
     let ty = elem_type_opt(it);
     let first = opt_geo(a).ok_or_else(|| a.missing("POINT or MAILLAGE"))?;
-    merge(&mut sp, spacing(a)?);
+    more_spacing(a, &mut sp)?;
     let p2 = a.req::<PointId>()?.0;
-    merge(&mut sp, spacing(a)?);
+    more_spacing(a, &mut sp)?;
     let last = opt_geo(a);
-    merge(&mut sp, spacing(a)?);
+    more_spacing(a, &mut sp)?;
     // A line in place of P1 is prolonged from its end; without P3 the arc
     // closes on the line's first point.
     let (line, p1) = match first {
@@ -117,20 +117,20 @@ fn lign(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let mut sp = spacing(a)?;
     let ty = elem_type_opt(it);
     let kind = a.req_keyword(&["ROTA", "TRAN"])?;
-    merge(&mut sp, spacing(a)?);
+    more_spacing(a, &mut sp)?;
     let m = if kind == "ROTA" {
         let c = vector(it, a).ok_or_else(|| a.missing("POINT (the centre)"))?;
         let p1 = a.req::<PointId>()?.0;
         let normal =
             if it.opts.dime >= 3 { Some(vector(it, a).ok_or_else(|| a.missing("POINT (the normal)"))?) } else { None };
         let angle = a.req_num()?;
-        merge(&mut sp, spacing(a)?);
+        more_spacing(a, &mut sp)?;
         let k = arcs::axis("LIGN", normal)?;
         arcs::arc("LIGN", &mut it.nodes, p1, c, k, angle.to_radians(), None, &sp, ty)?
     } else {
         let p1 = a.req::<PointId>()?.0;
         let v = vector(it, a).ok_or_else(|| a.missing("POINT (the vector)"))?;
-        merge(&mut sp, spacing(a)?);
+        more_spacing(a, &mut sp)?;
         let x = it.nodes.get(p1);
         let d = it.opts.dens;
         let p2 = it.nodes.push([x[0] + v[0], x[1] + v[1], x[2] + v[2]], d);

@@ -1,7 +1,7 @@
 //! Surfaces between lines: REGLER (a ruled surface) and COUTURE (a strip
 //! of triangles). The algorithms are in `fem::meshing::{sweep, couture}`.
 
-use super::mesh::{merge, mesh_val, spacing, swept_surface};
+use super::mesh::{mesh_val, more_spacing, spacing, swept_surface};
 use super::{Args, OpDef, PointId};
 use crate::error::Result;
 use crate::eval::Interp;
@@ -19,9 +19,9 @@ pub(crate) const OPS: &[OpDef] = &[
 fn regl(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let mut sp = spacing(a)?;
     let g1 = a.req::<Rc<Mesh>>()?;
-    merge(&mut sp, spacing(a)?);
+    more_spacing(a, &mut sp)?;
     let g2 = a.req::<Rc<Mesh>>()?;
-    merge(&mut sp, spacing(a)?);
+    more_spacing(a, &mut sp)?;
     // A surface stands for its side 3 (first) or side 1 (second), run
     // along side 1, and the result includes it.
     let is_surface = |m: &Mesh| m.parts.iter().any(|p| p.ty.dim() == 2);

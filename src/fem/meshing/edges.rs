@@ -1,4 +1,5 @@
-//! ARETE: the sharp edges of a mesh in space, as SEG2.
+//! ARETE: the sharp edges of a mesh in space, as SEG2; and every edge of
+//! a mesh (`CHAN 'LIGNE'`).
 
 use super::vec3::{add, cross, dot, norm, V3};
 use super::{check_nodes, fail, mesh_of, MeshError};
@@ -102,4 +103,42 @@ fn corners(ty: ElemType, e: &[usize]) -> Vec<usize> {
         ElemType::Qua8 => vec![e[0], e[2], e[4], e[6]],
         _ => e.to_vec(),
     }
+}
+
+/// `CHAN 'LIGNE' GEO`: every edge of the elements of `mesh` once, as SEG2
+/// (SEG3 for quadratic edges), run as in the first element that has it;
+/// lines are kept, points dropped.
+pub fn all_edges(mesh: &Mesh) -> Mesh {
+    let mut seen = std::collections::HashSet::new();
+    let mut parts: Vec<(ElemType, Vec<usize>)> = Vec::new();
+    for p in &mesh.parts {
+        let edges: Vec<(ElemType, Vec<usize>)> = match p.ty.dim() {
+            0 => continue,
+            1 => vec![(p.ty, (0..p.ty.nodes()).collect())],
+            2 => faces(p.ty),
+            _ => {
+                // The edges of the faces.
+                let mut v = Vec::new();
+                for (fty, floc) in faces(p.ty) {
+                    for (ety, eloc) in faces(fty) {
+                        v.push((ety, eloc.iter().map(|&k| floc[k]).collect()));
+                    }
+                }
+                v
+            }
+        };
+        for e in p.elems() {
+            for (ety, loc) in &edges {
+                let nodes: Vec<usize> = loc.iter().map(|&k| e[k]).collect();
+                let (a, b) = (nodes[0], nodes[nodes.len() - 1]);
+                if seen.insert((a.min(b), a.max(b))) {
+                    match parts.iter_mut().find(|(t, _)| t == ety) {
+                        Some((_, c)) => c.extend(nodes),
+                        None => parts.push((*ety, nodes)),
+                    }
+                }
+            }
+        }
+    }
+    mesh_of(parts)
 }
