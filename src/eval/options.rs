@@ -54,7 +54,7 @@ impl Default for Options {
             elem: "SEG2".into(),
             mode: "PLAN CONT".into(),
             echo: 0,
-            dens: 1.0,
+            dens: 0.0,
             erre: "NORMAL".into(),
             reso: "DIRECTE".into(),
             kept: BTreeMap::new(),

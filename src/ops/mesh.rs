@@ -1,8 +1,11 @@
-//! Making meshes: lines, arcs, structured surfaces, sweeps and volumes,
+//! Making meshes: straight lines, structured surfaces, sweeps and volumes,
 //! and the helpers every geometric operator reads its arguments with. The
 //! algorithms live in `fem::meshing`; this file reads Gibiane arguments and
 //! wraps results. Queries (COOR, POIN …) are in `mesh_query`, operations on
-//! existing meshes (ELEM, CONT, SYME …) in `mesh_edit`.
+//! existing meshes (ELEM, CONT, SYME …) in `mesh_edit`; arcs and broken
+//! lines in `mesh_lines`, free and ruled surfaces in `mesh_free` and
+//! `mesh_ruled`, selections in `mesh_select`, moves in `mesh_move`, repair
+//! in `mesh_repair`.
 
 use super::{Args, OpDef, PointId};
 use crate::error::Result;
@@ -16,13 +19,10 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "DROI", signature: "DROI (n) P1|LINE P2 ('DINI' d1) ('DFIN' d2)", doc: "A straight line of n elements (SEG2 or SEG3 per OPTI ELEM).", example: "l = droi 10 p1 p2 ;", f: droi },
     // D and C are Cast3M's own abbreviations of DROI and CERC (`p1 d 10 p2`).
     OpDef { name: "D", signature: "D (n) P1|LINE P2 ('DINI' d1) ('DFIN' d2)", doc: "Abbreviation of DROI.", example: "l = p1 d 10 p2 ;", f: droi },
-    OpDef { name: "CERC", signature: "CERC (n) P1 CENTRE P2 ('DINI' d1) ('DFIN' d2)", doc: "An arc of circle from P1 to P2 around CENTRE.", example: "c = cerc 8 p1 o p2 ;", f: cerc },
-    OpDef { name: "C", signature: "C (n) P1 CENTRE P2 ('DINI' d1) ('DFIN' d2)", doc: "Abbreviation of CERC.", example: "c = c 8 p1 o p2 ;", f: cerc },
     OpDef { name: "DALL", signature: "DALL LINE1 LINE2 LINE3 LINE4 ('PLAN')", doc: "A structured surface (OPTI ELEM QUA4, TRI3, QUA8, TRI6) from four sides forming a closed contour.", example: "s = dall bas dro hau gau ;", f: dall },
     OpDef { name: "TRAN", signature: "GEO TRAN (n) ('DINI' d1) ('DFIN' d2) VECTOR", doc: "Sweep a line into a surface or a surface into a volume along a vector.", example: "s = l tran 4 (0. 1.) ;", f: tran },
     OpDef { name: "ROTA", signature: "GEO ROTA (n) ANGLE CENTRE (AXIS_POINT)", doc: "Sweep by rotation (angle in degrees) about a point (2D) or an axis (3D).", example: "s = l rota 8 90. o ;", f: rota },
     OpDef { name: "VOLU", signature: "VOLU (n) SURF1 SURF2 | VOLU (n) SURF 'TRAN' VECTOR | VOLU (n) SURF 'ROTA' ANGLE P1 (P2)", doc: "Volume between two compatible surfaces, or swept from a surface by a translation or a rotation (as TRAN and ROTA).", example: "v = volu 3 s1 s2 ;", f: volu },
-    OpDef { name: "SURF", signature: "SURF LINE ('PLAN')", doc: "Free meshing — not available in gibi: use DALL, TRAN or ROTA, or import a Gmsh mesh.", example: "s = dall bas dro hau gau ;", f: surf },
 ];
 
 /// A POINT (as a POI1 mesh) or a MAILLAGE, whichever comes first
@@ -49,7 +49,22 @@ pub(crate) fn vector(it: &Interp, a: &mut Args) -> Option<[f64; 3]> {
 }
 
 /// `(n) … ('DINI' d1) ('DFIN' d2)` read in any order around the geometry.
-fn spacing(a: &mut Args) -> Result<mg::Spacing> {
+/// The count is among the operands written before, or the token just
+/// after: looking further right would take the count of the next operator
+/// of a chain written with quoted names (`p0 'DROI' n p1 'DROI' n p2`).
+pub(crate) fn spacing(a: &mut Args) -> Result<mg::Spacing> {
+    read_spacing(a, true)
+}
+
+/// More of the spacing after other arguments: a count only if none was
+/// read yet (`VOLU s 3 'ROTA' 90 p1 p2`: 90 is the angle).
+pub(crate) fn more_spacing(a: &mut Args, s: &mut mg::Spacing) -> Result<()> {
+    let more = read_spacing(a, s.n.is_none())?;
+    merge(s, more);
+    Ok(())
+}
+
+fn read_spacing(a: &mut Args, count: bool) -> Result<mg::Spacing> {
     let mut s = mg::Spacing { n: None, dini: None, dfin: None };
     loop {
         if let Some(k) = a.keyword(&["DINI", "DFIN"]) {
@@ -59,8 +74,9 @@ fn spacing(a: &mut Args) -> Result<mg::Spacing> {
             } else {
                 s.dfin = Some(d)
             }
-        } else if s.n.is_none() {
-            match a.opt::<i64>() {
+        } else if count && s.n.is_none() {
+            let n = if a.left_len() > 0 { a.opt::<i64>() } else { a.opt_right::<i64>() };
+            match n {
                 Some(n) => s.n = Some(n),
                 None => break,
             }
@@ -71,7 +87,20 @@ fn spacing(a: &mut Args) -> Result<mg::Spacing> {
     Ok(s)
 }
 
-fn elem_type_opt(it: &Interp) -> ElemType {
+/// The angle of a turn, which may be written as an ENTIER (`ROTA 90 p`):
+/// when no other number follows, an ENTIER read as the count was the
+/// angle.
+fn angle_after_count(a: &mut Args, sp: &mut mg::Spacing) -> Result<f64> {
+    match a.opt_num() {
+        Some(x) => Ok(x),
+        None => match sp.n.take() {
+            Some(n) => Ok(n as f64),
+            None => Err(a.missing("FLOTTANT (the angle)")),
+        },
+    }
+}
+
+pub(crate) fn elem_type_opt(it: &Interp) -> ElemType {
     ElemType::from_name(&it.opts.elem).unwrap_or(ElemType::Seg2)
 }
 
@@ -80,14 +109,12 @@ fn droi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let ty = elem_type_opt(it);
     if let Some(line) = a.opt::<Rc<Mesh>>() {
         let p2 = a.req::<PointId>()?;
-        let more = spacing(a)?;
-        merge(&mut sp, more);
+        more_spacing(a, &mut sp)?;
         return Ok(mesh_val(mg::droi_extend(&mut it.nodes, &line, p2.0, &sp, ty)?));
     }
     let p1 = a.req::<PointId>()?;
     let p2 = a.req::<PointId>()?;
-    let more = spacing(a)?;
-    merge(&mut sp, more);
+    more_spacing(a, &mut sp)?;
     Ok(mesh_val(mg::droi(&mut it.nodes, p1.0, p2.0, &sp, ty)?))
 }
 
@@ -95,16 +122,6 @@ fn merge(s: &mut mg::Spacing, more: mg::Spacing) {
     s.n = s.n.or(more.n);
     s.dini = s.dini.or(more.dini);
     s.dfin = s.dfin.or(more.dfin);
-}
-
-fn cerc(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let mut sp = spacing(a)?;
-    let p1 = a.req::<PointId>()?;
-    let c = a.req::<PointId>()?;
-    let p2 = a.req::<PointId>()?;
-    merge(&mut sp, spacing(a)?);
-    let ty = elem_type_opt(it);
-    Ok(mesh_val(mg::cerc(&mut it.nodes, p1.0, c.0, p2.0, &sp, ty)?))
 }
 
 fn dall(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
@@ -124,14 +141,14 @@ fn tran(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let geo = req_geo(a)?;
     let mut sp = spacing(a)?;
     let v = vector(it, a).ok_or_else(|| a.missing("a vector (POINT)"))?;
-    merge(&mut sp, spacing(a)?);
+    more_spacing(a, &mut sp)?;
     let m = mg::tran(&mut it.nodes, &geo, &sp, v)?;
     Ok(mesh_val(swept_surface(it, m)))
 }
 
 /// A line swept under `OPTI ELEM TRI3` gives triangles, as DALL does (each
 /// quadrangle cut along its first diagonal); volumes are left as swept.
-fn swept_surface(it: &Interp, m: Mesh) -> Mesh {
+pub(crate) fn swept_surface(it: &Interp, m: Mesh) -> Mesh {
     let tri = ElemType::from_name(&it.opts.elem) == Some(ElemType::Tri3);
     if tri && m.parts.iter().any(|p| p.ty == ElemType::Qua4) {
         mg::change_to_triangles(&m)
@@ -143,10 +160,10 @@ fn swept_surface(it: &Interp, m: Mesh) -> Mesh {
 fn rota(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let geo = req_geo(a)?;
     let mut sp = spacing(a)?;
-    let angle = a.req_num()?;
+    let angle = angle_after_count(a, &mut sp)?;
     let c = vector(it, a).ok_or_else(|| a.missing("the centre (POINT)"))?;
     let axis = vector(it, a);
-    merge(&mut sp, spacing(a)?);
+    more_spacing(a, &mut sp)?;
     let m = mg::rota(&mut it.nodes, &geo, &sp, angle, c, axis)?;
     Ok(mesh_val(swept_surface(it, m)))
 }
@@ -157,12 +174,12 @@ fn rota(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 fn volu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let mut sp = spacing(a)?;
     let mut s1 = a.opt::<Rc<Mesh>>();
-    merge(&mut sp, spacing(a)?);
+    more_spacing(a, &mut sp)?;
     match a.keyword(&["TRAN", "ROTA"]) {
         Some("TRAN") => {
-            merge(&mut sp, spacing(a)?);
+            more_spacing(a, &mut sp)?;
             let v = vector(it, a).ok_or_else(|| a.missing("a vector (POINT)"))?;
-            merge(&mut sp, spacing(a)?);
+            more_spacing(a, &mut sp)?;
             let s = match s1.take() {
                 Some(s) => s,
                 None => a.req::<Rc<Mesh>>()?,
@@ -170,11 +187,11 @@ fn volu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             Ok(mesh_val(mg::tran(&mut it.nodes, &s, &sp, v)?))
         }
         Some(_) => {
-            merge(&mut sp, spacing(a)?);
-            let angle = a.req_num()?;
+            more_spacing(a, &mut sp)?;
+            let angle = angle_after_count(a, &mut sp)?;
             let c = vector(it, a).ok_or_else(|| a.missing("the centre (POINT)"))?;
             let axis = vector(it, a);
-            merge(&mut sp, spacing(a)?);
+            more_spacing(a, &mut sp)?;
             let s = match s1.take() {
                 Some(s) => s,
                 None => a.req::<Rc<Mesh>>()?,
@@ -187,7 +204,7 @@ fn volu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 None => a.req::<Rc<Mesh>>()?,
             };
             let s2 = a.req::<Rc<Mesh>>()?;
-            merge(&mut sp, spacing(a)?);
+            more_spacing(a, &mut sp)?;
             Ok(mesh_val(mg::volu(&mut it.nodes, &s1, &s2, &sp)?))
         }
     }
@@ -213,8 +230,4 @@ pub(crate) fn moved_by_field(it: &mut Interp, m: &Mesh, u: &Chpoint, scale: f64)
         }
     }
     out
-}
-
-fn surf(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    Err(a.err("free meshing (SURF) is out of gibi's scope: mesh with DALL, TRAN or ROTA, or read a Gmsh mesh"))
 }

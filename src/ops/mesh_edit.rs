@@ -12,8 +12,8 @@ use crate::value::{Chpoint, Value};
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
-    OpDef { name: "ELEM", signature: "GEO ELEM TYPE | GEO ELEM n|LISTENTI | GEO ELEM 'APPU' ('STRI'|'LARG') GEO2", doc: "Elements of a mesh by type, by number, or resting on another mesh.", example: "q = s elem qua4 ;", f: elem },
-    OpDef { name: "COTE", signature: "COTE n SURFACE", doc: "Side n of a structured (DALL/TRAN) surface.", example: "b = cote 1 s ;", f: cote },
+    OpDef { name: "ELEM", signature: "GEO ELEM TYPE | GEO ELEM n|LISTENTI | GEO ELEM 'APPU' ('STRI'|'LARG') GEO2 | LINE ELEM 'COMP' P1 P2 | GEO ELEM 'TYPE'", doc: "Elements of a mesh by type, by number, or resting on another mesh; the part of a line between two of its points; the element types of a mesh (LISTMOTS).", example: "q = s elem qua4 ;", f: elem },
+    OpDef { name: "COTE", signature: "COTE (n) SURFACE", doc: "Side n of a structured (DALL/TRAN) surface, or its four sides.", example: "b = cote 1 s ;", f: cote },
     OpDef { name: "FACE", signature: "FACE n VOLUME", doc: "Face n of a volume made by VOLU, TRAN or ROTA: 1 the base, 2 the opposite face, 3 the lateral surface.", example: "haut = face 2 v ;", f: face },
     OpDef { name: "ENVE", signature: "ENVE VOLUME", doc: "The envelope of a volume mesh: the faces that belong to one element only (TRI3/QUA4), oriented outwards as in their elements.", example: "peau = enve v ;", f: enve },
     OpDef { name: "CONT", signature: "CONT GEO", doc: "Contour: boundary edges of a surface, end points of a line.", example: "c = cont s ;", f: cont },
@@ -27,8 +27,11 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "INVE", signature: "INVE GEO", doc: "Reverse the orientation of a mesh.", example: "l2 = inve l ;", f: inve },
 ];
 
-fn elem(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+fn elem(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let m = a.req::<Rc<Mesh>>()?;
+    if let Some(k) = a.keyword(&["COMP", "TYPE"]) {
+        return super::mesh_select::elem_keyword(it, a, &m, k);
+    }
     if a.keyword(&["APPU"]).is_some() {
         let strict = a.keyword(&["STRI", "LARG"]) != Some("LARG");
         let support = req_geo(a)?;
@@ -46,9 +49,13 @@ fn elem(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 fn cote(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let n = a.req::<i64>()?;
+    let n = a.opt::<i64>();
     let s = a.req::<Rc<Mesh>>()?;
-    Ok(mesh_val(mg::cote(&s, n)?))
+    match n {
+        Some(n) => Ok(mesh_val(mg::cote(&s, n)?)),
+        // `l1 l2 l3 l4 = COTE s`: the four sides.
+        None => (1..=4).map(|k| Ok(Value::Mesh(Rc::new(mg::cote(&s, k)?)))).collect(),
+    }
 }
 
 fn face(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
@@ -143,11 +150,19 @@ fn translate(it: &mut Interp, a: &mut Args, sign: f64) -> Result<Vec<Value>> {
     if let (Value::Mesh(m), Some(u)) = (&obj, a.opt::<Rc<Chpoint>>()) {
         return Ok(mesh_val(moved_by_field(it, m, &u, sign)));
     }
-    let v = vector(it, a).ok_or_else(|| a.missing("a vector (POINT)"))?.map(|c| c * sign);
-    Ok(match obj {
+    // Several objects move together (`a b = a b PLUS v`); the last POINT
+    // is the vector.
+    let (mut objs, tail) = super::mesh_move::gather(a, obj, 1, "a vector (POINT)")?;
+    let v = it.nodes.get(tail[0]).map(|c| c * sign);
+    if objs.len() > 1 {
+        return super::mesh_move::copies(it, a, &objs, mg::motion::Motion::Translate(v));
+    }
+    Ok(match objs.remove(0) {
         Value::Point(p) => {
+            // A translated point is a new point: the current density, as
+            // Cast3M gives it (meshes keep their nodes' densities).
             let x = it.nodes.get(p);
-            let d = it.nodes.density[p];
+            let d = it.opts.dens;
             vec![Value::Point(it.nodes.push([x[0] + v[0], x[1] + v[1], x[2] + v[2]], d))]
         }
         Value::Mesh(m) => mesh_val(mg::translate_copy(&mut it.nodes, &m, v)?),
@@ -200,17 +215,25 @@ fn syme(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 fn tour(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    // The object is the operand before TOUR (`s2 = s1 tour 90. p`), else
-    // the first value after it.
-    let obj = match a.left_value() {
+    // The object is the operand before TOUR (`s2 = s1 tour 90. p`; the
+    // first of several), else the first value after it.
+    let first = a.opt_with(|v| matches!(v, Value::Point(_) | Value::Mesh(_)).then(|| v.clone()));
+    let obj = match first.or_else(|| a.left_value()) {
         Some(v) => v,
         None => a.right_any().ok_or_else(|| a.missing("POINT or MAILLAGE"))?,
     };
     let angle = a.req_num()?;
-    let centre = vector(it, a).ok_or_else(|| a.missing("POINT (the centre)"))?;
-    let axis_end =
-        if it.opts.dime >= 3 { Some(vector(it, a).ok_or_else(|| a.missing("POINT (the axis)"))?) } else { None };
-    match obj {
+    // Several objects turn together; the last POINTs are the centre and,
+    // in 3D, the axis.
+    let n = if it.opts.dime >= 3 { 2 } else { 1 };
+    let (mut objs, tail) = super::mesh_move::gather(a, obj, n, "POINT (the centre, and the axis in 3D)")?;
+    let centre = it.nodes.get(tail[0]);
+    let axis_end = tail.get(1).map(|&p| it.nodes.get(p));
+    if objs.len() > 1 {
+        let turn = mg::motion::Motion::Rotate { angle_deg: angle, centre, axis_end };
+        return super::mesh_move::copies(it, a, &objs, turn);
+    }
+    match objs.remove(0) {
         Value::Point(p) => Ok(vec![Value::Point(mg::rotate_point(&mut it.nodes, p, angle, centre, axis_end)?)]),
         Value::Mesh(m) => Ok(mesh_val(mg::rotate_copy(&mut it.nodes, &m, angle, centre, axis_end)?)),
         other => Err(a.err(format!("cannot turn a {}", other.type_name()))),

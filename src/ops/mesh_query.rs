@@ -73,6 +73,9 @@ fn poin(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         return poin_of_field(a, &ch);
     }
     if let Some(m) = a.opt::<Rc<Mesh>>() {
+        if let Some(k) = a.keyword(&["SPHE", "CYLI", "CONE", "TORE", "JONC"]) {
+            return super::mesh_select::poin_on(it, a, &m, k);
+        }
         if let Some(k) = a.keyword(&["INIT", "FINAL", "PROC", "DROIT", "PLAN"]) {
             return Ok(vec![match k {
                 "INIT" => Value::Point(mg::poin_init(&m)?),
@@ -84,14 +87,14 @@ fn poin(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 "DROIT" => {
                     let p1 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
                     let p2 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
-                    let tol = a.opt_num().unwrap_or(1e-6 * it.opts.dens.max(1e-12));
+                    let tol = a.opt_num().unwrap_or(super::mesh_select::default_crit(it));
                     Value::Mesh(Rc::new(mg::poin_droit(&it.nodes, &m, p1, p2, tol)?))
                 }
                 _ => {
                     let p1 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
                     let p2 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
                     let p3 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
-                    let tol = a.opt_num().unwrap_or(1e-6 * it.opts.dens.max(1e-12));
+                    let tol = a.opt_num().unwrap_or(super::mesh_select::default_crit(it));
                     Value::Mesh(Rc::new(mg::poin_plan(&it.nodes, &m, p1, p2, p3, tol)?))
                 }
             }]);

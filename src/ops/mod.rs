@@ -25,7 +25,13 @@ mod masq;
 mod math;
 mod mesh;
 mod mesh_edit;
+mod mesh_free;
+mod mesh_lines;
+mod mesh_move;
 mod mesh_query;
+mod mesh_repair;
+mod mesh_ruled;
+mod mesh_select;
 mod model;
 mod objects;
 mod opti;
@@ -66,6 +72,11 @@ impl Registry {
             union::OPS,
             mesh::OPS,
             mesh_query::OPS,
+            mesh_free::OPS,
+            mesh_lines::OPS,
+            mesh_ruled::OPS,
+            mesh_move::OPS,
+            mesh_repair::OPS,
             mesh_edit::OPS,
             transform::OPS,
             colour::OPS,

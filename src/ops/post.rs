@@ -161,14 +161,15 @@ fn vmis(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     const KW: &[&str] = &[
         "POI1", "QUA8", "TRI6", "SEG3", "QUA4", "TRI3", "SEG2", "CHPO", "NOEUD", "INCO", "ATTRIBUT", "COMP", "TYPE",
-        "GRAVITE", "MAJU", "MINU",
+        "GRAVITE", "MAJU", "MINU", "QUAD", "LIGN",
     ];
     let k = a.req_keyword(KW)?;
     match k {
         "MAJU" => Ok(vec![Value::mot(a.req::<String>()?.to_uppercase())]),
         "MINU" => Ok(vec![Value::mot(a.req::<String>()?.to_lowercase())]),
         "POI1" => Ok(vec![Value::Mesh(Rc::new(mg::change_to_poi1(&super::mesh::req_geo(a)?)))]),
-        "QUA8" | "TRI6" | "SEG3" => {
+        "LIGN" => Ok(vec![Value::Mesh(Rc::new(mg::edges::all_edges(&super::mesh::req_geo(a)?)))]),
+        "QUA8" | "TRI6" | "SEG3" | "QUAD" => {
             let m = super::mesh::req_geo(a)?;
             Ok(vec![Value::Mesh(Rc::new(mg::change_to_quadratic(&mut it.nodes, &m)?))])
         }

@@ -35,8 +35,8 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "ORIE",
-        signature: "ORIE MAILLAGE",
-        doc: "The mesh with one orientation: lines head to tail, plane surfaces counter-clockwise, surfaces in space consistent across edges, volumes positive (each connected piece follows its first element).",
+        signature: "ORIE MAILLAGE (('DIRE') VECTOR | 'POIN' POINT)",
+        doc: "The mesh with one orientation: lines head to tail, plane surfaces counter-clockwise, surfaces in space consistent across edges, volumes positive (each connected piece follows its first element). With a vector (or 'POIN' a point), each surface element's normal is turned along the vector (or towards the point's side).",
         example: "l2 = orie l ;",
         f: orie,
     },
@@ -94,6 +94,12 @@ fn affi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 
 fn proj(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let obj = object(a)?;
+    let map = read_proj(it, a)?;
+    apply(it, a, obj, map)
+}
+
+/// PROJ's arguments after the object (DEPL 'PROJ' reads the same).
+pub(crate) fn read_proj(it: &Interp, a: &mut Args) -> Result<PointMap> {
     let how = a.req_keyword(&["CYLI", "CONI"])?;
     let v = point(it, a, if how == "CYLI" { "the direction" } else { "the apex" })?;
     let target = match a.req_keyword(&["PLAN", "DROI", "SPHE", "CYLI", "CONI", "TORI"])? {
@@ -116,9 +122,7 @@ fn proj(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             return Err(a.err(format!("projection on a {} is not implemented in gibi (only 'PLAN' and 'DROI')", other)))
         }
     };
-    let map =
-        if how == "CYLI" { PointMap::Cylindrical { dir: v, target } } else { PointMap::Conical { apex: v, target } };
-    apply(it, a, obj, map)
+    Ok(if how == "CYLI" { PointMap::Cylindrical { dir: v, target } } else { PointMap::Conical { apex: v, target } })
 }
 
 fn bary(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
@@ -130,8 +134,8 @@ fn bary(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 
 fn orie(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let m = a.req::<Rc<Mesh>>()?;
-    if let Some(k) = a.keyword(&["POIN", "VECT"]) {
-        return Err(a.err(format!("ORIE '{}' (a chosen side for the normals) is not implemented in gibi", k)));
+    if let Some(to) = super::mesh_select::towards(it, a)? {
+        return Ok(mesh_val(mg::orient_to::orie_towards(&it.nodes, &m, to)?));
     }
     Ok(mesh_val(mg::orie(&it.nodes, &m, it.opts.dime.max(1))?))
 }

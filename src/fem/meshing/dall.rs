@@ -12,10 +12,10 @@ const OP: &str = "DALL";
 /// `DALL c1 c2 c3 c4`: a structured mesh of QUA4, TRI3, QUA8 or TRI6 (`ty`,
 /// the current `OPTI ELEM`) filling the contour `c1 c2 c3 c4`.
 ///
-/// The sides must follow each other head to tail (side k + 1 starts where
-/// side k ends and side 1 starts where side 4 ends); a side given the other
-/// way is an error, not silently reversed. Opposite sides must have the
-/// same number of elements. Linear elements need SEG2 sides, quadratic ones
+/// The sides must follow each other around the contour, each one in either
+/// direction: as Cast3M does, a side that runs the other way is read
+/// reversed (see [`orient_sides`]). Opposite sides must have the same
+/// number of elements. Linear elements need SEG2 sides, quadratic ones
 /// SEG3 sides.
 ///
 /// Think of the surface as a grid `N(i, j)`, `i` running along side 1 (from
@@ -59,10 +59,14 @@ pub fn dall(nodes: &mut Nodes, sides: [&Mesh; 4], ty: ElemType) -> Result<Mesh, 
                 ),
             );
         }
-        let c =
-            line_chain(OP, side).map_err(|e| super::MeshError::new(OP, format!("side {}: {}", k + 1, e.message)))?;
+        // A side whose elements are not listed head to tail (`l2 ET l1`)
+        // is put in order first, as ORIE does for lines.
+        let c = line_chain(OP, side)
+            .or_else(|e| super::orie(nodes, side, 3).and_then(|o| line_chain(OP, &o)).map_err(|_| e))
+            .map_err(|e| super::MeshError::new(OP, format!("side {}: {}", k + 1, e.message)))?;
         chains.push(c);
     }
+    orient_sides(&mut chains);
     check_contour(nodes, &chains)?;
     let per_elem = if quadratic { 2 } else { 1 };
     for (k, opp) in [(2, 0), (3, 1)] {
@@ -88,8 +92,26 @@ pub fn dall(nodes: &mut Nodes, sides: [&Mesh; 4], ty: ElemType) -> Result<Mesh, 
     Ok(grid.elements(ty))
 }
 
+/// Turn the sides head to tail: side 1 keeps its direction unless only its
+/// start touches side 2, and each next side starts where the previous one
+/// ends, reversed if it ends there instead.
+fn orient_sides(c: &mut [Vec<usize>]) {
+    let ends = |v: &Vec<usize>| (v[0], *v.last().unwrap_or(&v[0]));
+    let (s1, e1) = ends(&c[0]);
+    let (s2, e2) = ends(&c[1]);
+    if e1 != s2 && e1 != e2 && (s1 == s2 || s1 == e2) {
+        c[0].reverse();
+    }
+    for k in 1..4 {
+        let prev = *c[k - 1].last().unwrap_or(&usize::MAX);
+        if c[k][0] != prev && c[k].last() == Some(&prev) {
+            c[k].reverse();
+        }
+    }
+}
+
 /// The contour must close: report the first break, with a hint when the
-/// break is a reversed side or two distinct points at the same place.
+/// break is two distinct points at the same place.
 fn check_contour(nodes: &Nodes, c: &[Vec<usize>]) -> Result<(), MeshError> {
     for k in 0..4 {
         let next = (k + 1) % 4;
@@ -99,11 +121,9 @@ fn check_contour(nodes: &Nodes, c: &[Vec<usize>]) -> Result<(), MeshError> {
             continue;
         }
         let hint = if dist(nodes.get(end), nodes.get(start)) == 0.0 {
-            " (they are different points at the same place: merge them with ELIM)".to_string()
-        } else if c[next].last() == Some(&end) {
-            format!(" (side {} runs the other way: reverse it with INVE)", next + 1)
+            " (they are different points at the same place: merge them with ELIM)"
         } else {
-            String::new()
+            ""
         };
         let what = if next == 0 {
             "side 1 does not start where side 4 ends".to_string()

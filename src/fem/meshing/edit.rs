@@ -222,9 +222,10 @@ pub fn inve(mesh: &Mesh) -> Result<Mesh, MeshError> {
     Ok(mesh_of(parts))
 }
 
-/// `CHAN 'POI1' GEO`: a POI1 mesh of the nodes, in node order.
+/// `CHAN 'POI1' GEO`: a POI1 mesh of the nodes, in Cast3M's point order
+/// ([`point_order`](super::query::point_order)).
 pub fn change_to_poi1(mesh: &Mesh) -> Mesh {
-    Mesh::points(&mesh.node_list())
+    Mesh::points(&super::query::point_order(mesh))
 }
 
 /// `CHAN QUA8 GEO` (or SEG3, TRI6): every linear element becomes quadratic

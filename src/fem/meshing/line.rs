@@ -124,7 +124,7 @@ pub fn cerc(
 /// Create the nodes of a chain at fractions `t` (ends excluded: they are
 /// `first` and `last`) and connect them as SEG2 or SEG3. `place` maps a
 /// fraction to a position and a density.
-fn chain(
+pub(super) fn chain(
     nodes: &mut Nodes,
     first: usize,
     last: usize,

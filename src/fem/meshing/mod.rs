@@ -18,13 +18,26 @@
 //! Errors never panic: they come back as a [`MeshError`] whose message names
 //! the operator and says what is wrong with the input.
 
+pub mod arcs;
+pub mod between;
+pub mod contour;
+pub mod couture;
 pub mod dall;
+pub mod edges;
 pub mod edit;
 pub mod extract;
+pub mod free;
 pub mod grading;
 pub mod line;
+pub mod motion;
 pub mod orient;
+pub mod orient_to;
+pub mod pairing;
+pub mod polyline;
 pub mod query;
+pub mod regenerate;
+pub mod select;
+pub mod surf;
 pub mod sweep;
 pub mod symmetry;
 pub mod transform;

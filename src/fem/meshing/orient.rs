@@ -23,7 +23,7 @@ use std::collections::{HashMap, VecDeque};
 
 /// The corner nodes of an element, in order around it (for a line, its
 /// two ends).
-fn corners(ty: ElemType) -> &'static [usize] {
+pub(super) fn corners(ty: ElemType) -> &'static [usize] {
     match ty {
         ElemType::Poi1 => &[0],
         ElemType::Seg2 => &[0, 1],
@@ -39,7 +39,7 @@ fn corners(ty: ElemType) -> &'static [usize] {
 }
 
 /// Node order that turns an element the other way.
-fn flip_perm(ty: ElemType) -> &'static [usize] {
+pub(super) fn flip_perm(ty: ElemType) -> &'static [usize] {
     match ty {
         ElemType::Seg2 => &[1, 0],
         ElemType::Seg3 => &[2, 1, 0],

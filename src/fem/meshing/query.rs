@@ -86,14 +86,52 @@ fn line_ends(line: &Mesh) -> Result<(usize, usize), MeshError> {
     }
 }
 
-/// `GEO POIN n`: the n-th node (1-based) in node order. For a DROI line this
-/// is the first node of element n (and the last node for n = NBEL + 1).
-pub fn poin_nth(mesh: &Mesh, n: i64) -> Result<usize, MeshError> {
-    let list = mesh.node_list();
-    if n < 1 || n as usize > list.len() {
-        return fail("POIN", format!("node number {n} is out of range (the mesh has {} nodes)", list.len()));
+/// The nodes of a mesh as Cast3M lists them when it makes points of it
+/// (`CHAN POI1`, `POIN n`): part by part, the first node of every element,
+/// then the second node of every element, and so on, each node at its
+/// first appearance. For a line this is the start of each element in
+/// turn, then (SEG3) the middle nodes, then the end of the last element.
+pub fn point_order(mesh: &Mesh) -> Vec<usize> {
+    let mut seen = std::collections::HashSet::new();
+    let mut out = Vec::new();
+    for p in &mesh.parts {
+        let k = p.ty.nodes();
+        for i in 0..k {
+            for e in p.conn.chunks(k) {
+                if seen.insert(e[i]) {
+                    out.push(e[i]);
+                }
+            }
+        }
     }
-    Ok(list[n as usize - 1])
+    out
+}
+
+/// `GEO POIN n`. Of points and lines (Cast3M's case): the first node of
+/// element n (1-based, elements counted over the parts in order), or the
+/// last node of the last element for n = NBEL + 1; of a POI1 mesh, its
+/// n-th point. For a DROI line, SEG2 or SEG3, this is the n-th point along
+/// it. Of surfaces and volumes (which Cast3M refuses), the n-th node in
+/// node order.
+pub fn poin_nth(mesh: &Mesh, n: i64) -> Result<usize, MeshError> {
+    if mesh.parts.iter().any(|p| p.ty.dim() > 1) {
+        let list = mesh.node_list();
+        if n < 1 || n as usize > list.len() {
+            return fail("POIN", format!("node number {n} is out of range (the mesh has {} nodes)", list.len()));
+        }
+        return Ok(list[n as usize - 1]);
+    }
+    let elems: Vec<(&[usize], ElemType)> = mesh.parts.iter().flat_map(|p| p.elems().map(move |e| (e, p.ty))).collect();
+    let count = elems.len();
+    let last_end = elems.last().filter(|(_, t)| *t != ElemType::Poi1).map(|(e, _)| e[e.len() - 1]);
+    if n >= 1 && (n as usize) <= count {
+        return Ok(elems[n as usize - 1].0[0]);
+    }
+    if let (true, Some(end)) = (n >= 1 && n as usize == count + 1, last_end) {
+        return Ok(end);
+    }
+    let top = count + usize::from(last_end.is_some());
+    fail("POIN", format!("point number {n} is out of range (the mesh has {count} elements, so 1 to {top})"))
 }
 
 /// `GEO POIN 'PROC' P`: the node of `mesh` nearest to `x`; on a tie, the
@@ -141,7 +179,7 @@ pub fn poin_plan(nodes: &Nodes, mesh: &Mesh, a: V3, b: V3, c: V3, tol: f64) -> R
     Ok(select(nodes, mesh, keep))
 }
 
-fn select(nodes: &Nodes, mesh: &Mesh, keep: impl Fn(V3) -> bool) -> Mesh {
+pub(super) fn select(nodes: &Nodes, mesh: &Mesh, keep: impl Fn(V3) -> bool) -> Mesh {
     let picked: Vec<usize> = mesh.node_list().into_iter().filter(|&n| keep(nodes.get(n))).collect();
     super::mesh_of(vec![(ElemType::Poi1, picked)])
 }

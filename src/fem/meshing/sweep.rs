@@ -91,31 +91,51 @@ pub fn rota(
 /// shared by both surfaces stays put. Layers follow [`Spacing`] over the
 /// mean distance between corresponding nodes.
 pub fn volu(nodes: &mut Nodes, s1: &Mesh, s2: &Mesh, spacing: &Spacing) -> Result<Mesh, MeshError> {
-    const OP: &str = "VOLU";
-    check_nodes(OP, nodes, s1)?;
-    check_nodes(OP, nodes, s2)?;
+    between("VOLU", nodes, s1, s2, spacing)
+}
+
+/// The sweep from `s1` to `s2` of VOLU (two surfaces) and REGLER (two
+/// lines), see [`volu`]; `op` names the operator in errors. Without a
+/// count, the layers are graded from the mean density of `s1` to that of
+/// `s2`.
+pub fn between(
+    op: &'static str,
+    nodes: &mut Nodes,
+    s1: &Mesh,
+    s2: &Mesh,
+    spacing: &Spacing,
+) -> Result<Mesh, MeshError> {
+    check_nodes(op, nodes, s1)?;
+    check_nodes(op, nodes, s2)?;
     let types = |m: &Mesh| m.parts.iter().filter(|p| !p.is_empty()).map(|p| (p.ty, p.len())).collect::<Vec<_>>();
     if types(s1) != types(s2) {
-        return fail(OP, "the two surfaces do not have the same element types and counts");
+        let show = |m: &Mesh| types(m).iter().map(|(t, n)| format!("{n} {}", t.name())).collect::<Vec<_>>().join(" + ");
+        return fail(
+            op,
+            format!(
+                "the two meshes must have the same elements, in number and type: the first has {}, the second {}",
+                show(s1),
+                show(s2)
+            ),
+        );
     }
     let mut map: HashMap<usize, usize> = HashMap::new();
     let c1 = s1.parts.iter().flat_map(|p| p.conn.iter().copied());
     let c2 = s2.parts.iter().flat_map(|p| p.conn.iter().copied());
     for (a, b) in c1.zip(c2) {
         if *map.entry(a).or_insert(b) != b {
-            return fail(OP, format!("node {a} of the first surface faces two different nodes of the second"));
+            return fail(op, format!("node {} of the first mesh faces two different nodes of the second", a + 1));
         }
     }
     let targets: Vec<(usize, V3, f64)> = map.iter().map(|(&a, &b)| (a, nodes.get(b), nodes.density[b])).collect();
     let gap = targets.iter().map(|(a, x, _)| dist(nodes.get(*a), *x)).sum::<f64>() / targets.len().max(1) as f64;
-    let d = mean_density(nodes, s1);
-    let t = fractions(OP, spacing, gap, d, d)?;
+    let t = fractions(op, spacing, gap, mean_density(nodes, s1), mean_density(nodes, s2))?;
     let far: HashMap<usize, V3> = targets.iter().map(|(a, x, _)| (*a, *x)).collect();
     let place = |x: V3, n: usize, s: f64| lerp(x, far[&n], s);
     // The last layer is the second surface itself.
     let last = |n: usize| map[&n];
     let same = |n: usize| map[&n] == n;
-    sweep_to(OP, nodes, s1, &t, place, same, Some(&last))
+    sweep_to(op, nodes, s1, &t, place, same, Some(&last))
 }
 
 fn mean_density(nodes: &Nodes, mesh: &Mesh) -> f64 {

@@ -90,12 +90,10 @@ fn graded_sides_stay_graded_inside() {
 fn dall_refuses_open_contours_and_unequal_sides() {
     let mut n = Nodes::default();
     let s = sides(&mut n, SQUARE, 2, 2, ElemType::Qua4);
-    let rev = inve(&s[1]).unwrap();
-    let e = dall(&mut n, [&s[0], &rev, &s[2], &s[3]], ElemType::Qua4).unwrap_err();
+    let e = dall(&mut n, [&s[0], &s[2], &s[1], &s[3]], ElemType::Qua4).unwrap_err();
     assert_eq!(
         e.to_string(),
-        "DALL: the four sides do not form a closed contour (side 2 does not start where side 1 ends) \
-         (side 2 runs the other way: reverse it with INVE)"
+        "DALL: the four sides do not form a closed contour (side 2 does not start where side 1 ends)"
     );
     let e = dall(&mut n, [&s[1], &s[0], &s[2], &s[3]], ElemType::Qua4).unwrap_err();
     assert!(e.to_string().contains("closed contour"));
@@ -107,4 +105,24 @@ fn dall_refuses_open_contours_and_unequal_sides() {
     assert!(e.to_string().contains("side 3 has 3 but side 1 has 2"), "{e}");
     let e = dall(&mut n, [&s[0], &s[1], &s[2], &s[3]], ElemType::Qua8).unwrap_err();
     assert!(e.to_string().contains("need SEG3 sides"), "{e}");
+}
+
+#[test]
+fn dall_reads_sides_given_the_other_way() {
+    let mut n = Nodes::default();
+    let s = sides(&mut n, SQUARE, 2, 3, ElemType::Qua4);
+    let inv: Vec<Mesh> = s.iter().map(|m| inve(m).unwrap()).collect();
+    // Side 2 reversed: the same counter-clockwise square.
+    let d = dall(&mut n, [&s[0], &inv[1], &s[2], &s[3]], ElemType::Qua4).unwrap();
+    let a = areas(&n, &d);
+    assert_eq!(a.len(), 6);
+    assert!(a.iter().all(|&x| close(x, 1.0 / 6.0)), "{a:?}");
+    // The contour given backwards from side 1 (side 2 hangs on side 1's
+    // start): side 1 is read reversed and the square turns clockwise.
+    let d = dall(&mut n, [&s[0], &s[3], &s[2], &s[1]], ElemType::Qua4).unwrap();
+    let a = areas(&n, &d);
+    assert!(a.iter().all(|&x| close(x, -1.0 / 6.0)), "{a:?}");
+    // Every side reversed: clockwise too.
+    let d = dall(&mut n, [&inv[0], &inv[3], &inv[2], &inv[1]], ElemType::Qua4).unwrap();
+    assert!(close(areas(&n, &d).iter().sum::<f64>(), -1.0));
 }

@@ -5,4 +5,5 @@ mod edit;
 mod extract;
 mod helpers;
 mod line;
+mod surf;
 mod sweep;

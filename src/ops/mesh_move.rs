@@ -1,0 +1,142 @@
+//! Moving geometry: the DEPLACER directive (nodes moved in place) and the
+//! copies of several objects at once that PLUS, MOIN and TOUR make
+//! (`a b = a b PLUS v`). The motions are `fem::meshing::motion`.
+
+use super::mesh::vector;
+use super::{Args, OpDef};
+use crate::error::Result;
+use crate::eval::Interp;
+use crate::fem::mesh::Mesh;
+use crate::fem::meshing::motion::{copy_together, move_in_place, Motion};
+use crate::fem::meshing::transform::PointMap;
+use crate::fem::meshing::Mirror;
+use crate::value::Value;
+use std::rc::Rc;
+
+pub(crate) const OPS: &[OpDef] = &[OpDef {
+    name: "DEPL",
+    signature: "DEPL GEO (GEO2 …) 'PLUS'|'MOIN' VECTOR | 'TOUR' angle P1 (P2) | 'HOMO' ratio CENTRE | 'AFFI' ratio P1 P2 (P3) | 'SYME' 'DROIT' P1 P2|'PLAN' P1 P2 P3|'POINT' P | 'PROJ' …",
+    doc: "Move the nodes of meshes or points in place (every object holding them sees them moved): translation, rotation, homothety, affinity, symmetry or projection, read as PLUS, TOUR, HOMO, AFFI, SYME and PROJ read them.",
+    example: "depl s 'PLUS' (1. 0.) ;",
+    f: depl,
+}];
+
+/// A POINT (as a POI1 mesh) or a MAILLAGE.
+fn geo(v: &Value) -> Option<Mesh> {
+    match v {
+        Value::Point(p) => Some(Mesh::points(&[*p])),
+        Value::Mesh(m) => Some((**m).clone()),
+        _ => None,
+    }
+}
+
+fn depl(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let mut objs = Vec::new();
+    let kinds = ["PLUS", "MOIN", "TOUR", "HOMO", "AFFI", "SYME", "PROJ"];
+    let kind = loop {
+        if let Some(k) = a.keyword_next(&kinds) {
+            break k;
+        }
+        match a.opt_with(geo) {
+            Some(m) => objs.push(m),
+            None => break a.req_keyword(&kinds)?,
+        }
+    };
+    if objs.is_empty() {
+        return Err(a.missing("POINT or MAILLAGE (what to move)"));
+    }
+    let dim = it.opts.dime.max(2);
+    let motion = match kind {
+        "PLUS" | "MOIN" => {
+            let v = vector(it, a).ok_or_else(|| a.missing("a vector (POINT)"))?;
+            Motion::Translate(if kind == "MOIN" { v.map(|c| -c) } else { v })
+        }
+        "TOUR" => read_turn(it, a)?,
+        "HOMO" => {
+            let ratio = a.req_num()?;
+            let centre = vector(it, a).ok_or_else(|| a.missing("POINT (the centre)"))?;
+            Motion::Map(PointMap::Homothety { ratio, centre })
+        }
+        "AFFI" => {
+            let ratio = a.req_num()?;
+            let p1 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
+            let p2 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
+            Motion::Map(if dim >= 3 {
+                let p3 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
+                PointMap::affinity_3d(ratio, p1, p2, p3)?
+            } else {
+                PointMap::affinity_2d(ratio, p1, p2)?
+            })
+        }
+        "SYME" => Motion::Mirror(match a.req_keyword(&["DROIT", "PLAN", "POINT"])? {
+            "DROIT" => {
+                let p1 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
+                Mirror::Line(p1, vector(it, a).ok_or_else(|| a.missing("POINT"))?)
+            }
+            "PLAN" => {
+                let p1 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
+                let p2 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
+                Mirror::Plane(p1, p2, vector(it, a).ok_or_else(|| a.missing("POINT"))?)
+            }
+            _ => Mirror::Point(vector(it, a).ok_or_else(|| a.missing("POINT"))?),
+        }),
+        _ => Motion::Map(super::transform::read_proj(it, a)?),
+    };
+    let refs: Vec<&Mesh> = objs.iter().collect();
+    move_in_place(&mut it.nodes, &refs, motion, dim)?;
+    Ok(vec![])
+}
+
+/// `angle P1 (P2)`: P2 (the axis) in 3D only.
+fn read_turn(it: &Interp, a: &mut Args) -> Result<Motion> {
+    let angle_deg = a.req_num()?;
+    let centre = vector(it, a).ok_or_else(|| a.missing("POINT (the centre)"))?;
+    let axis_end =
+        if it.opts.dime >= 3 { Some(vector(it, a).ok_or_else(|| a.missing("POINT (the axis)"))?) } else { None };
+    Ok(Motion::Rotate { angle_deg, centre, axis_end })
+}
+
+/// PLUS, MOIN and TOUR of several objects (`a b c = a b c PLUS v`, `p q =
+/// TOUR p q angle c`): `first` is the first object, already read; the
+/// POINTs and MAILLAGEs written with it are read too, and the last `tail`
+/// POINTs are the operator's own (the vector; the centre and in 3D the
+/// axis). Returns the objects and those points.
+pub(crate) fn gather(a: &mut Args, first: Value, tail: usize, what: &str) -> Result<(Vec<Value>, Vec<usize>)> {
+    let mut all = vec![first];
+    while let Some(v) = a.opt_with(|v| matches!(v, Value::Point(_) | Value::Mesh(_)).then(|| v.clone())) {
+        all.push(v);
+    }
+    let mut pts = Vec::with_capacity(tail);
+    while pts.len() < tail && all.len() > 1 {
+        match all.last() {
+            Some(Value::Point(p)) => {
+                pts.push(*p);
+                all.pop();
+            }
+            _ => break,
+        }
+    }
+    if pts.len() < tail {
+        return Err(a.missing(what));
+    }
+    pts.reverse();
+    Ok((all, pts))
+}
+
+/// The copies of `objs` moved together; a POINT alone becomes a new point.
+pub(crate) fn copies(it: &mut Interp, a: &Args, objs: &[Value], motion: Motion) -> Result<Vec<Value>> {
+    let mut meshes = Vec::with_capacity(objs.len());
+    for o in objs {
+        meshes.push(geo(o).ok_or_else(|| a.err(format!("cannot move a {}", o.type_name())))?);
+    }
+    let refs: Vec<&Mesh> = meshes.iter().collect();
+    let out = copy_together(&mut it.nodes, &refs, motion, it.opts.dime.max(2))?;
+    Ok(objs
+        .iter()
+        .zip(out)
+        .map(|(o, m)| match o {
+            Value::Point(_) => Value::Point(m.parts[0].conn[0]),
+            _ => Value::Mesh(Rc::new(m)),
+        })
+        .collect())
+}
