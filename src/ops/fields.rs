@@ -446,6 +446,7 @@ fn merge_mchaml(a: &Mchaml, b: &Mchaml) -> Mchaml {
             Some(x) => {
                 x.constants.extend(z.constants.clone());
                 x.vectors.extend(z.vectors.clone());
+                x.laws.extend(z.laws.clone());
             }
             None => out.zones.push(z.clone()),
         }

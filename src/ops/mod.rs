@@ -38,6 +38,8 @@ mod thermo;
 mod transform;
 pub mod unimplemented;
 mod union;
+mod variable;
+mod variable_fields;
 
 pub use args::{ends_window, take_typed, takes_no_argument, Args, FromArg, PointId};
 
@@ -199,6 +201,7 @@ impl Registry {
             evol::OPS,
             curves::OPS,
             tables::OPS,
+            variable::OPS,
         ] {
             for d in table {
                 r.insert(OpSpec::from(d));

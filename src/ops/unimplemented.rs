@@ -84,7 +84,6 @@ pub const MISSING: &[Missing] = &[
     op("REST", "RESTITUER", FILES),
     op("SAUV", "SAUVER", FILES),
     op("TIRE", "TIRER", ""),
-    op("VARI", "VARIABLE", ""),
     op("VIBR", "VIBRATION", STATICS),
 ];
 
