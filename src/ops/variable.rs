@@ -191,14 +191,20 @@ fn water_op(a: &mut Args, name: &str, law: Inputs) -> Result<Vec<Value>> {
         (Input::Field(c1), y) => {
             let (comp, v1) = single(a, name, &c1)?;
             let c2 = match y {
-                Some(Input::Field(c2)) => Some(single(a, name, &c2)?.1.into_iter().collect::<std::collections::HashMap<_, _>>()),
+                Some(Input::Field(c2)) => {
+                    Some(single(a, name, &c2)?.1.into_iter().collect::<std::collections::HashMap<_, _>>())
+                }
                 _ => None,
             };
             let mut out = Vec::with_capacity(v1.len());
             for (n, x) in v1 {
                 let y = match &c2 {
                     Some(m) => Some(*m.get(&n).ok_or_else(|| {
-                        a.err(format!("{}: node {} has a value in the first CHPOINT but not in the second", name, n + 1))
+                        a.err(format!(
+                            "{}: node {} has a value in the first CHPOINT but not in the second",
+                            name,
+                            n + 1
+                        ))
                     })?),
                     None => None,
                 };

@@ -50,10 +50,10 @@ pub(crate) fn no_unevaluated_law(a: &Args, zone: &ModelZone, fields: &[Rc<Mchaml
     Ok(())
 }
 
-/// Where a field puts its values on one part: the zone and the index of
-/// the part's first element in it.
-fn locate<'a>(m: &'a Mchaml, part: &Part) -> Option<(&'a MchamlZone, usize)> {
-    m.zones.iter().find_map(|z| {
+/// Where a field puts values on one part: each zone that holds it, with
+/// the index of the part's first element in that zone.
+fn locate<'a>(m: &'a Mchaml, part: &'a Part) -> impl Iterator<Item = (&'a MchamlZone, usize)> + 'a {
+    m.zones.iter().filter_map(move |z| {
         let mut off = 0;
         for p in &z.mesh.parts {
             if p == part {
@@ -68,10 +68,14 @@ fn locate<'a>(m: &'a Mchaml, part: &Part) -> Option<(&'a MchamlZone, usize)> {
 /// The materials of the elements of one part: `base` with, element by
 /// element, the mean over its points of each property a field gives point
 /// by point (VARI 'NUAG', MANU 'CHML'). One material when none does.
-pub(crate) fn element_materials(a: &Args, base: &Material, part: &Part, fields: &[Rc<Mchaml>]) -> Result<Vec<Material>> {
+pub(crate) fn element_materials(
+    a: &Args,
+    base: &Material,
+    part: &Part,
+    fields: &[Rc<Mchaml>],
+) -> Result<Vec<Material>> {
     let mut mats: Vec<Material> = Vec::new();
-    for f in fields {
-        let Some((z, off)) = locate(f, part) else { continue };
+    for (z, off) in fields.iter().flat_map(|f| locate(f, part)) {
         let props: Vec<(usize, &String)> =
             z.comps.iter().enumerate().filter(|(_, c)| Material::default().set(c, 0.0)).collect();
         if props.is_empty() || z.values.is_empty() {
@@ -174,18 +178,25 @@ impl Source {
                     .iter()
                     .map(|n| c.get(*n, comp).ok_or_else(|| a.err(format!("node {} has no {} value", n + 1, comp))))
                     .collect::<Result<Vec<f64>>>()?;
-                Ok(refs.iter().map(|p| shape::eval(part.ty, *p).n.iter().zip(&vals).map(|(n, v)| n * v).sum()).collect())
+                Ok(refs
+                    .iter()
+                    .map(|p| shape::eval(part.ty, *p).n.iter().zip(&vals).map(|(n, v)| n * v).sum())
+                    .collect())
             }
             Source::Elements(m) => {
-                let (z, off) = locate(m, part).ok_or_else(|| {
-                    a.err(format!("the field of {} has no value on the {} elements of the model", comp, part.ty.name()))
-                })?;
+                let (z, off) = locate(m, part)
+                    .find(|(z, _)| z.constants.contains_key(comp) || z.comps.iter().any(|c| c == comp))
+                    .ok_or_else(|| {
+                        a.err(format!(
+                            "the field has no {} value on the {} elements of the model",
+                            comp,
+                            part.ty.name()
+                        ))
+                    })?;
                 if let Some(v) = z.constants.get(comp) {
                     return Ok(vec![*v; refs.len()]);
                 }
-                let k = z.comps.iter().position(|c| c == comp).ok_or_else(|| {
-                    a.err(format!("the field has no component {} on the {} elements", comp, part.ty.name()))
-                })?;
+                let k = z.comps.iter().position(|c| c == comp).expect("the zone was chosen for this component");
                 let pts = z.values.get(off + e).ok_or_else(|| a.err("the field has fewer elements than the model"))?;
                 let vals: Vec<f64> = pts.iter().map(|p| p[k]).collect();
                 match vals.len() {

@@ -72,7 +72,10 @@ fn within(what: &str, unit: &str, v: f64, lo: f64, hi: f64, range: &str) -> Resu
 /// Numbers in messages: short, and exact enough to find the bad input.
 pub fn fmt_num(v: f64) -> String {
     if v != 0.0 && (v.abs() >= 1e6 || v.abs() < 1e-3) {
-        format!("{:.6e}", v)
+        let s = format!("{:.6e}", v);
+        let (m, e) = s.split_once('e').unwrap_or((&s, "0"));
+        let m = if m.contains('.') { m.trim_end_matches('0').trim_end_matches('.') } else { m };
+        format!("{}e{}", m, e)
     } else {
         format!("{}", (v * 1e6).round() / 1e6)
     }
@@ -301,7 +304,7 @@ pub fn p_steam(rho: f64, t: f64) -> Result<f64> {
     within("density", "kg/m3", rho, f64::MIN_POSITIVE, f64::MAX, "range of steam")?;
     let p_max = if t < T_CRIT { STEAM_OVERPRESSURE * psat_and_slope(t).0 } else { P_MAX };
     let rho_max = steam(p_max, t, OD);
-    if !(rho <= rho_max) {
+    if !rho_max.is_finite() || rho > rho_max {
         return Err(WaterError(format!(
             "steam at {} K is at most {} kg/m3 dense (up to {} Pa), not {} kg/m3: this is liquid water",
             fmt_num(t),
