@@ -84,6 +84,14 @@ fn vari(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             a.word();
             return water_op(a, name, law);
         }
+        if !super::args::keyword_matches(&w, "NUAG") {
+            let names: Vec<&str> = WATER.iter().map(|(n, _)| *n).collect();
+            return Err(a.err(format!(
+                "{} is not a law of VARI: the water laws are {}; 'NUAG' evaluates a material",
+                w,
+                names.join(" ")
+            )));
+        }
     }
     if a.keyword(&["NUAG"]).is_some() {
         return vf::material(it, a);
