@@ -6,7 +6,7 @@
 #   eval/                machine, registry, argument reader
 #   value/               Gibiane objects
 #   syntax/              text to instructions
-#   analysis/ io/ fem/ solve/   below the language
+#   analysis/ io/ fem/ solve/ props/   below the language
 #   error.rs source.rs   the basement, shared by all
 #
 # A folder may import only the folders its line below allows. Imports are
@@ -22,13 +22,14 @@ declare -A ALLOWED=(
   [syntax]=""
   [value]="syntax fem solve"
   [eval]="syntax value fem solve io analysis"
-  [ops]="syntax value eval fem solve io analysis"
+  [ops]="syntax value eval fem solve io analysis props"
   [io]="fem"
   [fem]=""
   [solve]=""
-  [analysis]="fem solve io"
+  [analysis]="fem solve io props"
+  [props]=""
 )
-LAYERS="syntax value eval ops io fem solve analysis"
+LAYERS="syntax value eval ops io fem solve analysis props"
 # The crate root's re-exports, by the layer they come from; `lib` names
 # the embedding API, which no layer may use.
 declare -A ROOT_NAME=(

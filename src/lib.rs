@@ -27,6 +27,7 @@ pub mod eval;
 pub mod fem;
 pub mod io;
 pub mod ops;
+pub mod props;
 pub mod solve;
 pub mod source;
 pub mod syntax;

@@ -391,6 +391,12 @@ pub fn take_typed<T>(st: &mut GroupState, registry: &Registry, conv: impl Fn(&Va
             st.right.remove(i);
             return Some(x);
         }
+        // A quoted operator name that is not the argument sought runs as
+        // that operator where it stands (`P1 'DROI' 1 P2 'DROI' 1 P3`):
+        // the search must not take the arguments that follow it.
+        if matches!(&t.kind, TokKind::Quoted(s) if !s.contains(char::is_whitespace) && registry.find(s).is_some()) {
+            return None;
+        }
     }
     None
 }

@@ -36,6 +36,32 @@ pub struct Material {
 }
 
 impl Material {
+    /// Set the property Cast3M names `name` (YOUN, NU, …); false for a name
+    /// that is not a scalar property of this material.
+    pub fn set(&mut self, name: &str, v: f64) -> bool {
+        let v = Some(v);
+        match name {
+            "YOUN" => self.youn = v,
+            "NU" => self.nu = v,
+            "RHO" => self.rho = v,
+            "ALPH" => self.alph = v,
+            "TREF" => self.tref = v,
+            "SECT" => self.sect = v,
+            "INRY" => self.inry = v,
+            "INRZ" => self.inrz = v,
+            "TORS" => self.tors = v,
+            "SECY" => self.secy = v,
+            "SECZ" => self.secz = v,
+            "EPAI" => self.epai = v,
+            "DIM3" => self.dim3 = v,
+            "DX" => self.dx = v,
+            "DY" => self.dy = v,
+            "DZ" => self.dz = v,
+            _ => return false,
+        }
+        true
+    }
+
     /// A required, strictly positive property.
     pub(crate) fn positive(&self, v: Option<f64>, prop: &'static str, elem: &'static str) -> Result<f64, FemError> {
         let x = v.ok_or(FemError::MissingProperty { prop, elem })?;

@@ -100,6 +100,10 @@ fn other_type(m: &Mesh, want: &[ElemType]) -> Option<ElemType> {
 /// mesh serves 'BLOC' and pictures, not MODE.
 fn impo(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let form = a.keyword(&["MAIL", "BLOC", "MESC", "FAIB", "SYME", "ACTI", "IMPA"]);
+    if form == Some("MAIL") {
+        // 'SYME' asks for the symmetric treatment, which is the default.
+        a.keyword(&["SYME"]);
+    }
     if let Some(k @ ("MESC" | "FAIB" | "SYME" | "ACTI" | "IMPA")) = form {
         return Err(a.err(format!("the option '{}' is not supported", k)));
     }

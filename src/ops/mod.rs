@@ -47,6 +47,8 @@ mod tables;
 mod thermo;
 mod transform;
 mod union;
+mod variable;
+mod variable_fields;
 
 // The machine and the argument reader live in `eval`; the families name
 // them from here, as they always did.
@@ -98,6 +100,7 @@ impl Registry {
             evol::OPS,
             curves::OPS,
             tables::OPS,
+            variable::OPS,
         ] {
             for d in table {
                 r.insert(OpSpec::from(d));

@@ -9,12 +9,12 @@ use crate::fem::element::{self, Formulation, Material, Mode};
 use crate::fem::mesh::{ElemType, Mesh};
 use crate::value::model::{MchamlZone, ModelZone};
 use crate::value::rigidity::{Block, Subtype, Symmetry};
-use crate::value::{Mchaml, Model, Rigidite, Value};
+use crate::value::{Evolution, Mchaml, Model, Rigidite, Value};
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "MODE", signature: "MODE GEO 'MECANIQUE' ('ELASTIQUE' ('ISOTROPE')) (BARR|POUT|TIMO|Q4RI|COQ3|DKT|COQ4|…)", doc: "A model: a mesh tied to a formulation, a behaviour and an element type (COQ3, DKT on TRI3 and COQ4 on QUA4 are thin shells, in TRID).", example: "mo = mode l mecanique elastique pout ;", f: mode },
-    OpDef { name: "MATE", signature: "MATE MMODEL 'YOUN' E 'NU' nu ('RHO' r) ('ALPH' a ('TREF' t)) (SECT INRY INRZ TORS SECY SECZ EPAI DIM3 …)", doc: "Material (and section) data of a model.", example: "ma = mate mo youn 2.e11 nu 0.3 ;", f: mate },
+    OpDef { name: "MATE", signature: "MATE MMODEL 'YOUN' E 'NU' nu ('RHO' r) ('ALPH' a ('TREF' t)) (SECT INRY INRZ TORS SECY SECZ EPAI DIM3 …); a value may be an EVOLUTIO of a parameter", doc: "Material (and section) data of a model. A property given as an EVOLUTIO depends on the parameter its abscissa names (VARI 'NUAG' evaluates it against a field).", example: "ma = mate mo youn 2.e11 nu 0.3 ;", f: mate },
     OpDef { name: "CARA", signature: "CARA MMODEL ('SECT' s) ('INRY' i) ('INRZ' i) ('TORS' j) ('SECY' a) ('SECZ' a) ('EPAI' e) ('DIM3' e) ('VECT' P)", doc: "Geometric characteristics of a model (merge with MATE using ET).", example: "ca = cara mo sect 1. inrz 1. ;", f: cara },
     OpDef { name: "RIGI", signature: "RIGI MMODEL MCHAML (MCHAML) | RIGI ('DEPL') ('ROTA') (comps) VALUE GEO", doc: "Stiffness of a model, or springs to ground.", example: "k = rigi mo ma ;", f: rigi },
     OpDef { name: "APPU", signature: "APPU ('DEPL') ('ROTA') (comps) ('DIRECTION' VEC) VALUE GEO", doc: "Springs to ground of stiffness VALUE on the listed unknowns of every node.", example: "ri = appu 'UX' 10. p1 ;", f: appu },
@@ -99,12 +99,16 @@ fn props(it: &Interp, a: &mut Args, subtype: &str) -> Result<Vec<Value>> {
     let model = a.req::<Rc<Model>>()?;
     let mut consts = std::collections::BTreeMap::new();
     let mut vecs = std::collections::BTreeMap::new();
+    let mut laws = std::collections::BTreeMap::new();
     while let Some(k) = a.keyword(PROPS) {
         if k == "VECT" {
             let p = a.req::<PointId>()?;
             vecs.insert(k.to_string(), it.nodes.get(p.0));
+        } else if let Some(ev) = a.opt_right::<Rc<Evolution>>() {
+            // A property that depends on a parameter: VARI evaluates it.
+            laws.insert(k.to_string(), super::variable::law_of(a, k, &ev)?);
         } else {
-            consts.insert(k.to_string(), a.req_num()?);
+            consts.insert(k.to_string(), a.opt_num().ok_or_else(|| a.missing("FLOTTANT or EVOLUTIO"))?);
         }
     }
     if let Some(w) = a.word_not_operator() {
@@ -118,6 +122,7 @@ fn props(it: &Interp, a: &mut Args, subtype: &str) -> Result<Vec<Value>> {
             element: z.element.clone(),
             constants: consts.clone(),
             vectors: vecs.clone(),
+            laws: laws.clone(),
             ..Default::default()
         })
         .collect();
@@ -138,26 +143,7 @@ pub(crate) fn material_for(zone: &ModelZone, fields: &[Rc<Mchaml>]) -> Material 
     for f in fields {
         for z in f.zones.iter().filter(|z| z.mesh == zone.mesh) {
             for (k, v) in &z.constants {
-                let v = Some(*v);
-                match k.as_str() {
-                    "YOUN" => m.youn = v,
-                    "NU" => m.nu = v,
-                    "RHO" => m.rho = v,
-                    "ALPH" => m.alph = v,
-                    "TREF" => m.tref = v,
-                    "SECT" => m.sect = v,
-                    "INRY" => m.inry = v,
-                    "INRZ" => m.inrz = v,
-                    "TORS" => m.tors = v,
-                    "SECY" => m.secy = v,
-                    "SECZ" => m.secz = v,
-                    "EPAI" => m.epai = v,
-                    "DIM3" => m.dim3 = v,
-                    "DX" => m.dx = v,
-                    "DY" => m.dy = v,
-                    "DZ" => m.dz = v,
-                    _ => {}
-                }
+                m.set(k, *v);
             }
             if let Some(v) = z.vectors.get("VECT") {
                 m.vect = Some(*v);
@@ -216,8 +202,10 @@ fn rigi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         let form = formulation(zone);
         let mode = zone_mode(zone)?;
         let mat = material_for(zone, &fields);
+        super::variable::no_unevaluated_law(a, zone, &fields)?;
         for part in &zone.mesh.parts {
-            rig.blocks.push(stiffness_block(it, form, mode, part, &mat).map_err(|e| {
+            let mats = super::variable::element_materials(a, &mat, part, &fields)?;
+            rig.blocks.push(stiffness_block(it, form, mode, part, &mats).map_err(|e| {
                 let hint = if e.message.contains("property VECT missing") {
                     Some("in 3D a beam needs its local y axis: CARA mo ... 'VECT' (0. 0. 1.) (any vector not along the beam)")
                 } else if e.message.contains("property SECY missing") || e.message.contains("property SECZ missing") {
@@ -238,13 +226,14 @@ fn rigi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     Ok(vec![Value::Rigi(Rc::new(rig))])
 }
 
-/// Element stiffness on every element of one part, as one block.
+/// Element stiffness on every element of one part, as one block. `mats`
+/// holds one material for the whole part, or one per element.
 pub(crate) fn stiffness_block(
     it: &Interp,
     form: Formulation,
     mode: Mode,
     part: &crate::fem::mesh::Part,
-    mat: &Material,
+    mats: &[Material],
 ) -> Result<Block> {
     let npe = part.ty.nodes();
     let mut block: Option<Block> = None;
@@ -253,6 +242,7 @@ pub(crate) fn stiffness_block(
         for (k, n) in nodes.iter().enumerate() {
             x[k] = it.nodes.get(*n);
         }
+        let mat = if mats.len() == 1 { &mats[0] } else { &mats[e] };
         let em = element::stiffness(form, part.ty, mode, &x, mat)
             .map_err(|err| Error::runtime(format!("element {}: {}", e + 1, fem_err(err).message)))?;
         let b = block.get_or_insert_with(|| Block {

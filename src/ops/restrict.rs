@@ -139,12 +139,14 @@ fn mchaml_to_model(a: &Args, m: &Mchaml, mo: &Model) -> Result<Mchaml> {
                     Some(x) => {
                         x.constants.extend(z.constants.clone());
                         x.vectors.extend(z.vectors.clone());
+                        x.laws.extend(z.laws.clone());
                     }
                     None => out.zones.push(MchamlZone {
                         mesh: mz.mesh.clone(),
                         element: mz.element.clone(),
                         constants: z.constants.clone(),
                         vectors: z.vectors.clone(),
+                        laws: z.laws.clone(),
                         ..Default::default()
                     }),
                 }

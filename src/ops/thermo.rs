@@ -16,12 +16,13 @@ use crate::fem::constitutive;
 use crate::fem::element::{FemError, GaussField};
 use crate::fem::mesh::{ElemType, Mesh};
 use crate::value::model::{MchamlZone, ModelZone};
-use crate::value::{Mchaml, Model, Value};
+use crate::value::{Chpoint, Mchaml, Model, Value};
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "EPTH", signature: "EPTH MMODEL MCHAML CHPOINT_T", doc: "Thermal strains α(T − TREF) at the element points, from a temperature CHPOINT (component T) and the material's ALPH (TREF 0 by default). EPZZ = αΔT in the plane modes; bars and beams: EPSS of the element's mean temperature.", example: "ept = epth mo ma t ;", f: epth },
     OpDef { name: "ELAS", signature: "ELAS MMODEL MCHAML MCHAML_STRAIN", doc: "Hooke's law on a strain field: the stresses (SMXX …, or EFFX … for bars and beams) of strains such as those of EPSI or EPTH.", example: "sth = elas mo ma (epth mo ma t) ;", f: elas },
+    OpDef { name: "THET", signature: "THET MMODEL MCHAML CHPOINT_T", doc: "Stresses of the thermal strains of a temperature CHPOINT (component T): ELAS mo ma (EPTH mo ma t) in one step.", example: "sth = thet mo ma t ;", f: thet },
     OpDef { name: "ENER", signature: "ENER (MMODEL) MCHAML_STRESS MCHAML_STRAIN", doc: "Strain energy density ½ σ:ε (component ENER; per unit length for bars and beams); INTG of it is the strain energy.", example: "w = intg mo (ener mo sig eps) ;", f: ener },
     OpDef { name: "INVA", signature: "INVA MMODEL MCHAML_STRESS", doc: "Stress invariants of massive elements: I1 = tr σ, J2 = ½ s:s and J3 = det s of the deviator s (σzz, σθθ included); √(3 J2) is the von Mises stress.", example: "inv = inva mo sig ;", f: inva },
     OpDef { name: "TRES", signature: "TRES MMODEL MCHAML_STRESS (MCHAML)", doc: "Tresca equivalent stress σ1 − σ3 (component TRES) of massive elements, the out-of-plane stress included.", example: "tr = tres mo sig ;", f: tres },
@@ -41,6 +42,18 @@ fn put(z: &mut MchamlZone, g: GaussField) {
 fn epth(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let (model, fields, t) = model_args(a)?;
     let t = t.ok_or_else(|| a.missing("CHPOINT (the temperatures, component T)"))?;
+    Ok(vec![Value::Mchaml(Rc::new(thermal_strains(a, &model, &fields, &t)?))])
+}
+
+/// THET: the stresses of the thermal strains, ELAS of EPTH in one step.
+fn thet(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let (model, fields, t) = model_args(a)?;
+    let t = t.ok_or_else(|| a.missing("CHPOINT (the temperatures, component T)"))?;
+    let eps = thermal_strains(a, &model, &fields, &t)?;
+    Ok(vec![Value::Mchaml(Rc::new(hooke_field(a, &model, &fields, &eps)?))])
+}
+
+fn thermal_strains(a: &Args, model: &Model, fields: &[Rc<Mchaml>], t: &Chpoint) -> Result<Mchaml> {
     let have = t.components();
     if !have.iter().any(|c| c == "T") {
         return Err(a.err(format!(
@@ -51,7 +64,7 @@ fn epth(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let mut out = Mchaml { subtype: "DEFORMATIONS".into(), zones: vec![] };
     for zone in &model.zones {
         let (form, mode) = (formulation(zone), zone_mode(zone)?);
-        let mat = material_for(zone, &fields);
+        let mat = material_for(zone, fields);
         for part in &zone.mesh.parts {
             let mut z =
                 MchamlZone { mesh: Mesh::single(part.clone()), element: zone.element.clone(), ..Default::default() };
@@ -67,7 +80,7 @@ fn epth(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             out.zones.push(z);
         }
     }
-    Ok(vec![Value::Mchaml(Rc::new(out))])
+    Ok(out)
 }
 
 /// Whether a field holds point values (a strain or stress field) rather
@@ -145,11 +158,14 @@ fn elas(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             comps_of(&eps)
         )));
     }
-    let out = map_zones(a, &model, &eps, "CONTRAINTES", |mz, ty, g| {
+    Ok(vec![Value::Mchaml(Rc::new(hooke_field(a, &model, &fields, &eps)?))])
+}
+
+fn hooke_field(a: &Args, model: &Model, fields: &[Rc<Mchaml>], eps: &Mchaml) -> Result<Mchaml> {
+    map_zones(a, model, eps, "CONTRAINTES", |mz, ty, g| {
         let mode = zone_mode(mz).map_err(|_| FemError::Unsupported { form: "ELAS", elem: ty.name(), mode: "?" })?;
-        constitutive::hooke(formulation(mz), ty, mode, &material_for(mz, &fields), g)
-    })?;
-    Ok(vec![Value::Mchaml(Rc::new(out))])
+        constitutive::hooke(formulation(mz), ty, mode, &material_for(mz, fields), g)
+    })
 }
 
 fn ener(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {

@@ -58,6 +58,9 @@ pub fn describe(v: &Value) -> String {
                 for (k, v) in &z.vectors {
                     s.push_str(&format!(" {} ({} {} {})", k, fmt_float(v[0]), fmt_float(v[1]), fmt_float(v[2])));
                 }
+                for (k, c) in &z.laws {
+                    s.push_str(&format!(" {} EVOLUTIO of {} ({} points)", k, c.x_name, c.x.len()));
+                }
                 let mut lines = 0;
                 if !z.comps.is_empty() {
                     s.push_str(&format!(

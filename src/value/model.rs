@@ -39,6 +39,10 @@ pub struct MchamlZone {
     pub constants: BTreeMap<String, f64>,
     /// Vector data (CARA 'VECT').
     pub vectors: BTreeMap<String, [f64; 3]>,
+    /// Properties that depend on a parameter (MATE … 'YOUN' EVOLUTIO):
+    /// name -> curve whose abscissa names the parameter. VARI evaluates
+    /// them against a field of that parameter.
+    pub laws: BTreeMap<String, Curve>,
     /// Point values: component names, then values[element][point][component].
     pub comps: Vec<String>,
     pub values: Vec<Vec<Vec<f64>>>,
@@ -112,6 +116,7 @@ impl Mchaml {
                 Some(x) => {
                     x.constants.extend(z.constants.clone());
                     x.vectors.extend(z.vectors.clone());
+                    x.laws.extend(z.laws.clone());
                 }
                 None => out.zones.push(z.clone()),
             }
