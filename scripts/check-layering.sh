@@ -7,7 +7,7 @@ fail=0
 if grep -rn --include=*.rs -E '\bpest(_derive)?::' src | grep -v '^src/syntax/' ; then
   echo "pest is used outside src/syntax"; fail=1
 fi
-for layer in src/solve src/fem; do
+for layer in src/solve src/fem src/analysis; do
   if grep -rn --include=*.rs -E 'crate::(syntax|eval|ops|value)\b' "$layer"; then
     echo "$layer imports the language side"; fail=1
   fi

@@ -22,6 +22,7 @@
 //! assert_eq!(out.text(), "x = 9\n");
 //! ```
 
+pub mod analysis;
 pub mod error;
 pub mod eval;
 pub mod fem;

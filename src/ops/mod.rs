@@ -6,6 +6,7 @@ mod args;
 mod arith;
 mod assemble;
 mod bc;
+mod chargement;
 mod colour;
 mod contact;
 mod curves;
@@ -183,6 +184,7 @@ impl Registry {
             colour::OPS,
             bc::OPS,
             contact::OPS,
+            chargement::OPS,
             model::OPS,
             manu::OPS,
             fields::OPS,

@@ -54,7 +54,6 @@ pub const MISSING: &[Missing] = &[
     op("AMOR", "AMORTISSEMENT", STATICS),
     op("CALP", "CALP", "SIGM gives the beam resultants EFFX … MOMZ"),
     op("CAPA", "CAPACITE", STATICS),
-    op("CHAR", "CHARGEMENT", STATICS),
     op("COND", "CONDUCTIVITE", STATICS),
     op("DOMA", "DOMAINE", ""),
     proc("DYNA", "DYNAMIC", STATICS),
@@ -83,7 +82,6 @@ pub const MISSING: &[Missing] = &[
     op("REGL", "REGLER", MESHING),
     op("REST", "RESTITUER", FILES),
     op("SAUV", "SAUVER", FILES),
-    op("TIRE", "TIRER", ""),
     op("VARI", "VARIABLE", ""),
     op("VIBR", "VIBRATION", STATICS),
 ];

@@ -1,0 +1,9 @@
+//! Incremental analysis below the language: the step driver PASAPAS runs.
+//!
+//! Like `fem` and `solve`, this layer never sees Gibiane objects
+//! (`scripts/check-layering.sh`): it works on numbered unknowns, condition
+//! rows, element sets and load vectors. The operator side translates the
+//! PASAPAS table into these and the results back into fields.
+//!
+//! * [`history`]: time functions and loads as functions of time.
+pub mod history;
