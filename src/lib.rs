@@ -86,9 +86,16 @@ pub struct InterpreterBuilder {
     files: FilePolicy,
     registry: Registry,
     step_limit: Option<u64>,
+    progress: Option<Box<dyn FnMut(usize, usize)>>,
 }
 
 impl InterpreterBuilder {
+    /// Told of the progress of long operators (PASAPAS calls it after each
+    /// step with the steps done and planned): a host's progress bar.
+    pub fn progress(mut self, f: impl FnMut(usize, usize) + 'static) -> Self {
+        self.progress = Some(Box::new(f));
+        self
+    }
     /// Where MESS, LIST, … write. Default: discarded.
     pub fn output(mut self, w: impl Write + 'static) -> Self {
         self.out = Box::new(w);
@@ -114,6 +121,7 @@ impl InterpreterBuilder {
         let mut interp = Interp::new(Rc::new(self.registry), self.out);
         interp.files = self.files;
         interp.step_limit = self.step_limit;
+        interp.progress = self.progress;
         Interpreter { interp }
     }
 }
@@ -141,6 +149,7 @@ impl Interpreter {
             files: FilePolicy::Nothing,
             registry: Registry::standard(),
             step_limit: None,
+            progress: None,
         }
     }
 

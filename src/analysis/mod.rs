@@ -6,4 +6,11 @@
 //! PASAPAS table into these and the results back into fields.
 //!
 //! * [`history`]: time functions and loads as functions of time.
+//! * [`body`]: element sets on numbered unknowns; strains, stresses and
+//!   thermal forces through the [`material`] seam (elasticity today).
+//! * [`stepper`]: the operator factorised once, one load per step, the
+//!   contact statuses carried from step to step.
 pub mod history;
+pub mod body;
+pub mod material;
+pub mod stepper;

@@ -50,6 +50,10 @@ pub struct Interp {
     pub proc_sources: rustc_hash::FxHashMap<usize, Rc<Source>>,
     /// The last direct factorisations, reused by RESO (see ops::solver_cache).
     pub factors: crate::ops::solver_cache::FactorPool,
+    /// Told of the progress of long operators (PASAPAS: steps done, steps
+    /// planned), so a host can show a progress bar; the library itself
+    /// prints nothing for it.
+    pub progress: Option<Box<dyn FnMut(usize, usize)>>,
 }
 
 /// How deep blocks, parenthesised groups and procedure calls may run
@@ -112,6 +116,7 @@ impl Interp {
             depth: 0,
             proc_sources: Default::default(),
             factors: Default::default(),
+            progress: None,
         }
     }
 

@@ -26,6 +26,9 @@ mod math;
 mod mesh;
 mod model;
 mod objects;
+mod pasapas;
+mod pasapas_fields;
+mod pasapas_model;
 mod pointwise;
 mod post;
 mod principal;
@@ -201,6 +204,7 @@ impl Registry {
             evol::OPS,
             curves::OPS,
             tables::OPS,
+            pasapas::OPS,
         ] {
             for d in table {
                 r.insert(OpSpec::from(d));

@@ -73,7 +73,6 @@ pub const MISSING: &[Missing] = &[
     op("MREM", "MREM", "RESO and UNIL re-insert eliminated unknowns themselves"),
     op("NUAG", "NUAGE", ""),
     op("OBTE", "OBTENIR", FILES),
-    proc("PASA", "PASAPAS", STATICS),
     op("PAVE", "PAVER", MESHING),
     op("PJBA", "PJBA", STATICS),
     op("PROI", "PROI", ""),

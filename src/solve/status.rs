@@ -226,19 +226,31 @@ pub(crate) fn iterate(
             // must hold at the end. Cast3M drops such rows too (MAFREIN).
             // Rows that depend on other unilateral rows are reported
             // (§7.5: do not guess which of them should act).
+            // A row that depends on other unilateral rows starts inactive
+            // (deferred, not dropped): its value follows from theirs while
+            // they act, and it is checked like any inactive row. The
+            // symmetric node-to-segment contact of two meshes makes such
+            // rows (impo.notice's default), and Cast3M solves them.
+            let mut deferred = 0;
             loop {
                 let dep = b.dependent(&cold);
                 let k = match dep[..] {
-                    [k] if cold[k] => k,
+                    [k] if cold[k] => {
+                        groups.fixed_inactive[k] = true;
+                        dropped.push((k, dep));
+                        k
+                    }
+                    [.., k] if cold[k] => {
+                        deferred += 1;
+                        k
+                    }
                     _ => return Err(SolveError::DependentConditions { conditions: dep }),
                 };
-                groups.fixed_inactive[k] = true;
                 cold[k] = false;
-                dropped.push((k, dep));
                 if b.set_status(&cold).is_ok() {
                     break;
                 }
-                if dropped.len() == m {
+                if dropped.len() + deferred >= m {
                     return Err(SolveError::DependentConditions { conditions: (0..m).collect() });
                 }
             }
@@ -414,8 +426,19 @@ fn activate_all(
         activate(ctx, &mut trial, i, &mut released);
         activated.push(i);
     }
-    if b.set_status(&trial).is_err() {
-        return Err(SolveError::DependentConditions { conditions: b.dependent(&trial) });
+    // An activation that makes the active rows dependent is skipped: that
+    // row's value follows from the others once they act, and it is tested
+    // again at the next solve. Only when every activation is of that kind
+    // are the rows reported (§7.5: a violated row that depends on active
+    // ones cannot be met without releasing one of them).
+    while let Err(k) = b.set_status(&trial) {
+        match activated.iter().position(|&i| i == k) {
+            Some(pos) if activated.len() > 1 => {
+                activated.remove(pos);
+                trial[k] = false;
+            }
+            _ => return Err(SolveError::DependentConditions { conditions: b.dependent(&trial) }),
+        }
     }
     *status = trial;
     activated.sort_unstable();

@@ -1,0 +1,205 @@
+//! The step solver of an elastic structure: one operator, many loads.
+//!
+//! The operator (stiffness and conditions) is the same at every step of an
+//! elastic analysis, so it is factorised once:
+//! * without unilateral conditions, one sparse LDLᵀ ([`Factorization`]);
+//!   a step is one forward and backward solve;
+//! * with unilateral conditions (contact, `BLOQ`/`RELA` 'MINI'/'MAXI'),
+//!   the interrupted factorisation of the condensed method
+//!   ([`Condenser`]): the condensed operator on the conditions is built
+//!   once; a step is a partial forward substitution of its load, the status
+//!   iteration of [`status::run`] warm-started from the previous step's
+//!   statuses, and a partial back substitution.
+//!
+//! Problems the condensed method does not take (a non-symmetric operator,
+//! conditions on a large share of the unknowns) go through the solver's
+//! general entry point with its cache ([`solve_unilateral`]).
+
+use std::time::Instant;
+
+use crate::solve::condense::Condenser;
+use crate::solve::direct::{DirectOptions, Factorization};
+use crate::solve::status::{self, IterRecord, Rule, StatusOptions};
+use crate::solve::unilateral::{solve_unilateral, UnilCache, UnilOptions};
+use crate::solve::{Load, Problem, Solution, SolveError};
+
+/// Above this many unilateral conditions on a large share of the unknowns
+/// the dense condensed operator is not the right tool: the general entry
+/// point picks the sparse status iteration (CREUX) there.
+const DENSE_MAX: usize = 2000;
+
+enum Core {
+    Direct(Box<Factorization>),
+    Condensed(Box<Condenser>),
+    General(Box<UnilCache>),
+}
+
+/// What one step did.
+#[derive(Debug, Clone)]
+pub struct StepOutcome {
+    pub solution: Solution,
+    /// Solves of the status iteration (1 without unilateral conditions).
+    pub iterations: usize,
+    /// Unilateral conditions whose status differs from the previous step.
+    pub changed: usize,
+    /// Active unilateral conditions at the end of the step.
+    pub active: usize,
+    /// Seconds per phase of the step.
+    pub phases: Vec<(&'static str, f64)>,
+}
+
+/// The operator of a run, factorised, and the statuses of the last step.
+pub struct Stepper {
+    problem: Problem,
+    core: Core,
+    /// Global numbers of the unilateral conditions.
+    uni: Vec<usize>,
+    /// Final statuses of the last step (unilateral order): the warm start.
+    status: Option<Vec<bool>>,
+    /// Seconds spent building the operator.
+    pub setup_seconds: f64,
+}
+
+impl Stepper {
+    /// Factorises (or condenses) the operator of `problem` once.
+    pub fn new(problem: Problem) -> Result<Self, SolveError> {
+        let t = Instant::now();
+        let uni: Vec<usize> =
+            (0..problem.conditions.len()).filter(|&i| problem.conditions[i].kind.is_unilateral()).collect();
+        let (n, m) = (problem.k.n, uni.len());
+        let core = if m == 0 {
+            let opts = DirectOptions { check_residual: true, stab: false };
+            Core::Direct(Box::new(Factorization::new(&problem, &opts)?))
+        } else if problem.k.symmetric && !(m > DENSE_MAX && 4 * m > n) && 8.0 * (m * m) as f64 <= 1.0e9 {
+            Core::Condensed(Box::new(Condenser::new(&problem)?))
+        } else {
+            Core::General(Box::default())
+        };
+        Ok(Stepper { problem, core, uni, status: None, setup_seconds: t.elapsed().as_secs_f64() })
+    }
+
+    pub fn problem(&self) -> &Problem {
+        &self.problem
+    }
+
+    /// Statuses of the unilateral conditions after the last step (true =
+    /// active), in the order of the conditions.
+    pub fn statuses(&self) -> Option<&[bool]> {
+        self.status.as_deref()
+    }
+
+    /// Starts the next step from these statuses (a continued run).
+    pub fn set_statuses(&mut self, s: Vec<bool>) {
+        if s.len() == self.uni.len() {
+            self.status = Some(s);
+        }
+    }
+
+    /// Solves one step. `on_iter` sees each status solve.
+    pub fn solve(&mut self, load: &Load, on_iter: &mut dyn FnMut(&IterRecord)) -> Result<StepOutcome, SolveError> {
+        let mut phases = Vec::new();
+        let (solution, iterations, active) = match &mut self.core {
+            Core::Direct(f) => {
+                let t = Instant::now();
+                let s = f.solve_checked(std::slice::from_ref(load), true)?.pop().expect("one load, one solution");
+                phases.push(("solve", t.elapsed().as_secs_f64()));
+                (s, 1, Vec::new())
+            }
+            Core::Condensed(c) => {
+                let t0 = Instant::now();
+                let condensed = c.condensed(load)?;
+                phases.push(("condense", t0.elapsed().as_secs_f64()));
+                let t1 = Instant::now();
+                let opts = StatusOptions { max_iter: None, start: self.status.clone(), rule: Rule::Damped, keep_last: false };
+                let uni = c.unilateral().to_vec();
+                let mut global = |r: &IterRecord| {
+                    let g = |v: &[usize]| v.iter().map(|&q| uni[q]).collect();
+                    on_iter(&IterRecord { activated: g(&r.activated), released: g(&r.released), ..r.clone() })
+                };
+                let res = status::run(&condensed, &opts, &mut global).map_err(|e| to_global(e, c.unilateral()))?;
+                phases.push(("status", t1.elapsed().as_secs_f64()));
+                let t2 = Instant::now();
+                let s = c.recover(load, &res.x, &res.active)?;
+                phases.push(("recover", t2.elapsed().as_secs_f64()));
+                (s, res.records.len(), res.active)
+            }
+            Core::General(cache) => {
+                let opts = UnilOptions { initial: self.status.clone(), ..Default::default() };
+                let (s, rep) = solve_unilateral(&self.problem, load, &opts, cache, on_iter)?;
+                phases.extend(rep.phase_seconds.iter().copied());
+                let active: Vec<bool> = self.uni.iter().map(|&i| s.active[i]).collect();
+                (s, rep.iterations, active)
+            }
+        };
+        let changed = match &self.status {
+            Some(prev) => prev.iter().zip(&active).filter(|(a, b)| a != b).count(),
+            None => active.iter().filter(|a| **a).count(),
+        };
+        let n_active = active.iter().filter(|a| **a).count();
+        if !self.uni.is_empty() {
+            self.status = Some(active);
+        }
+        Ok(StepOutcome { solution, iterations, changed, active: n_active, phases })
+    }
+}
+
+/// Positions among the unilateral conditions → condition numbers.
+fn to_global(e: SolveError, uni: &[usize]) -> SolveError {
+    let g = |v: Vec<usize>| v.into_iter().map(|q| uni.get(q).copied().unwrap_or(q)).collect();
+    match e {
+        SolveError::DependentConditions { conditions } => SolveError::DependentConditions { conditions: g(conditions) },
+        SolveError::Conflicting { conditions } => SolveError::Conflicting { conditions: g(conditions) },
+        SolveError::Infeasible { conditions, work } => SolveError::Infeasible { conditions: g(conditions), work },
+        SolveError::NoConvergence { iterations, conditions } => {
+            SolveError::NoConvergence { iterations, conditions: g(conditions) }
+        }
+        e => e,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::solve::{Condition, Kind, Matrix};
+
+    /// A spring of stiffness 10 on one unknown, pushed against a stop at
+    /// −0.1 (MINI) by a force that grows, then reverses: the stop acts only
+    /// once the free displacement passes it, and the warm start carries the
+    /// status from step to step.
+    #[test]
+    fn spring_against_a_stop_opens_and_closes() {
+        let p = Problem {
+            k: Matrix { n: 1, entries: vec![(0, 0, 10.0)], symmetric: true },
+            conditions: vec![Condition { terms: vec![(0, 1.0)], kind: Kind::Mini, dual: None }],
+        };
+        let mut s = Stepper::new(p).unwrap();
+        let mut last = 0;
+        for (f, u, active) in [(-0.5, -0.05, 0), (-2.0, -0.1, 1), (-3.0, -0.1, 1), (1.0, 0.1, 0)] {
+            let out = s.solve(&Load { f: vec![f], d: vec![-0.1] }, &mut |_| {}).unwrap();
+            assert!((out.solution.u[0] - u).abs() < 1e-14, "f = {f}: u = {}", out.solution.u[0]);
+            assert_eq!(out.active, active);
+            assert_eq!(out.changed, (active != last) as usize);
+            if active == 1 {
+                // K u + Cᵀλ = f: λ = f + 1, and the reaction −λ pushes up.
+                assert!((out.solution.lambda[0] - (f + 1.0)).abs() < 1e-12, "{}", out.solution.lambda[0]);
+            }
+            last = active;
+        }
+    }
+
+    /// Without unilateral conditions a step is one solve of the factor.
+    #[test]
+    fn bilateral_steps_reuse_the_factor() {
+        let p = Problem {
+            k: Matrix { n: 2, entries: vec![(0, 0, 2.0), (0, 1, -1.0), (1, 0, -1.0), (1, 1, 1.0)], symmetric: true },
+            conditions: vec![Condition { terms: vec![(0, 1.0)], kind: Kind::Equal, dual: None }],
+        };
+        let mut s = Stepper::new(p).unwrap();
+        for t in [1.0, 2.0] {
+            let out = s.solve(&Load { f: vec![0.0, t], d: vec![0.0] }, &mut |_| {}).unwrap();
+            // u0 = 0 imposed; u1 = t / k = t.
+            assert!((out.solution.u[1] - t).abs() < 1e-13);
+            assert_eq!(out.iterations, 1);
+        }
+    }
+}
