@@ -14,8 +14,6 @@
 //! the bars being means over the overlap (exact with the mean of the
 //! interpolation weights at its two ends, the weights being linear).
 
-use super::contact::Pair;
-
 /// A pair of facing segments and its condition.
 #[derive(Debug, Clone, PartialEq)]
 pub struct WeakPair {
@@ -112,17 +110,6 @@ pub fn pairs(x: &[[f64; 3]], first: &[[usize; 2]], second: &[[usize; 2]]) -> Vec
         }
     }
     out
-}
-
-/// A strong (node-to-facet) pair that repeats another with the roles
-/// swapped: the slave node sits on a vertex of the other's facet and the
-/// other's slave on a vertex of this one's (matching meshes, the symmetric
-/// form). The rows are the same condition; one is enough.
-pub fn mirrors(p: &Pair, q: &Pair) -> bool {
-    let vertex = |pair: &Pair, node: usize| {
-        pair.facet.iter().zip(&pair.weights).any(|(&f, &w)| f == node && w > 1.0 - 1e-8)
-    };
-    vertex(p, q.slave) && vertex(q, p.slave)
 }
 
 #[cfg(test)]

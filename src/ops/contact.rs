@@ -175,9 +175,7 @@ fn one_way(it: &Interp, a: &Args, slave: &Mesh, master: &Mesh, ft: ElemType, nam
 /// `IMPO 'MAIL' ('SYME'|'MESC'|'FAIB') M1 M2`: the contact elements, as
 /// Cast3M makes them (impo.notice):
 /// * by default (and 'SYME') both ways: the nodes of M2 against the facets
-///   of M1, then the nodes of M1 against the facets of M2; a pair that
-///   repeats one of the first way with the roles swapped (matching meshes,
-///   node facing node) is kept once;
+///   of M1, then the nodes of M1 against the facets of M2;
 /// * 'MESC' one way: the nodes of M2 against the facets of M1;
 /// * 'FAIB' (2D): segment against segment, one condition per pair of
 ///   facing segments, imposed on average over their overlap
@@ -216,12 +214,11 @@ fn impo_mail(it: &mut Interp, a: &mut Args, ft: ElemType) -> Result<Vec<Value>> 
     }
     let mut pairs = one_way(it, a, &m2, &m1, ft, ["the second mesh", "the first mesh"])?;
     if way == "SYME" {
-        let first = pairs.len();
-        for q in one_way(it, a, &m1, &m2, ft, ["the first mesh", "the second mesh"])? {
-            if !pairs[..first].iter().any(|p| crate::fem::contact_weak::mirrors(p, &q)) {
-                pairs.push(q);
-            }
-        }
+        // With matching meshes a node facing a node gives the same
+        // condition both ways: both elements are kept (as Cast3M keeps
+        // them; the facets of both sides then carry the contact pressure)
+        // and the solver keeps one of each pair of equal rows active.
+        pairs.extend(one_way(it, a, &m1, &m2, ft, ["the first mesh", "the second mesh"])?);
     }
     if pairs.is_empty() {
         it.println("IMPO: warning: no node of either side projects onto the other: no contact element");

@@ -117,7 +117,13 @@ fn opti(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 };
                 it.opts.mode = mode;
             }
-            "ECHO" => it.opts.echo = a.req::<i64>()?,
+            "ECHO" => {
+                it.opts.echo = a.req::<i64>()?;
+                // Remembered as given: messages that Cast3M prints by default
+                // (PASAPAS's step lines) stay silent only under an explicit
+                // OPTI ECHO 0, gibi's default being 0 too.
+                it.opts.other.insert("ECHO".into(), it.opts.echo.to_string());
+            }
             "DENS" => it.opts.dens = a.req_num()?,
             "ERRE" => it.opts.erre = a.word().ok_or_else(|| a.missing("NORMAL, FATAL, CONTROLE or IGNORE"))?,
             "RESO" => it.opts.reso = a.word().ok_or_else(|| a.missing("DIRECTE or ITERATIVE"))?.to_uppercase(),

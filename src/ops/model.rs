@@ -149,7 +149,7 @@ fn contact_model(it: &mut Interp, a: &mut Args, geo: &Mesh) -> Result<Vec<Value>
 
 const PROPS: &[&str] = &[
     "YOUN", "NU", "RHO", "ALPH", "TREF", "SECT", "INRY", "INRZ", "TORS", "SECY", "SECZ", "EPAI", "DIM3", "DX", "DY",
-    "DZ", "VECT", "JEU", "ADHE",
+    "DZ", "VECT", "JEU", "ADHE", "SIGY", "H",
 ];
 
 fn props(it: &Interp, a: &mut Args, subtype: &str) -> Result<Vec<Value>> {

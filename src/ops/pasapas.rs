@@ -254,7 +254,16 @@ fn pasapas(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let contact = !s.contact.is_empty();
     let mut run = Run { tab: tab.clone(), s, stepper, loads, charge: input.charge.clone(), has_t, contact };
     initial_state(it, a, &mut run, &input, temp0)?;
+    // A continued run starts its statuses where the last one ended.
+    let w = sub(&tab, "WTABLE");
+    if let Some(Value::ListEnti(l)) = w.borrow().get(&key("STATUTS_UNILATERAUX")) {
+        run.stepper.set_statuses(l.iter().map(|&x| x != 0).collect());
+    }
     steps(it, a, &mut run, &input, temp0)?;
+    if let Some(st) = run.stepper.statuses() {
+        let l: Vec<i64> = st.iter().map(|&x| x as i64).collect();
+        w.borrow_mut().set(key("STATUTS_UNILATERAUX"), Value::ListEnti(Rc::new(l)));
+    }
     set(&tab, "SOUSTYPE", Value::mot("PASAPAS"));
     Ok(vec![Value::Table(tab)])
 }
@@ -379,7 +388,8 @@ fn steps(it: &mut Interp, a: &Args, run: &mut Run, input: &Input, temp0: f64) ->
         }
         ipas += 1;
         let (load, heat) = step_load(it, a, run, ti)?;
-        let verbose = it.opts.echo >= 1;
+        // Cast3M prints its step lines unless told OPTI ECHO 0.
+        let verbose = it.opts.echo >= 1 || !it.opts.other.contains_key("ECHO");
         let out = run.stepper.solve(&load, &mut |_| {}).map_err(|e| {
             a.err(format!("step {} (time {}): {}", ipas, fmt_float(ti), explain(it, &run.s, e, Some(&load))))
         })?;

@@ -76,8 +76,7 @@ pub(crate) fn build(
     }
     let mut contact = Vec::new();
     let mut contact_limits = Vec::new();
-    let mut measure: HashMap<usize, f64> = HashMap::default();
-    let mut seen_facets: Vec<Vec<usize>> = Vec::new();
+    let mut facets_seen: HashMap<Vec<usize>, Vec<usize>> = HashMap::default();
     for zone in &cont {
         let jeu = zone_values(a, zone, cara, "JEU")?;
         let names = dofs::translations(it);
@@ -104,14 +103,7 @@ pub(crate) fn build(
                 for f in facets {
                     let mut key = f.clone();
                     key.sort_unstable();
-                    if seen_facets.contains(&key) {
-                        continue;
-                    }
-                    let share = facet_measure(&it.nodes.coords, &f) / f.len() as f64;
-                    for n in &f {
-                        *measure.entry(*n).or_insert(0.0) += share;
-                    }
-                    seen_facets.push(key);
+                    facets_seen.entry(key).or_insert(f);
                 }
                 let m = mult_node(it, anchor);
                 let terms = terms.into_iter().map(|(n, k, c)| (n, names[k].to_string(), c)).collect();
@@ -121,6 +113,7 @@ pub(crate) fn build(
             }
         }
     }
+    let measure = contact_measures(&it.nodes.coords, &parts, &rig, &contact, facets_seen.values());
     let asm = Assembled::new(&rig);
     let mut index = HashMap::default();
     for (i, (n, c)) in asm.dofs.iter().enumerate() {
@@ -147,7 +140,86 @@ pub(crate) fn build(
     Ok(Structure { rig, asm, body, parts, contact, contact_limits, contact_measure: measure, index })
 }
 
-/// Length of a segment, area of a triangle.
+/// Each contact node's share of the contact surface, for pressures: the
+/// consistent lumping ∫Nᵢ of the faces of the bodies' skin whose nodes
+/// all take part in contact (what the forces of a uniform pressure
+/// follow); for nodes on no such face (a rigid support meshed as a line,
+/// a beam), an equal share of the contact facets that hold them.
+fn contact_measures<'a>(
+    x: &[[f64; 3]],
+    parts: &[(ModelZone, Part)],
+    rig: &Rigidite,
+    contact: &[usize],
+    facets: impl Iterator<Item = &'a Vec<usize>>,
+) -> HashMap<usize, f64> {
+    let mut nodes: std::collections::HashSet<usize> = Default::default();
+    for &k in contact {
+        let c = &rig.conds[k];
+        let big = c.terms.iter().fold(0.0_f64, |m, t| m.max(t.2.abs()));
+        nodes.extend(c.terms.iter().filter(|t| t.2.abs() > 1e-9 * big).map(|t| t.0));
+    }
+    let mut out: HashMap<usize, f64> = HashMap::default();
+    // Skin faces: used by one element only.
+    let mut count: HashMap<Vec<usize>, (ElemType, Vec<usize>, usize)> = HashMap::default();
+    for (_, p) in parts {
+        for e in p.elems() {
+            for (fty, loc) in crate::fem::shape::faces(p.ty) {
+                if fty.dim() + 1 != p.ty.dim() {
+                    continue;
+                }
+                let f: Vec<usize> = loc.iter().map(|&k| e[k]).collect();
+                let mut key = f.clone();
+                key.sort_unstable();
+                count.entry(key).or_insert((fty, f, 0)).2 += 1;
+            }
+        }
+    }
+    for (fty, f, n) in count.values() {
+        if *n != 1 || !f.iter().all(|v| nodes.contains(v)) {
+            continue;
+        }
+        let xf: Vec<[f64; 3]> = f.iter().map(|&v| x[v]).collect();
+        for (v, w) in f.iter().zip(lumped(*fty, &xf)) {
+            *out.entry(*v).or_insert(0.0) += w;
+        }
+    }
+    let mut fallback: HashMap<usize, f64> = HashMap::default();
+    for f in facets {
+        let share = facet_measure(x, f) / f.len() as f64;
+        for v in f {
+            *fallback.entry(*v).or_insert(0.0) += share;
+        }
+    }
+    for (v, m) in fallback {
+        out.entry(v).or_insert(m);
+    }
+    out
+}
+
+/// ∫Nᵢ over a face (SEG2, TRI3, QUA4; other faces share their measure
+/// equally).
+fn lumped(ty: ElemType, x: &[[f64; 3]]) -> Vec<f64> {
+    match ty {
+        ElemType::Qua4 => {
+            let g = 1.0 / 3f64.sqrt();
+            let mut w = vec![0.0; 4];
+            for (a, b) in [(-g, -g), (g, -g), (g, g), (-g, g)] {
+                let p = [a, b, 0.0];
+                let j = crate::fem::integrate::jacobian(ty, x, p);
+                for (wi, ni) in w.iter_mut().zip(crate::fem::shape::eval(ty, p).n) {
+                    *wi += ni * j;
+                }
+            }
+            w
+        }
+        _ => {
+            let idx: Vec<usize> = (0..x.len()).collect();
+            vec![facet_measure(x, &idx) / x.len() as f64; x.len()]
+        }
+    }
+}
+
+/// Length of a segment, area of a triangle (of the nodes `f` of `x`).
 fn facet_measure(x: &[[f64; 3]], f: &[usize]) -> f64 {
     use crate::fem::vec3::{cross, dot, sub};
     match f {
@@ -159,6 +231,7 @@ fn facet_measure(x: &[[f64; 3]], f: &[usize]) -> f64 {
             let n = cross(sub(x[*b], x[*a]), sub(x[*c], x[*a]));
             0.5 * dot(n, n).sqrt()
         }
+        [a, b, c, d] => facet_measure(x, &[*a, *b, *c]) + facet_measure(x, &[*a, *c, *d]),
         _ => 0.0,
     }
 }
