@@ -40,8 +40,6 @@ pub(crate) struct Structure {
     pub contact: Vec<usize>,
     pub contact_limits: Vec<(usize, f64)>,
     pub contact_measure: HashMap<usize, f64>,
-    /// The unknown of (node, component).
-    pub index: HashMap<(usize, String), usize>,
 }
 
 /// The zones of a model: mechanical ones, and contact ones.
@@ -137,7 +135,7 @@ pub(crate) fn build(
             material: Box::new(Elastic { props: material_for(zone, cara) }),
         });
     }
-    Ok(Structure { rig, asm, body, parts, contact, contact_limits, contact_measure: measure, index })
+    Ok(Structure { rig, asm, body, parts, contact, contact_limits, contact_measure: measure })
 }
 
 /// Each contact node's share of the contact surface, for pressures: the
