@@ -22,11 +22,13 @@ use std::rc::Rc;
 pub(crate) const OPS: &[OpDef] = &[
     OpDef {
         name: "SORT",
-        signature: "SORT 'VTK' MAILLAGE (CHPOINT|MCHAML ('NAME'))… ('CONTACT' RIGIDITE SOLUTION (LIMITS)) ('TEMPS' t) | SORT 'MAT' RIGIDITE 'file.mtx'",
+        signature: "SORT 'VTK' MAILLAGE (CHPOINT|MCHAML ('NAME'))… ('CONTACT' RIGIDITE SOLUTION (LIMITS)) ('TEMPS' t) | SORT 'VTK' TABLE_PASAPAS (MAILLAGE) | SORT 'MAT' RIGIDITE 'file.mtx'",
         doc: "Write files for other tools. 'VTK': a ParaView .vtu named by OPTI SORT (default gibi.vtu) with \
               nodal fields (UX UY UZ → one 3-component vector, also in 2D) and element fields (MCHAML, averaged \
               per element); with 'TEMPS' t each call writes name_NNNN.vtu and rewrites name.pvd with every time \
-              so far. A field is named by the word after it, else by its variable name. 'MAT': the assembled \
+              so far. A field is named by the word after it, else by its variable name. A PASAPAS table gives \
+              name.pvd with every saved step (DEPL, SIGMA, EPSI, contact_status, contact_pressure) on the mesh of \
+              its model (or the mesh given). 'MAT': the assembled \
               matrix in MatrixMarket format plus file.mtx.dofs (row node component); conditions are extra LX \
               rows with a single multiplier each.",
         example: "opti sort 'beam' ; sort 'VTK' s u 'DEPL' sig 'SIGMA' 'TEMPS' 1. ;",
@@ -71,12 +73,12 @@ pub(crate) const OPS: &[OpDef] = &[
     },
 ];
 
-fn io_err(e: io::IoError) -> Error {
+pub(super) fn io_err(e: io::IoError) -> Error {
     Error::io(e.0)
 }
 
 /// The base name set by OPTI SORT, without a known extension.
-fn sort_base(it: &Interp) -> Option<String> {
+pub(super) fn sort_base(it: &Interp) -> Option<String> {
     let s = it.opts.other.get("SORT")?.trim();
     if s.is_empty() {
         return None;
@@ -87,7 +89,7 @@ fn sort_base(it: &Interp) -> Option<String> {
 }
 
 /// A path the script may write, with its directory created.
-fn out_path(it: &Interp, name: &str) -> Result<PathBuf> {
+pub(super) fn out_path(it: &Interp, name: &str) -> Result<PathBuf> {
     let p = it.files.check(name)?;
     if let Some(dir) = p.parent().filter(|d| !d.as_os_str().is_empty()) {
         std::fs::create_dir_all(dir).map_err(|e| Error::io(format!("cannot create {}: {}", dir.display(), e)))?;
@@ -108,6 +110,9 @@ fn sort(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 type ContactArgs = (Rc<crate::value::Rigidite>, Rc<Chpoint>, Option<Rc<Chpoint>>);
 
 fn sort_vtk(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    if let Some(t) = a.opt::<Rc<RefCell<Table>>>() {
+        return super::export_pasapas::sort_table(it, a, &t);
+    }
     let mut mesh: Option<Rc<Mesh>> = None;
     let mut fields: Vec<(Value, String)> = Vec::new();
     let mut pending: Option<(Value, String)> = None;
@@ -204,7 +209,7 @@ fn sort_vtk(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 /// An element field averaged per element, on the cells of `grid`.
 /// Elements of the field that the exported mesh lacks are dropped; cells
 /// the field does not cover get NaN.
-fn cell_field(grid: &vtk::Grid, m: &Mchaml, name: &str) -> vtk::DataArray {
+pub(super) fn cell_field(grid: &vtk::Grid, m: &Mchaml, name: &str) -> vtk::DataArray {
     let mut comps: Vec<String> = Vec::new();
     for z in &m.zones {
         let names = if z.values.is_empty() { z.constants.keys().cloned().collect() } else { z.comps.clone() };

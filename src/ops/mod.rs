@@ -13,6 +13,7 @@ mod curves;
 mod dofs;
 mod evol;
 mod export;
+mod export_pasapas;
 mod fieldfn;
 mod fields;
 mod format;
