@@ -45,7 +45,9 @@ fn main() {
     let rock: Vec<f64> = (0..n).map(|j| f0 * 1.5 * (2.0 * (j % nx) as f64 / (nx - 1) as f64 - 1.0)).collect();
     let ts: Vec<f64> = (0..=200).map(|i| i as f64 / 200.0).collect();
     let sin: Vec<f64> = ts.iter().map(|t| (std::f64::consts::TAU * t).sin()).collect();
-    history.terms.push(Term { load: Load { f: rock, d: vec![0.0; m] }, time: TimeFunction::new(ts, sin).expect("valid") });
+    history
+        .terms
+        .push(Term { load: Load { f: rock, d: vec![0.0; m] }, time: TimeFunction::new(ts, sin).expect("valid") });
 
     let (f_ref, s_ref) = common::reference_f_s(&p.k, &nodes);
     let t0 = Instant::now();

@@ -56,17 +56,23 @@ fn a_run_fills_the_results_and_reports_progress() {
     let seen = Rc::new(RefCell::new(Vec::new()));
     let s = seen.clone();
     let out = Capture::default();
-    let mut g = Interpreter::builder().output(out.clone()).progress(move |done, total| s.borrow_mut().push((done, total))).build();
+    let mut g = Interpreter::builder()
+        .output(out.clone())
+        .progress(move |done, total| s.borrow_mut().push((done, total)))
+        .build();
     g.run_str("deck", &deck("(mode s mecanique elastique) et (mode mc 'CONTACT')")).unwrap();
     let k = keys(&g);
-    for want in ["TEMPS", "DEPLACEMENTS", "CONTRAINTES", "DEFORMATIONS", "REACTIONS", "STATUTS_CONTACT", "PRESSIONS_CONTACT"] {
+    for want in
+        ["TEMPS", "DEPLACEMENTS", "CONTRAINTES", "DEFORMATIONS", "REACTIONS", "STATUTS_CONTACT", "PRESSIONS_CONTACT"]
+    {
         assert!(k.iter().any(|x| x == want), "{want} missing from {k:?}");
     }
     assert_eq!(*seen.borrow(), vec![(1, 2), (2, 2)]);
     // One line per step, silent under OPTI ECHO 0.
     assert_eq!(out.text().lines().filter(|l| l.starts_with("PASAPAS step")).count(), 2);
     out.clear();
-    g.run_str("again", "opti echo 0 ; t . 'TEMPS_CALCULES' = prog 1.5 2. ; pasapas t ; n = dime t . 'TEMPS' ;").unwrap();
+    g.run_str("again", "opti echo 0 ; t . 'TEMPS_CALCULES' = prog 1.5 2. ; pasapas t ; n = dime t . 'TEMPS' ;")
+        .unwrap();
     assert_eq!(out.text(), "");
     assert_eq!(g.get_f64("n"), Some(5.0));
 }

@@ -75,7 +75,8 @@ impl Body {
             for e in 0..s.n_elem() {
                 let nodes = s.nodes(e);
                 let ue: Vec<f64> = s.elem_dofs(e).iter().map(|d| d.map_or(0.0, |i| u[i])).collect();
-                let dt: Option<Vec<f64>> = heat.map(|h| nodes.iter().map(|&n| h.get(n).copied().unwrap_or(0.0)).collect());
+                let dt: Option<Vec<f64>> =
+                    heat.map(|h| nodes.iter().map(|&n| h.get(n).copied().unwrap_or(0.0)).collect());
                 let (eps, sig) = s
                     .material
                     .respond(s.kind, &self.x(nodes), &ue, dt.as_deref())

@@ -10,7 +10,7 @@
 //!   thermal forces through the [`material`] seam (elasticity today).
 //! * [`stepper`]: the operator factorised once, one load per step, the
 //!   contact statuses carried from step to step.
-pub mod history;
 pub mod body;
+pub mod history;
 pub mod material;
 pub mod stepper;

@@ -110,7 +110,8 @@ impl Stepper {
                 let condensed = c.condensed(load)?;
                 phases.push(("condense", t0.elapsed().as_secs_f64()));
                 let t1 = Instant::now();
-                let opts = StatusOptions { max_iter: None, start: self.status.clone(), rule: Rule::Damped, keep_last: false };
+                let opts =
+                    StatusOptions { max_iter: None, start: self.status.clone(), rule: Rule::Damped, keep_last: false };
                 let uni = c.unilateral().to_vec();
                 let mut global = |r: &IterRecord| {
                     let g = |v: &[usize]| v.iter().map(|&q| uni[q]).collect();

@@ -80,10 +80,9 @@ fn table_steps(a: &Args, times: &Table, fields: &Table) -> Result<Vec<(f64, Valu
     }
     let mut out: Vec<(f64, Value)> = Vec::with_capacity(n);
     for i in 0..n as i64 {
-        let t = times
-            .get(&Key::Int(i))
-            .and_then(Value::as_f64)
-            .ok_or_else(|| a.err(format!("the table of times must be indexed 0 1 2 … with numbers; entry {i} is not")))?;
+        let t = times.get(&Key::Int(i)).and_then(Value::as_f64).ok_or_else(|| {
+            a.err(format!("the table of times must be indexed 0 1 2 … with numbers; entry {i} is not"))
+        })?;
         let f = fields
             .get(&Key::Int(i))
             .filter(|v| matches!(v, Value::Chpo(_) | Value::Mchaml(_)))

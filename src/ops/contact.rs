@@ -200,7 +200,11 @@ fn impo_mail(it: &mut Interp, a: &mut Args, ft: ElemType) -> Result<Vec<Value>> 
         }
         let segs = |m: &Mesh, which: &str| -> Result<Vec<[usize; 2]>> {
             if let Some(t) = other_type(m, &[ElemType::Seg2]) {
-                return Err(a.err(format!("'FAIB': the {} line must be made of SEG2 elements, found {}", which, t.name())));
+                return Err(a.err(format!(
+                    "'FAIB': the {} line must be made of SEG2 elements, found {}",
+                    which,
+                    t.name()
+                )));
             }
             Ok(m.parts.iter().flat_map(|p| p.elems()).map(|e| [e[0], e[1]]).collect())
         };

@@ -26,11 +26,9 @@ pub(super) fn sort_table(it: &mut Interp, a: &mut Args, t: &Rc<RefCell<Table>>) 
         Some(m) => (*m).clone(),
         None => match get("MODELE") {
             // The mechanical zones: contact elements are not cells.
-            Some(Value::Model(m)) => m
-                .zones
-                .iter()
-                .filter(|z| z.formulation != "CONTACT")
-                .fold(Mesh::default(), |acc, z| acc.union(&z.mesh)),
+            Some(Value::Model(m)) => {
+                m.zones.iter().filter(|z| z.formulation != "CONTACT").fold(Mesh::default(), |acc, z| acc.union(&z.mesh))
+            }
             _ => return Err(a.missing("MAILLAGE (the table has no 'MODELE')")),
         },
     };

@@ -412,9 +412,9 @@ pub(crate) fn union(x: &Value, y: &Value, noer: bool) -> Option<std::result::Res
         (Mchaml(a), Mchaml(b)) => Mchaml(Rc::new(merge_mchaml(a, b))),
         // Loads join part by part, in order (several parts may share a name:
         // PASAPAS and TIRE sum them).
-        (Charge(a), Charge(b)) => Charge(Rc::new(crate::value::Chargement {
-            parts: a.parts.iter().chain(&b.parts).cloned().collect(),
-        })),
+        (Charge(a), Charge(b)) => {
+            Charge(Rc::new(crate::value::Chargement { parts: a.parts.iter().chain(&b.parts).cloned().collect() }))
+        }
         _ => return None,
     }))
 }

@@ -126,8 +126,7 @@ fn contact_model(it: &mut Interp, a: &mut Args, geo: &Mesh) -> Result<Vec<Value>
     if behaviour.is_empty() {
         behaviour.push("UNILATERAL".into());
     }
-    let allowed: &[ElemType] =
-        if it.opts.dime == 3 { &[ElemType::Tet4] } else { &[ElemType::Tri3, ElemType::Qua4] };
+    let allowed: &[ElemType] = if it.opts.dime == 3 { &[ElemType::Tet4] } else { &[ElemType::Tri3, ElemType::Qua4] };
     if let Some(p) = geo.parts.iter().find(|p| !allowed.contains(&p.ty)) {
         return Err(a
             .err(format!("a contact model is made on contact elements, not on {} elements", p.ty.name()))

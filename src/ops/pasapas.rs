@@ -116,16 +116,15 @@ fn read_input(a: &Args, t: &Tab) -> Result<Input> {
     };
     for (k, what) in REFUSED {
         if flag(t, k) {
-            return Err(a.err(format!("'{}' asks for {}: gibi's PASAPAS solves small-displacement statics only", k, what)));
+            return Err(
+                a.err(format!("'{}' asks for {}: gibi's PASAPAS solves small-displacement statics only", k, what))
+            );
         }
     }
     let (mech, cont) = pmodel::split(&model);
     for z in &model.zones {
         if z.formulation != "CONTACT" && !z.formulation.starts_with("MECA") {
-            return Err(a.err(format!(
-                "the model has a {} zone: gibi's PASAPAS solves mechanics only",
-                z.formulation
-            )));
+            return Err(a.err(format!("the model has a {} zone: gibi's PASAPAS solves mechanics only", z.formulation)));
         }
     }
     for z in &mech {
@@ -311,7 +310,9 @@ fn initial_state(it: &mut Interp, a: &Args, run: &mut Run, input: &Input, temp0:
         first.set(key("PRESSIONS_CONTACT"), Value::Chpo(Rc::new(pr)));
     }
     if run.has_t {
-        if let Some(Value::Chpo(c)) = run.charge.as_ref().map(|ch| super::chargement::at(it, a, ch, Some("T"), temp0)).transpose()? {
+        if let Some(Value::Chpo(c)) =
+            run.charge.as_ref().map(|ch| super::chargement::at(it, a, ch, Some("T"), temp0)).transpose()?
+        {
             first.set(key("TEMPERATURES"), Value::Chpo(c));
         }
     }
@@ -474,10 +475,13 @@ fn step_load(it: &mut Interp, a: &Args, run: &mut Run, t: f64) -> Result<(Load, 
         let r = hook(it, a, "CHARMECA", &[Value::Table(run.tab.clone()), Value::Float(t)])?;
         if let Some(Value::Table(t2)) = r.first() {
             if t2.borrow().get(&key("ADDI_MATRICE")).is_some() {
-                return Err(a.err("CHARMECA's 'ADDI_MATRICE' (a stiffness that changes with the steps) is not supported"));
+                return Err(
+                    a.err("CHARMECA's 'ADDI_MATRICE' (a stiffness that changes with the steps) is not supported")
+                );
             }
             if let Some(Value::Chpo(f)) = t2.borrow().get(&key("ADDI_SECOND")) {
-                let extra = run.s.asm.load(it, &[f]).map_err(|e| a.err(format!("CHARMECA 'ADDI_SECOND': {}", e.message)))?;
+                let extra =
+                    run.s.asm.load(it, &[f]).map_err(|e| a.err(format!("CHARMECA 'ADDI_SECOND': {}", e.message)))?;
                 for (x, y) in load.f.iter_mut().zip(&extra.f) {
                     *x += y;
                 }
@@ -519,10 +523,7 @@ fn results(it: &mut Interp, a: &Args, run: &Run, t: f64, out: &StepOutcome, heat
 fn progress_line(ipas: usize, t: f64, out: &StepOutcome, unilateral: bool) -> String {
     let mut s = format!("PASAPAS step {:>4} time {}", ipas, fmt_float(t));
     if unilateral {
-        s.push_str(&format!(
-            ": {} status solve(s), {} change(s), {} active",
-            out.iterations, out.changed, out.active
-        ));
+        s.push_str(&format!(": {} status solve(s), {} change(s), {} active", out.iterations, out.changed, out.active));
     }
     s
 }

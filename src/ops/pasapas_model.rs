@@ -63,7 +63,8 @@ pub(crate) fn build(
         let mode = zone_mode(zone).map_err(|e| a.err(e.message))?;
         let mat = material_for(zone, cara);
         for part in &zone.mesh.parts {
-            let b = stiffness_block(it, form, mode, part, &mat).map_err(|e| a.err(format!("stiffness: {}", e.message)))?;
+            let b =
+                stiffness_block(it, form, mode, part, &mat).map_err(|e| a.err(format!("stiffness: {}", e.message)))?;
             rig.blocks.push(b);
             parts.push(((*zone).clone(), part.clone()));
         }
@@ -247,7 +248,9 @@ fn zone_values(a: &Args, zone: &ModelZone, cara: &[Rc<Mchaml>], name: &str) -> R
                 return z
                     .values
                     .iter()
-                    .map(|pts| pts.first().map(|p| p[ci]).ok_or_else(|| a.err(format!("the {} field has no value", name))))
+                    .map(|pts| {
+                        pts.first().map(|p| p[ci]).ok_or_else(|| a.err(format!("the {} field has no value", name)))
+                    })
                     .collect();
             }
         }
@@ -342,7 +345,13 @@ fn weighted(p: &Timing) -> Vec<(TimeFunction, Value)> {
 }
 
 /// The loads of `ch`; `tref` is the reference temperature field, if any.
-pub(crate) fn loads(it: &Interp, a: &Args, s: &Structure, ch: Option<&Chargement>, tref: Option<&Chpoint>) -> Result<Loads> {
+pub(crate) fn loads(
+    it: &Interp,
+    a: &Args,
+    s: &Structure,
+    ch: Option<&Chargement>,
+    tref: Option<&Chpoint>,
+) -> Result<Loads> {
     let (n, m) = (s.asm.problem.k.n, s.asm.problem.conditions.len());
     let mut history = LoadHistory::new(n, m);
     for (k, d) in &s.contact_limits {
@@ -377,7 +386,8 @@ pub(crate) fn loads(it: &Interp, a: &Args, s: &Structure, ch: Option<&Chargement
             };
             match p.name.as_str() {
                 "MECA" | "DIMP" => {
-                    let load = s.asm.load(it, &[&chpo]).map_err(|e| a.err(format!("load '{}': {}", p.name, e.message)))?;
+                    let load =
+                        s.asm.load(it, &[&chpo]).map_err(|e| a.err(format!("load '{}': {}", p.name, e.message)))?;
                     history.terms.push(Term { load, time: f });
                 }
                 "T" => {

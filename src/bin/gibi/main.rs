@@ -50,6 +50,39 @@ fn main() -> ExitCode {
     }
 }
 
+/// The progress of long operators (PASAPAS's steps) as a bar on the
+/// terminal: shown once a run has lasted half a second, cleared at its end.
+fn progress_bar() -> impl FnMut(usize, usize) {
+    let mut bar: Option<indicatif::ProgressBar> = None;
+    let mut start = std::time::Instant::now();
+    move |done, total| {
+        if done <= 1 {
+            start = std::time::Instant::now();
+            if let Some(b) = bar.take() {
+                b.finish_and_clear();
+            }
+        }
+        if bar.is_none() && done < total && start.elapsed().as_secs_f64() > 0.5 {
+            let b = indicatif::ProgressBar::new(total as u64);
+            b.set_style(
+                indicatif::ProgressStyle::with_template("{msg} [{bar:40}] {pos}/{len} steps, {elapsed} (eta {eta})")
+                    .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar())
+                    .progress_chars("=> "),
+            );
+            b.set_message("PASAPAS");
+            bar = Some(b);
+        }
+        if let Some(b) = &bar {
+            b.set_length(total as u64);
+            b.set_position(done as u64);
+            if done >= total {
+                b.finish_and_clear();
+                bar = None;
+            }
+        }
+    }
+}
+
 /// Standard input as deck text (Latin-1 bytes accepted, see `decode`).
 fn read_stdin() -> Result<String, String> {
     let mut b = Vec::new();
@@ -73,7 +106,11 @@ fn os_bytes(s: &OsStr) -> std::borrow::Cow<'_, [u8]> {
 fn run() -> ExitCode {
     let cli = Cli::parse();
     let cwd = std::env::current_dir().unwrap_or_else(|_| ".".into());
-    let mut gibi = Interpreter::builder().output(std::io::stdout()).files(FilePolicy::Under(cwd)).build();
+    let mut builder = Interpreter::builder().output(std::io::stdout()).files(FilePolicy::Under(cwd));
+    if std::io::stderr().is_terminal() {
+        builder = builder.progress(progress_bar());
+    }
+    let mut gibi = builder.build();
 
     if cli.list_operators {
         println!("{}", repl::catalogue_json(gibi.registry()));
