@@ -102,35 +102,55 @@ pub struct Term {
 
 /// `L(t) = base + Σ fₖ(t) Lₖ`: forces on the unknowns and limits of the
 /// conditions (imposed values, gaps) at every time.
+///
+/// A history has an identity ([`LoadHistory::id`]): the step solver keeps
+/// the responses to its loads under it, so a history is built once and not
+/// changed afterwards (new loads, new history).
 #[derive(Debug, Clone)]
 pub struct LoadHistory {
     /// What does not depend on time (the initial gaps of contact).
     pub base: Load,
     pub terms: Vec<Term>,
+    id: u64,
 }
+
+static NEXT_ID: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(1);
 
 impl LoadHistory {
     /// A history with no load: `n` unknowns, `m` conditions.
     pub fn new(n: usize, m: usize) -> Self {
-        LoadHistory { base: Load { f: vec![0.0; n], d: vec![0.0; m] }, terms: Vec::new() }
+        let id = NEXT_ID.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        LoadHistory { base: Load { f: vec![0.0; n], d: vec![0.0; m] }, terms: Vec::new(), id }
+    }
+
+    pub fn id(&self) -> u64 {
+        self.id
+    }
+
+    /// The weight of each term at time `t`.
+    pub fn coefficients(&self, t: f64) -> Result<Vec<f64>, TimeError> {
+        self.terms.iter().map(|term| term.time.at(t)).collect()
+    }
+
+    /// `base + Σ cₖ Lₖ`.
+    pub fn combine(&self, c: &[f64]) -> Load {
+        let mut l = self.base.clone();
+        for (term, &ck) in self.terms.iter().zip(c) {
+            if ck != 0.0 {
+                axpy(&mut l.f, ck, &term.load.f);
+                axpy(&mut l.d, ck, &term.load.d);
+            }
+        }
+        l
     }
 
     /// The load at time `t`.
     pub fn at(&self, t: f64) -> Result<Load, TimeError> {
-        let mut l = self.base.clone();
-        for term in &self.terms {
-            let c = term.time.at(t)?;
-            if c == 0.0 {
-                continue;
-            }
-            axpy(&mut l.f, c, &term.load.f);
-            axpy(&mut l.d, c, &term.load.d);
-        }
-        Ok(l)
+        Ok(self.combine(&self.coefficients(t)?))
     }
 }
 
-fn axpy(y: &mut [f64], a: f64, x: &[f64]) {
+pub(crate) fn axpy(y: &mut [f64], a: f64, x: &[f64]) {
     for (yi, xi) in y.iter_mut().zip(x) {
         *yi += a * xi;
     }

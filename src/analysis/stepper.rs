@@ -17,6 +17,7 @@
 
 use std::time::Instant;
 
+use super::history::{axpy, LoadHistory};
 use crate::solve::condense::Condenser;
 use crate::solve::direct::{DirectOptions, Factorization};
 use crate::solve::status::{self, IterRecord, Rule, StatusOptions};
@@ -58,6 +59,9 @@ pub struct Stepper {
     status: Option<Vec<bool>>,
     /// Seconds spent building the operator.
     pub setup_seconds: f64,
+    /// Without unilateral conditions the response is linear in the load:
+    /// the solutions of a history's base and terms, by history id.
+    basis: Option<(u64, Solution, Vec<Solution>)>,
 }
 
 impl Stepper {
@@ -75,7 +79,7 @@ impl Stepper {
         } else {
             Core::General(Box::default())
         };
-        Ok(Stepper { problem, core, uni, status: None, setup_seconds: t.elapsed().as_secs_f64() })
+        Ok(Stepper { problem, core, uni, status: None, setup_seconds: t.elapsed().as_secs_f64(), basis: None })
     }
 
     pub fn problem(&self) -> &Problem {
@@ -93,6 +97,55 @@ impl Stepper {
         if s.len() == self.uni.len() {
             self.status = Some(s);
         }
+    }
+
+    /// Solves the step of `history` whose term weights are `c` (see
+    /// [`LoadHistory::coefficients`]), plus an `extra` load of that step.
+    ///
+    /// Without unilateral conditions the answer is linear in the load: the
+    /// base and each term are solved once per history, and a step is their
+    /// combination (no solve; the same numbers for the same time whatever
+    /// the steps before, so a continued run repeats a single one exactly).
+    /// With unilateral conditions this is [`Stepper::solve`] of the
+    /// combined load.
+    pub fn solve_history(
+        &mut self,
+        history: &LoadHistory,
+        c: &[f64],
+        extra: Option<&Load>,
+        on_iter: &mut dyn FnMut(&IterRecord),
+    ) -> Result<StepOutcome, SolveError> {
+        let Core::Direct(f) = &self.core else {
+            let mut load = history.combine(c);
+            if let Some(e) = extra {
+                axpy(&mut load.f, 1.0, &e.f);
+                axpy(&mut load.d, 1.0, &e.d);
+            }
+            return self.solve(&load, on_iter);
+        };
+        let t = Instant::now();
+        if self.basis.as_ref().is_none_or(|b| b.0 != history.id()) {
+            let mut loads = vec![history.base.clone()];
+            loads.extend(history.terms.iter().map(|term| term.load.clone()));
+            let mut sols = f.solve_checked(&loads, true)?;
+            let base = sols.remove(0);
+            self.basis = Some((history.id(), base, sols));
+        }
+        let (_, base, terms) = self.basis.as_ref().expect("set above");
+        let mut s = base.clone();
+        for (ts, &ck) in terms.iter().zip(c) {
+            if ck != 0.0 {
+                axpy(&mut s.u, ck, &ts.u);
+                axpy(&mut s.lambda, ck, &ts.lambda);
+            }
+        }
+        if let Some(e) = extra {
+            let x = f.solve_checked(std::slice::from_ref(e), true)?.pop().expect("one load, one solution");
+            axpy(&mut s.u, 1.0, &x.u);
+            axpy(&mut s.lambda, 1.0, &x.lambda);
+        }
+        let phases = vec![("combine", t.elapsed().as_secs_f64())];
+        Ok(StepOutcome { solution: s, iterations: 1, changed: 0, active: 0, phases })
     }
 
     /// Solves one step. `on_iter` sees each status solve.

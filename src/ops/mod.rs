@@ -12,6 +12,7 @@ mod contact;
 mod curves;
 mod dofs;
 mod evol;
+mod evol_temps;
 mod export;
 mod export_pasapas;
 mod fieldfn;

@@ -388,10 +388,11 @@ fn steps(it: &mut Interp, a: &Args, run: &mut Run, input: &Input, temp0: f64) ->
             continue;
         }
         ipas += 1;
-        let (load, heat) = step_load(it, a, run, ti)?;
+        let (coefs, extra, heat) = step_load(it, a, run, ti)?;
         // Cast3M prints its step lines unless told OPTI ECHO 0.
         let verbose = it.opts.echo >= 1 || !it.opts.other.contains_key("ECHO");
-        let out = run.stepper.solve(&load, &mut |_| {}).map_err(|e| {
+        let out = run.stepper.solve_history(&run.loads.history, &coefs, extra.as_ref(), &mut |_| {}).map_err(|e| {
+            let load = run.loads.history.combine(&coefs);
             a.err(format!("step {} (time {}): {}", ipas, fmt_float(ti), explain(it, &run.s, e, Some(&load))))
         })?;
         for (name, secs) in &out.phases {
@@ -441,10 +442,13 @@ fn steps(it: &mut Interp, a: &Args, run: &mut Run, input: &Input, temp0: f64) ->
     Ok(())
 }
 
-/// The load of a step: the CHARGEMENT of WTABLE at `t` (rebuilt if a user
-/// procedure replaced it), plus CHARMECA's 'ADDI_SECOND'; and the
-/// temperature rise by node for the stresses.
-fn step_load(it: &mut Interp, a: &Args, run: &mut Run, t: f64) -> Result<(Load, Option<Vec<f64>>)> {
+/// The load of a step: the weights of the CHARGEMENT's terms at `t` (its
+/// history rebuilt if a user procedure replaced WTABLE's CHARGEMENT),
+/// CHARMECA's 'ADDI_SECOND' as an extra load, and the temperature rise by
+/// node for the stresses.
+type StepLoad = (Vec<f64>, Option<Load>, Option<Vec<f64>>);
+
+fn step_load(it: &mut Interp, a: &Args, run: &mut Run, t: f64) -> Result<StepLoad> {
     let current = match get(&run.tab, "WTABLE").and_then(|w| match w {
         Value::Table(w) => w.borrow().get(&key("CHARGEMENT")).cloned(),
         _ => None,
@@ -469,7 +473,8 @@ fn step_load(it: &mut Interp, a: &Args, run: &mut Run, t: f64) -> Result<(Load, 
         run.loads = pmodel::loads(it, a, &run.s, current.as_deref(), Some(&tref_field))?;
         run.charge = current;
     }
-    let mut load = run.loads.history.at(t).map_err(|e| a.err(format!("CHARGEMENT: {}", e)))?;
+    let coefs = run.loads.history.coefficients(t).map_err(|e| a.err(format!("CHARGEMENT: {}", e)))?;
+    let mut extra = None;
     let heat = run.loads.heat_at(t).map_err(|e| a.err(format!("CHARGEMENT 'T': {}", e)))?;
     if flag(&run.tab, "PROCEDURE_CHARMECA") {
         let r = hook(it, a, "CHARMECA", &[Value::Table(run.tab.clone()), Value::Float(t)])?;
@@ -480,18 +485,12 @@ fn step_load(it: &mut Interp, a: &Args, run: &mut Run, t: f64) -> Result<(Load, 
                 );
             }
             if let Some(Value::Chpo(f)) = t2.borrow().get(&key("ADDI_SECOND")) {
-                let extra =
-                    run.s.asm.load(it, &[f]).map_err(|e| a.err(format!("CHARMECA 'ADDI_SECOND': {}", e.message)))?;
-                for (x, y) in load.f.iter_mut().zip(&extra.f) {
-                    *x += y;
-                }
-                for (x, y) in load.d.iter_mut().zip(&extra.d) {
-                    *x += y;
-                }
+                let l = run.s.asm.load(it, &[f]).map_err(|e| a.err(format!("CHARMECA 'ADDI_SECOND': {}", e.message)))?;
+                extra = Some(l);
             }
         }
     }
-    Ok((load, heat))
+    Ok((coefs, extra, heat))
 }
 
 /// The ESTIMATION table of a step.
