@@ -62,6 +62,9 @@ pub struct Stepper {
     /// Without unilateral conditions the response is linear in the load:
     /// the solutions of a history's base and terms, by history id.
     basis: Option<(u64, Solution, Vec<Solution>)>,
+    /// The tension each unilateral condition holds before it opens
+    /// (unilateral order), if any holds one.
+    adhesion: Option<Vec<f64>>,
 }
 
 impl Stepper {
@@ -79,7 +82,7 @@ impl Stepper {
         } else {
             Core::General(Box::default())
         };
-        Ok(Stepper { problem, core, uni, status: None, setup_seconds: t.elapsed().as_secs_f64(), basis: None })
+        Ok(Stepper { problem, core, uni, status: None, setup_seconds: t.elapsed().as_secs_f64(), basis: None, adhesion: None })
     }
 
     pub fn problem(&self) -> &Problem {
@@ -90,6 +93,24 @@ impl Stepper {
     /// active), in the order of the conditions.
     pub fn statuses(&self) -> Option<&[bool]> {
         self.status.as_deref()
+    }
+
+    /// Adhesion (contact that holds a tension before it opens): the force
+    /// each condition holds while active, by condition number (0 for none).
+    /// The condensed method honours it; the general path (non-symmetric
+    /// operators, conditions on most unknowns) refuses it.
+    pub fn set_adhesion(&mut self, by_condition: &[f64]) -> Result<(), SolveError> {
+        if by_condition.iter().all(|v| *v == 0.0) {
+            self.adhesion = None;
+            return Ok(());
+        }
+        if !matches!(self.core, Core::Condensed(_)) {
+            return Err(SolveError::Other(
+                "adhesion needs the condensed method (a symmetric operator and not too many conditions)".into(),
+            ));
+        }
+        self.adhesion = Some(self.uni.iter().map(|&i| by_condition.get(i).copied().unwrap_or(0.0)).collect());
+        Ok(())
     }
 
     /// Starts the next step from these statuses (a continued run).
@@ -163,8 +184,13 @@ impl Stepper {
                 let condensed = c.condensed(load)?;
                 phases.push(("condense", t0.elapsed().as_secs_f64()));
                 let t1 = Instant::now();
-                let opts =
-                    StatusOptions { max_iter: None, start: self.status.clone(), rule: Rule::Damped, keep_last: false };
+                let opts = StatusOptions {
+                    max_iter: None,
+                    start: self.status.clone(),
+                    rule: Rule::Damped,
+                    keep_last: false,
+                    adhesion: self.adhesion.clone(),
+                };
                 let uni = c.unilateral().to_vec();
                 let mut global = |r: &IterRecord| {
                     let g = |v: &[usize]| v.iter().map(|&q| uni[q]).collect();
@@ -238,6 +264,25 @@ mod tests {
                 assert!((out.solution.lambda[0] - (f + 1.0)).abs() < 1e-12, "{}", out.solution.lambda[0]);
             }
             last = active;
+        }
+    }
+
+    /// A stop (u ≥ 0) that holds a tension of 2 (adhesion) before it lets
+    /// go: a spring pressed on it, then pulled away by f, stays at 0 while
+    /// f ≤ 2; once free it is a plain stop again.
+    #[test]
+    fn adhesion_holds_a_tension_then_lets_go() {
+        let p = Problem {
+            k: Matrix { n: 1, entries: vec![(0, 0, 10.0)], symmetric: true },
+            conditions: vec![Condition { terms: vec![(0, 1.0)], kind: Kind::Mini, dual: None }],
+        };
+        let mut s = Stepper::new(p).unwrap();
+        s.set_adhesion(&[2.0]).unwrap();
+        let steps = [(-1.0, 0.0, 1), (1.0, 0.0, 1), (1.9, 0.0, 1), (2.5, 0.25, 0), (0.5, 0.05, 0), (-1.0, 0.0, 1)];
+        for (f, u, active) in steps {
+            let out = s.solve(&Load { f: vec![f], d: vec![0.0] }, &mut |_| {}).unwrap();
+            assert!((out.solution.u[0] - u).abs() < 1e-14, "f = {f}: u = {}", out.solution.u[0]);
+            assert_eq!(out.active, active, "f = {f}");
         }
     }
 

@@ -247,7 +247,8 @@ fn pasapas(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     };
     let loads = pmodel::loads(it, a, &s, input.charge.as_deref(), tref.as_deref())?;
     let t = std::time::Instant::now();
-    let stepper = Stepper::new(s.asm.problem.clone()).map_err(|e| a.err(explain(it, &s, e, None)))?;
+    let mut stepper = Stepper::new(s.asm.problem.clone()).map_err(|e| a.err(explain(it, &s, e, None)))?;
+    stepper.set_adhesion(&s.adhesion).map_err(|e| a.err(format!("'ADHE': {}", e)))?;
     it.timers.phase("PASAPAS factorisation", t.elapsed().as_secs_f64());
     let has_t = input.charge.as_ref().is_some_and(|c| c.has("T"));
     let contact = !s.contact.is_empty();

@@ -40,6 +40,9 @@ pub(crate) struct Structure {
     pub contact: Vec<usize>,
     pub contact_limits: Vec<(usize, f64)>,
     pub contact_measure: HashMap<usize, f64>,
+    /// The tension each condition holds before it opens (MATE 'ADHE'
+    /// times the condition's share of the contact surface), by condition.
+    pub adhesion: Vec<f64>,
 }
 
 /// The zones of a model: mechanical ones, and contact ones.
@@ -76,19 +79,27 @@ pub(crate) fn build(
     let mut contact = Vec::new();
     let mut contact_limits = Vec::new();
     let mut facets_seen: HashMap<Vec<usize>, Vec<usize>> = HashMap::default();
+    // (condition, ADHE, the node whose share it holds, or the overlap).
+    let mut adhe: Vec<(usize, f64, Option<usize>, f64)> = Vec::new();
     for zone in &cont {
         let jeu = zone_values(a, zone, cara, "JEU")?;
+        let adh = zone_values(a, zone, cara, "ADHE")?;
         let names = dofs::translations(it);
         let mut e_global = 0;
         for part in &zone.mesh.parts {
             for el in part.elems() {
                 let jeu_e = jeu.get(e_global).copied().unwrap_or(0.0);
+                let adh_e = adh.get(e_global).copied().unwrap_or(0.0).max(0.0);
                 e_global += 1;
                 let coords = &it.nodes.coords;
+                let mut overlap = 0.0;
                 let (anchor, terms, gap, facets): (usize, Vec<(usize, usize, f64)>, f64, Vec<Vec<usize>>) =
                     match part.ty {
                         ElemType::Qua4 => match contact_weak::facing(coords, [el[0], el[1], el[2], el[3]]) {
-                            Some(p) => (el[0], p.terms(), p.gap, vec![vec![el[0], el[1]], vec![el[2], el[3]]]),
+                            Some(p) => {
+                                overlap = p.length;
+                                (el[0], p.terms(), p.gap, vec![vec![el[0], el[1]], vec![el[2], el[3]]])
+                            }
                             None => continue,
                         },
                         _ => {
@@ -106,6 +117,10 @@ pub(crate) fn build(
                 }
                 let m = mult_node(it, anchor);
                 let terms = terms.into_iter().map(|(n, k, c)| (n, names[k].to_string(), c)).collect();
+                if adh_e > 0.0 {
+                    let node = (part.ty != ElemType::Qua4).then_some(anchor);
+                    adhe.push((rig.conds.len(), adh_e, node, overlap));
+                }
                 contact.push(rig.conds.len());
                 contact_limits.push((rig.conds.len(), jeu_e - gap));
                 rig.conds.push(CondRow::new(m, terms, Kind::Mini));
@@ -113,6 +128,25 @@ pub(crate) fn build(
         }
     }
     let measure = contact_measures(&it.nodes.coords, &parts, &rig, &contact, facets_seen.values());
+    // A node-to-facet condition holds for the smallest share of the nodes
+    // it ties (a support longer than the body it meets has nodes whose
+    // share reaches past the contact zone); a weak one for its overlap.
+    let mut adhesion = vec![0.0; rig.conds.len()];
+    for (k, v, node, overlap) in adhe {
+        let share = match node {
+            None => overlap,
+            Some(_) => {
+                let c = &rig.conds[k];
+                let big = c.terms.iter().fold(0.0_f64, |m, t| m.max(t.2.abs()));
+                c.terms
+                    .iter()
+                    .filter(|t| t.2.abs() > 1e-9 * big)
+                    .filter_map(|t| measure.get(&t.0).copied())
+                    .fold(f64::INFINITY, f64::min)
+            }
+        };
+        adhesion[k] = if share.is_finite() { v * share } else { 0.0 };
+    }
     let asm = Assembled::new(&rig);
     let mut index = HashMap::default();
     for (i, (n, c)) in asm.dofs.iter().enumerate() {
@@ -136,7 +170,7 @@ pub(crate) fn build(
             material: Box::new(Elastic { props: material_for(zone, cara) }),
         });
     }
-    Ok(Structure { rig, asm, body, parts, contact, contact_limits, contact_measure: measure })
+    Ok(Structure { rig, asm, body, parts, contact, contact_limits, contact_measure: measure, adhesion })
 }
 
 /// Each contact node's share of the contact surface, for pressures: the

@@ -57,6 +57,10 @@ pub struct StatusOptions {
     /// record then has the mode [`UNCONVERGED`], with the conditions that
     /// still wanted to change as activated / released.
     pub keep_last: bool,
+    /// Adhesion: the tension each condition holds while active before it
+    /// is released, in the units of its physical multiplier (a force);
+    /// none by default. Honoured by [`run`] (the condensed operator).
+    pub adhesion: Option<Vec<f64>>,
 }
 
 /// Mode of the last record of an iteration that stopped unconverged
@@ -160,6 +164,24 @@ pub fn run(
     on_iter: &mut dyn FnMut(&IterRecord),
 ) -> Result<StatusResult, SolveError> {
     let mut op = TOperator::new(c)?;
+    // The adhesion in the units of x (physical λ = 2σx).
+    let scaled;
+    let opts = match &opts.adhesion {
+        Some(a) if a.len() != c.sigma.len() => {
+            return Err(SolveError::Other(format!("{} adhesion values for {} conditions", a.len(), c.sigma.len())))
+        }
+        Some(a) if a.iter().any(|v| !(v.is_finite() && *v >= 0.0)) => {
+            return Err(SolveError::Other("adhesion must be finite and non-negative".into()))
+        }
+        Some(a) => {
+            scaled = StatusOptions {
+                adhesion: Some(a.iter().zip(&c.sigma).map(|(v, s)| v / (2.0 * s)).collect()),
+                ..opts.clone()
+            };
+            &scaled
+        }
+        None => opts,
+    };
     let (x, active, records) = iterate(&mut op, &c.sense, &c.rows, &c.d, opts, on_iter)?;
     Ok(StatusResult { x, active, records })
 }
@@ -266,7 +288,13 @@ pub(crate) fn iterate(
     let mut last_set = Vec::new();
     for it in 1..=maxit {
         let x = b.solve()?;
-        let v: Vec<f64> = (0..m).map(|i| sense[i] * x[i]).collect();
+        // s_i x_i: a penetration for an inactive condition, a tension for
+        // an active one, beyond its adhesion if it has some.
+        let held = |i: usize| match &opts.adhesion {
+            Some(a) if status[i] => a[i],
+            _ => 0.0,
+        };
+        let v: Vec<f64> = (0..m).map(|i| sense[i] * x[i] - held(i)).collect();
         let worst = |act: bool| {
             (0..m).filter(|&i| status[i] == act && !groups.fixed_inactive[i]).fold(0.0_f64, |a, i| a.max(v[i]))
         };

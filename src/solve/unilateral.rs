@@ -140,7 +140,8 @@ pub fn solve_unilateral(
         Rule::Auto => Rule::Damped,
         r => r,
     };
-    let sopts = status::StatusOptions { max_iter: opts.max_iter, start, rule, keep_last: opts.keep_last };
+    let sopts =
+        status::StatusOptions { max_iter: opts.max_iter, start, rule, keep_last: opts.keep_last, adhesion: None };
     let global = |v: &[usize]| v.iter().map(|&q| uni[q]).collect::<Vec<_>>();
     let mut records = Vec::new();
     let mut forward = |r: &IterRecord| {
