@@ -26,7 +26,7 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "VALE",
-        signature: "VALE ('PREC'|'DIME'|'MODE'|'ELEM'|'DENS'|'ECHO'|'RESO')",
+        signature: "VALE ('PREC'|'DIME'|'MODE'|'ELEM'|'DENS'|'ECHO'|'RESO'|'EPSI')",
         doc: "The value of an option (PREC: machine precision).",
         example: "tol = (vale prec) ** 0.5 ;",
         f: vale,
@@ -148,6 +148,10 @@ fn opti(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 fn vale(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    if let Some(k) = a.keyword(&["EPSI"]) {
+        // The strain measure of OPTI EPSI; gibi computes small strains.
+        return Ok(vec![Value::mot(it.opts.other.get(k).map_or("LINEAIRE", |s| s.as_str()))]);
+    }
     let k = a.req_keyword(&["PREC", "DIME", "MODE", "ELEM", "DENS", "ECHO", "RESO", "ERRE"])?;
     Ok(vec![match k {
         "PREC" => Value::Float(f64::EPSILON),

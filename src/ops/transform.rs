@@ -35,8 +35,8 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "ORIE",
-        signature: "ORIE MAILLAGE",
-        doc: "The mesh with one orientation: lines head to tail, plane surfaces counter-clockwise, surfaces in space consistent across edges, volumes positive (each connected piece follows its first element).",
+        signature: "ORIE MAILLAGE (('DIRECTION') VECTOR | 'POINT' POINT)",
+        doc: "The mesh with one orientation: lines head to tail, plane surfaces counter-clockwise, surfaces in space consistent across edges, volumes positive (each connected piece follows its first element). In 3D, surface elements can be turned so that their normal has a positive component along a vector, or points to the side of a point.",
         example: "l2 = orie l ;",
         f: orie,
     },
@@ -130,8 +130,56 @@ fn bary(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 
 fn orie(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let m = a.req::<Rc<Mesh>>()?;
-    if let Some(k) = a.keyword(&["POIN", "VECT"]) {
-        return Err(a.err(format!("ORIE '{}' (a chosen side for the normals) is not implemented in gibi", k)));
+    let towards_point = match a.keyword(&["POIN", "DIRE", "VECT"]) {
+        Some("POIN") => Some(true),
+        Some(_) => Some(false),
+        None => None,
+    };
+    let target = match towards_point {
+        Some(_) => Some(a.req::<super::PointId>()?),
+        None => a.opt::<super::PointId>(),
+    };
+    let Some(p) = target else {
+        return Ok(mesh_val(mg::orie(&it.nodes, &m, it.opts.dime.max(1))?));
+    };
+    let q = it.nodes.get(p.0);
+    Ok(mesh_val(orient_surface(it, a, &m, q, towards_point == Some(true))?))
+}
+
+/// Surface elements in 3D turned so that their normal has a positive
+/// component along `q` (a vector), or, with `point`, points to the side of
+/// the point `q` (orie.notice). Reversing keeps the first node and runs
+/// the others backwards (corners and mid-side nodes alike).
+fn orient_surface(it: &Interp, a: &Args, m: &Mesh, q: [f64; 3], point: bool) -> Result<Mesh> {
+    use crate::fem::mesh::ElemType;
+    use crate::fem::vec3::{cross, dot, sub};
+    let mut out = m.clone();
+    for part in &mut out.parts {
+        let corners: &[usize] = match part.ty {
+            ElemType::Tri3 => &[0, 1, 2],
+            ElemType::Tri6 => &[0, 2, 4],
+            ElemType::Qua4 => &[0, 1, 2, 3],
+            ElemType::Qua8 => &[0, 2, 4, 6],
+            t => return Err(a.err(format!("a direction orients surface elements, not {}", t.name()))),
+        };
+        let npe = part.ty.nodes();
+        for e in part.conn.chunks_mut(npe) {
+            let x: Vec<[f64; 3]> = corners.iter().map(|&k| it.nodes.get(e[k])).collect();
+            let n = match x.len() {
+                3 => cross(sub(x[1], x[0]), sub(x[2], x[0])),
+                _ => cross(sub(x[2], x[0]), sub(x[3], x[1])),
+            };
+            let dir = if point {
+                let c = x.iter().fold([0.0; 3], |s, p| [s[0] + p[0], s[1] + p[1], s[2] + p[2]]);
+                let k = x.len() as f64;
+                sub(q, [c[0] / k, c[1] / k, c[2] / k])
+            } else {
+                q
+            };
+            if dot(n, dir) < 0.0 {
+                e[1..].reverse();
+            }
+        }
     }
-    Ok(mesh_val(mg::orie(&it.nodes, &m, it.opts.dime.max(1))?))
+    Ok(out)
 }
