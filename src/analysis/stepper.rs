@@ -82,7 +82,15 @@ impl Stepper {
         } else {
             Core::General(Box::default())
         };
-        Ok(Stepper { problem, core, uni, status: None, setup_seconds: t.elapsed().as_secs_f64(), basis: None, adhesion: None })
+        Ok(Stepper {
+            problem,
+            core,
+            uni,
+            status: None,
+            setup_seconds: t.elapsed().as_secs_f64(),
+            basis: None,
+            adhesion: None,
+        })
     }
 
     pub fn problem(&self) -> &Problem {

@@ -57,9 +57,10 @@ pub(super) fn evol_temp(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     if let Some(keep) = a.opt::<Rc<Vec<i64>>>() {
         let all = std::mem::take(&mut series);
         for k in keep.iter() {
-            let s = usize::try_from(*k - 1).ok().and_then(|i| all.get(i)).ok_or_else(|| {
-                a.err(format!("step {} does not exist ({} saved)", k, all.len()))
-            })?;
+            let s = usize::try_from(*k - 1)
+                .ok()
+                .and_then(|i| all.get(i))
+                .ok_or_else(|| a.err(format!("step {} does not exist ({} saved)", k, all.len())))?;
             series.push(s.clone());
         }
     }
@@ -96,11 +97,7 @@ pub(super) fn evol_temp(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         curves.push(Curve { legend: String::new(), x_name: "TEMPS".into(), y_name: comps[0].clone(), x, y });
         return Ok(vec![Value::Evol(Rc::new(Evolution { curves }))]);
     }
-    let nodes: Vec<usize> = if let Some(p) = a.opt::<PointId>() {
-        vec![p.0]
-    } else {
-        a.req::<Rc<Mesh>>()?.node_list()
-    };
+    let nodes: Vec<usize> = if let Some(p) = a.opt::<PointId>() { vec![p.0] } else { a.req::<Rc<Mesh>>()?.node_list() };
     for n in &nodes {
         for c in &comps {
             let mut y = Vec::with_capacity(series.len());

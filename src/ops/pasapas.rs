@@ -486,7 +486,8 @@ fn step_load(it: &mut Interp, a: &Args, run: &mut Run, t: f64) -> Result<StepLoa
                 );
             }
             if let Some(Value::Chpo(f)) = t2.borrow().get(&key("ADDI_SECOND")) {
-                let l = run.s.asm.load(it, &[f]).map_err(|e| a.err(format!("CHARMECA 'ADDI_SECOND': {}", e.message)))?;
+                let l =
+                    run.s.asm.load(it, &[f]).map_err(|e| a.err(format!("CHARMECA 'ADDI_SECOND': {}", e.message)))?;
                 extra = Some(l);
             }
         }

@@ -45,6 +45,11 @@ pub(crate) struct Structure {
     pub adhesion: Vec<f64>,
 }
 
+/// What a contact element gives: the node its multiplier sits on, the
+/// condition's terms (node, translation, coefficient), its initial gap and
+/// the facets it holds.
+type ElementRow = (usize, Vec<(usize, usize, f64)>, f64, Vec<Vec<usize>>);
+
 /// The zones of a model: mechanical ones, and contact ones.
 pub(crate) fn split(model: &Model) -> (Vec<&ModelZone>, Vec<&ModelZone>) {
     let (c, m): (Vec<&ModelZone>, Vec<&ModelZone>) = model.zones.iter().partition(|z| z.formulation == "CONTACT");
@@ -93,23 +98,22 @@ pub(crate) fn build(
                 e_global += 1;
                 let coords = &it.nodes.coords;
                 let mut overlap = 0.0;
-                let (anchor, terms, gap, facets): (usize, Vec<(usize, usize, f64)>, f64, Vec<Vec<usize>>) =
-                    match part.ty {
-                        ElemType::Qua4 => match contact_weak::facing(coords, [el[0], el[1], el[2], el[3]]) {
-                            Some(p) => {
-                                overlap = p.length;
-                                (el[0], p.terms(), p.gap, vec![vec![el[0], el[1]], vec![el[2], el[3]]])
-                            }
-                            None => continue,
-                        },
-                        _ => {
-                            let p = project(coords, el[0], &el[1..], false).map_err(|_| {
-                                a.err(format!("contact element {}: its facet has no length or area", e_global))
-                            })?;
-                            let ndim = el.len() - 1;
-                            (el[0], p.terms(ndim), p.gap, vec![el[1..].to_vec()])
+                let (anchor, terms, gap, facets): ElementRow = match part.ty {
+                    ElemType::Qua4 => match contact_weak::facing(coords, [el[0], el[1], el[2], el[3]]) {
+                        Some(p) => {
+                            overlap = p.length;
+                            (el[0], p.terms(), p.gap, vec![vec![el[0], el[1]], vec![el[2], el[3]]])
                         }
-                    };
+                        None => continue,
+                    },
+                    _ => {
+                        let p = project(coords, el[0], &el[1..], false).map_err(|_| {
+                            a.err(format!("contact element {}: its facet has no length or area", e_global))
+                        })?;
+                        let ndim = el.len() - 1;
+                        (el[0], p.terms(ndim), p.gap, vec![el[1..].to_vec()])
+                    }
+                };
                 for f in facets {
                     let mut key = f.clone();
                     key.sort_unstable();
