@@ -18,9 +18,83 @@ pub struct ElementSet {
     /// condition reached it (its displacement is then 0).
     pub dofs: Vec<Option<usize>>,
     pub material: Box<dyn Material>,
+    /// For a linear material, each element's strains and stresses as
+    /// matrices on its displacements, built at the first use: a step then
+    /// costs two small products per element, not the element routines.
+    linear: std::cell::OnceCell<Option<Vec<LinearElem>>>,
 }
 
+/// The strains and stresses of one element as linear maps of its dofs
+/// (row-major, one row per point and component).
+#[derive(Debug)]
+struct LinearElem {
+    eps_comps: Vec<&'static str>,
+    sig_comps: Vec<&'static str>,
+    npts: usize,
+    eps: Vec<f64>,
+    sig: Vec<f64>,
+}
+
+/// Above this many stored coefficients the maps are not kept (memory):
+/// the element routines run at each step instead.
+const LINEAR_MAX: usize = 20_000_000;
+
 impl ElementSet {
+    pub fn new(kind: ElemKind, conn: Vec<usize>, dofs: Vec<Option<usize>>, material: Box<dyn Material>) -> Self {
+        ElementSet { kind, conn, dofs, material, linear: Default::default() }
+    }
+
+    /// The linear maps of every element, built from the element routines
+    /// applied to unit displacements (None when the material is not linear
+    /// or the maps would be too big).
+    fn linear(&self, x: &dyn Fn(&[usize]) -> Vec<[f64; 3]>) -> Result<Option<&Vec<LinearElem>>, (usize, FemError)> {
+        if let Some(l) = self.linear.get() {
+            return Ok(l.as_ref());
+        }
+        let ne = self.n_elem();
+        let nd = self.dofs.len() / ne.max(1);
+        let mut built = None;
+        if self.material.is_linear() && ne > 0 {
+            let mut out = Vec::with_capacity(ne);
+            let mut total = 0usize;
+            for e in 0..ne {
+                let xe = x(self.nodes(e));
+                let mut unit = vec![0.0; nd];
+                let mut cols: Vec<(GaussField, GaussField)> = Vec::with_capacity(nd);
+                for j in 0..nd {
+                    unit[j] = 1.0;
+                    cols.push(self.material.respond(self.kind, &xe, &unit, None).map_err(|err| (e, err))?);
+                    unit[j] = 0.0;
+                }
+                let (e0, s0) = &cols[0];
+                let npts = e0.values.len();
+                let (ne_c, ns_c) = (e0.comps.len(), s0.comps.len());
+                let mut eps = vec![0.0; npts * ne_c * nd];
+                let mut sig = vec![0.0; npts * ns_c * nd];
+                for (j, (ej, sj)) in cols.iter().enumerate() {
+                    for p in 0..npts {
+                        for c in 0..ne_c {
+                            eps[(p * ne_c + c) * nd + j] = ej.values[p][c];
+                        }
+                        for c in 0..ns_c {
+                            sig[(p * ns_c + c) * nd + j] = sj.values[p][c];
+                        }
+                    }
+                }
+                total += eps.len() + sig.len();
+                if total > LINEAR_MAX {
+                    out.clear();
+                    break;
+                }
+                out.push(LinearElem { eps_comps: e0.comps.clone(), sig_comps: s0.comps.clone(), npts, eps, sig });
+            }
+            if out.len() == ne {
+                built = Some(out);
+            }
+        }
+        let _ = self.linear.set(built);
+        Ok(self.linear.get().and_then(|l| l.as_ref()))
+    }
     pub fn n_elem(&self) -> usize {
         self.conn.len() / self.kind.ty.nodes().max(1)
     }
@@ -40,6 +114,20 @@ pub struct BodyError {
     pub set: usize,
     pub elem: usize,
     pub error: FemError,
+}
+
+/// `m · u` laid out as a field of `npts` points over `comps`.
+fn apply(m: &[f64], comps: &[&'static str], npts: usize, u: &[f64]) -> GaussField {
+    let nd = u.len();
+    let nc = comps.len();
+    let values = (0..npts)
+        .map(|p| {
+            (0..nc)
+                .map(|c| m[(p * nc + c) * nd..(p * nc + c + 1) * nd].iter().zip(u).map(|(a, b)| a * b).sum())
+                .collect()
+        })
+        .collect();
+    GaussField { comps: comps.to_vec(), values }
 }
 
 /// The strains and stresses of one set, element by element.
@@ -72,6 +160,19 @@ impl Body {
         let mut out = Vec::with_capacity(self.sets.len());
         for (si, s) in self.sets.iter().enumerate() {
             let mut f = SetFields::default();
+            let linear = match heat {
+                None => s.linear(&|n| self.x(n)).map_err(|(elem, error)| BodyError { set: si, elem, error })?,
+                Some(_) => None,
+            };
+            if let Some(ops) = linear {
+                for (e, op) in ops.iter().enumerate() {
+                    let ue: Vec<f64> = s.elem_dofs(e).iter().map(|d| d.map_or(0.0, |i| u[i])).collect();
+                    f.strains.push(apply(&op.eps, &op.eps_comps, op.npts, &ue));
+                    f.stresses.push(apply(&op.sig, &op.sig_comps, op.npts, &ue));
+                }
+                out.push(f);
+                continue;
+            }
             for e in 0..s.n_elem() {
                 let nodes = s.nodes(e);
                 let ue: Vec<f64> = s.elem_dofs(e).iter().map(|d| d.map_or(0.0, |i| u[i])).collect();

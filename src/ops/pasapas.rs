@@ -296,12 +296,12 @@ fn initial_state(it: &mut Interp, a: &Args, run: &mut Run, input: &Input, temp0:
     let s = &run.s;
     let n = s.asm.problem.k.n;
     let zero = vec![0.0; n];
-    let f0 = s.body.fields(&zero, None).map_err(|e| a.err(pmodel::body_error(s, &e)))?;
+    let mut f0 = s.body.fields(&zero, None).map_err(|e| a.err(pmodel::body_error(s, &e)))?;
     let mut first = Table::new();
     first.set(key("TEMPS"), Value::Float(temp0));
     first.set(key("DEPLACEMENTS"), Value::Chpo(Rc::new(fields::displacements(s, &zero))));
-    first.set(key("CONTRAINTES"), Value::Mchaml(Rc::new(fields::element_field(s, &f0, true))));
-    first.set(key("DEFORMATIONS"), Value::Mchaml(Rc::new(fields::element_field(s, &f0, false))));
+    first.set(key("CONTRAINTES"), Value::Mchaml(Rc::new(fields::element_field(s, &mut f0, true))));
+    first.set(key("DEFORMATIONS"), Value::Mchaml(Rc::new(fields::element_field(s, &mut f0, false))));
     let m = s.asm.problem.conditions.len();
     first.set(key("REACTIONS"), Value::Chpo(Rc::new(fields::reactions(s, &vec![0.0; m]))));
     if run.contact {
@@ -499,12 +499,12 @@ fn step_load(it: &mut Interp, a: &Args, run: &mut Run, t: f64) -> Result<StepLoa
 fn results(it: &mut Interp, a: &Args, run: &Run, t: f64, out: &StepOutcome, heat: Option<&[f64]>) -> Result<Tab> {
     let s = &run.s;
     let sol = &out.solution;
-    let f = s.body.fields(&sol.u, heat).map_err(|e| a.err(pmodel::body_error(s, &e)))?;
+    let mut f = s.body.fields(&sol.u, heat).map_err(|e| a.err(pmodel::body_error(s, &e)))?;
     let mut e = Table::new();
     e.set(key("TEMPS"), Value::Float(t));
     e.set(key("DEPLACEMENTS"), Value::Chpo(Rc::new(fields::displacements(s, &sol.u))));
-    e.set(key("CONTRAINTES"), Value::Mchaml(Rc::new(fields::element_field(s, &f, true))));
-    e.set(key("DEFORMATIONS"), Value::Mchaml(Rc::new(fields::element_field(s, &f, false))));
+    e.set(key("CONTRAINTES"), Value::Mchaml(Rc::new(fields::element_field(s, &mut f, true))));
+    e.set(key("DEFORMATIONS"), Value::Mchaml(Rc::new(fields::element_field(s, &mut f, false))));
     e.set(key("REACTIONS"), Value::Chpo(Rc::new(fields::reactions(s, &sol.lambda))));
     if run.contact {
         let (st, pr) = fields::contact(s, sol);

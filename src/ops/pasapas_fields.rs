@@ -35,16 +35,16 @@ pub(crate) fn reactions(s: &Structure, lambda: &[f64]) -> Chpoint {
 }
 
 /// Strains (`stresses` false) or stresses of every element set, one zone
-/// per mesh part as SIGM gives them.
-pub(crate) fn element_field(s: &Structure, fields: &[SetFields], stresses: bool) -> Mchaml {
+/// per mesh part as SIGM gives them. The values are moved out of `fields`.
+pub(crate) fn element_field(s: &Structure, fields: &mut [SetFields], stresses: bool) -> Mchaml {
     let mut out = Mchaml { subtype: if stresses { "CONTRAINTES" } else { "DEFORMATIONS" }.into(), zones: vec![] };
-    for ((zone, part), f) in s.parts.iter().zip(fields) {
-        let g = if stresses { &f.stresses } else { &f.strains };
+    for ((zone, part), f) in s.parts.iter().zip(fields.iter_mut()) {
+        let g = std::mem::take(if stresses { &mut f.stresses } else { &mut f.strains });
         out.zones.push(MchamlZone {
             mesh: Mesh::single(part.clone()),
             element: zone.element.clone(),
             comps: g.first().map(|x| x.comps.iter().map(|c| c.to_string()).collect()).unwrap_or_default(),
-            values: g.iter().map(|x| x.values.clone()).collect(),
+            values: g.into_iter().map(|x| x.values).collect(),
             ..Default::default()
         });
     }

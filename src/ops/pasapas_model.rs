@@ -167,12 +167,12 @@ pub(crate) fn build(
                 d.push(index.get(&(*n, c.to_string())).copied());
             }
         }
-        body.sets.push(ElementSet {
-            kind: ElemKind { form, ty: part.ty, mode },
-            conn: part.conn.clone(),
-            dofs: d,
-            material: Box::new(Elastic { props: material_for(zone, cara) }),
-        });
+        body.sets.push(ElementSet::new(
+            ElemKind { form, ty: part.ty, mode },
+            part.conn.clone(),
+            d,
+            Box::new(Elastic { props: material_for(zone, cara) }),
+        ));
     }
     Ok(Structure { rig, asm, body, parts, contact, contact_limits, contact_measure: measure, adhesion })
 }
