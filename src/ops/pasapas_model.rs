@@ -412,7 +412,7 @@ pub(crate) fn loads(
             let chpo = match &field {
                 Value::Chpo(c) => c.clone(),
                 other => {
-                    if matches!(p.name.as_str(), "MECA" | "DIMP" | "T") {
+                    if matches!(p.name.as_str(), "MECA" | "FORC" | "DIMP" | "T") {
                         return Err(a.err(format!(
                             "the load '{}' must be a CHPOINT, not an {}",
                             p.name,
@@ -423,7 +423,8 @@ pub(crate) fn loads(
                 }
             };
             match p.name.as_str() {
-                "MECA" | "DIMP" => {
+                // 'FORC' is read like 'MECA' by Cast3M's step (unpas).
+                "MECA" | "FORC" | "DIMP" => {
                     let load =
                         s.asm.load(it, &[&chpo]).map_err(|e| a.err(format!("load '{}': {}", p.name, e.message)))?;
                     history.terms.push(Term { load, time: f });
