@@ -11,8 +11,9 @@
 //!
 //! Target (issue 15): the whole run at most F + 100 × 1.5 S; the bench
 //! prints `budget_ratio` = total / (F + 150 S), which must be ≤ 1, and where
-//! the time goes (the one-off condensation, then per step the forward
-//! substitution of the load, the status iteration, the recovery).
+//! the time goes (the one-off condensation and forward substitution of the
+//! history's loads, then per step their combination, the status iteration
+//! and the back substitution).
 //! `GIBI_BENCH_N` sets the grid, `GIBI_BENCH_STEPS` the number of steps.
 
 mod common;
@@ -49,7 +50,7 @@ fn main() {
         .terms
         .push(Term { load: Load { f: rock, d: vec![0.0; m] }, time: TimeFunction::new(ts, sin).expect("valid") });
 
-    let (f_ref, s_ref) = common::reference_f_s(&p.k, &nodes);
+    let (f_ref, s_ref, s_seq) = common::reference_f_s(&p.k, &nodes);
     let t0 = Instant::now();
     let mut stepper = Stepper::new(p).expect("condenses");
     let setup = t0.elapsed().as_secs_f64();
@@ -59,9 +60,9 @@ fn main() {
     for i in 1..=steps {
         let t = i as f64 / steps as f64;
         let tl = Instant::now();
-        let load = history.at(t).expect("in range");
+        let c = history.coefficients(t).expect("in range");
         loads_s += tl.elapsed().as_secs_f64();
-        let out = stepper.solve(&load, &mut |_| {}).expect("solves");
+        let out = stepper.solve_history(&history, &c, None, &mut |_| {}).expect("solves");
         solves += out.iterations;
         changes += out.changed;
         actives.push(out.active);
@@ -86,6 +87,10 @@ fn main() {
         per(total - setup),
         detail.join(", "),
         per(loads_s)
+    );
+    println!(
+        "#   S_seq_s={s_seq:.4} (the same solve without threads): per step {:.2} S_seq",
+        (total - setup) / steps as f64 / s_seq
     );
     println!(
         "#   status solves {solves} ({:.2} per step), status changes {changes}, active from {} to {}",

@@ -150,8 +150,8 @@ n = 3 ; x = 2.5 ; w = 'ABCD' ; b = vrai ;
 
 const POOL: &[&str] = &[
     "p1", "p3", "l1", "s", "mo", "ma", "k", "cl", "cu", "u", "sg", "ep", "lr", "le", "lm", "t", "ev", "n", "x", "w",
-    "b", "ch", "moc", "tp", "'TEMP'", "'DIMP'", "0", "-1", "2", "0.", "1.e300", "'UX'", "'FX'", "'MINI'", "'MAXI'", "'MAIL'", "'TRAN'", "'COMP'", "'CONT'",
-    "'CHPO'", "'ABS'", "'SOMM'", "'NOEC'", "'VALE'", "(0. 0.)", "(1. 2.)",
+    "b", "ch", "moc", "tp", "'TEMP'", "'DIMP'", "0", "-1", "2", "0.", "1.e300", "'UX'", "'FX'", "'MINI'", "'MAXI'",
+    "'MAIL'", "'TRAN'", "'COMP'", "'CONT'", "'CHPO'", "'ABS'", "'SOMM'", "'NOEC'", "'VALE'", "(0. 0.)", "(1. 2.)",
 ];
 
 /// Operators that change the session itself (dimension, files, the end of

@@ -144,6 +144,17 @@ impl LoadHistory {
         l
     }
 
+    /// The limits of `base + Σ cₖ Lₖ` only.
+    pub fn combine_limits(&self, c: &[f64]) -> Vec<f64> {
+        let mut d = self.base.d.clone();
+        for (term, &ck) in self.terms.iter().zip(c) {
+            if ck != 0.0 {
+                axpy(&mut d, ck, &term.load.d);
+            }
+        }
+        d
+    }
+
     /// The load at time `t`.
     pub fn at(&self, t: f64) -> Result<Load, TimeError> {
         Ok(self.combine(&self.coefficients(t)?))

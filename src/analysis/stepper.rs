@@ -18,7 +18,7 @@
 use std::time::Instant;
 
 use super::history::{axpy, LoadHistory};
-use crate::solve::condense::Condenser;
+use crate::solve::condense::{Condenser, Forwarded};
 use crate::solve::direct::{DirectOptions, Factorization};
 use crate::solve::status::{self, IterRecord, Rule, StatusOptions};
 use crate::solve::unilateral::{solve_unilateral, UnilCache, UnilOptions};
@@ -62,6 +62,9 @@ pub struct Stepper {
     /// Without unilateral conditions the response is linear in the load:
     /// the solutions of a history's base and terms, by history id.
     basis: Option<(u64, Solution, Vec<Solution>)>,
+    /// With unilateral conditions the forward substitution is linear in
+    /// the load: a history's base and terms forwarded once, by history id.
+    forwarded: Option<(u64, Forwarded, Vec<Forwarded>)>,
     /// The tension each unilateral condition holds before it opens
     /// (unilateral order), if any holds one.
     adhesion: Option<Vec<f64>>,
@@ -89,6 +92,7 @@ impl Stepper {
             status: None,
             setup_seconds: t.elapsed().as_secs_f64(),
             basis: None,
+            forwarded: None,
             adhesion: None,
         })
     }
@@ -144,6 +148,39 @@ impl Stepper {
         extra: Option<&Load>,
         on_iter: &mut dyn FnMut(&IterRecord),
     ) -> Result<StepOutcome, SolveError> {
+        if let Core::Condensed(cond) = &self.core {
+            // The forward half of the step is a combination of forwarded
+            // loads; only the status iteration and the back substitution
+            // remain.
+            let t0 = Instant::now();
+            if self.forwarded.as_ref().is_none_or(|f| f.0 != history.id()) {
+                let base = cond.forward_load(&history.base)?;
+                let terms = history.terms.iter().map(|term| cond.forward_load(&term.load)).collect::<Result<_, _>>()?;
+                self.forwarded = Some((history.id(), base, terms));
+            }
+            let (_, base, terms) = self.forwarded.as_ref().expect("set above");
+            let mut fw = base.clone();
+            for (tf, &ck) in terms.iter().zip(c) {
+                if ck != 0.0 {
+                    fw.add(ck, tf);
+                }
+            }
+            let mut d = history.combine_limits(c);
+            if let Some(e) = extra {
+                fw.add(1.0, &cond.forward_load(e)?);
+                axpy(&mut d, 1.0, &e.d);
+            }
+            let condensed = cond.condensed_from(&fw, &d);
+            let mut phases = vec![("combine", t0.elapsed().as_secs_f64())];
+            let t1 = Instant::now();
+            let (x, active, iterations) = self.status_iteration(&condensed, on_iter)?;
+            phases.push(("status", t1.elapsed().as_secs_f64()));
+            let t2 = Instant::now();
+            let Core::Condensed(cond) = &self.core else { unreachable!("checked above") };
+            let solution = cond.recover_from(&fw, &x, &active)?;
+            phases.push(("recover", t2.elapsed().as_secs_f64()));
+            return Ok(self.finish_step(solution, iterations, active, phases));
+        }
         let Core::Direct(f) = &self.core else {
             let mut load = history.combine(c);
             if let Some(e) = extra {
@@ -192,24 +229,13 @@ impl Stepper {
                 let condensed = c.condensed(load)?;
                 phases.push(("condense", t0.elapsed().as_secs_f64()));
                 let t1 = Instant::now();
-                let opts = StatusOptions {
-                    max_iter: None,
-                    start: self.status.clone(),
-                    rule: Rule::Damped,
-                    keep_last: false,
-                    adhesion: self.adhesion.clone(),
-                };
-                let uni = c.unilateral().to_vec();
-                let mut global = |r: &IterRecord| {
-                    let g = |v: &[usize]| v.iter().map(|&q| uni[q]).collect();
-                    on_iter(&IterRecord { activated: g(&r.activated), released: g(&r.released), ..r.clone() })
-                };
-                let res = status::run(&condensed, &opts, &mut global).map_err(|e| to_global(e, c.unilateral()))?;
+                let (x, active, iterations) = self.status_iteration(&condensed, on_iter)?;
                 phases.push(("status", t1.elapsed().as_secs_f64()));
                 let t2 = Instant::now();
-                let s = c.recover(load, &res.x, &res.active)?;
+                let Core::Condensed(c) = &self.core else { unreachable!("matched above") };
+                let s = c.recover(load, &x, &active)?;
                 phases.push(("recover", t2.elapsed().as_secs_f64()));
-                (s, res.records.len(), res.active)
+                (s, iterations, active)
             }
             Core::General(cache) => {
                 let opts = UnilOptions { initial: self.status.clone(), ..Default::default() };
@@ -219,6 +245,40 @@ impl Stepper {
                 (s, rep.iterations, active)
             }
         };
+        Ok(self.finish_step(solution, iterations, active, phases))
+    }
+
+    /// The status iteration on a condensed step, warm-started from the last
+    /// step's statuses: x, the statuses and the number of solves.
+    fn status_iteration(
+        &self,
+        condensed: &crate::solve::Condensed,
+        on_iter: &mut dyn FnMut(&IterRecord),
+    ) -> Result<(Vec<f64>, Vec<bool>, usize), SolveError> {
+        let opts = StatusOptions {
+            max_iter: None,
+            start: self.status.clone(),
+            rule: Rule::Damped,
+            keep_last: false,
+            adhesion: self.adhesion.clone(),
+        };
+        let uni = &self.uni;
+        let mut global = |r: &IterRecord| {
+            let g = |v: &[usize]| v.iter().map(|&q| uni[q]).collect();
+            on_iter(&IterRecord { activated: g(&r.activated), released: g(&r.released), ..r.clone() })
+        };
+        let res = status::run(condensed, &opts, &mut global).map_err(|e| to_global(e, uni))?;
+        Ok((res.x, res.active, res.records.len()))
+    }
+
+    /// The outcome of a step, the statuses kept for the next.
+    fn finish_step(
+        &mut self,
+        solution: Solution,
+        iterations: usize,
+        active: Vec<bool>,
+        phases: Vec<(&'static str, f64)>,
+    ) -> StepOutcome {
         let changed = match &self.status {
             Some(prev) => prev.iter().zip(&active).filter(|(a, b)| a != b).count(),
             None => active.iter().filter(|a| **a).count(),
@@ -227,7 +287,7 @@ impl Stepper {
         if !self.uni.is_empty() {
             self.status = Some(active);
         }
-        Ok(StepOutcome { solution, iterations, changed, active: n_active, phases })
+        StepOutcome { solution, iterations, changed, active: n_active, phases }
     }
 }
 
@@ -291,6 +351,51 @@ mod tests {
             let out = s.solve(&Load { f: vec![f], d: vec![0.0] }, &mut |_| {}).unwrap();
             assert!((out.solution.u[0] - u).abs() < 1e-14, "f = {f}: u = {}", out.solution.u[0]);
             assert_eq!(out.active, active, "f = {f}");
+        }
+    }
+
+    /// A step from a history gives what a step from its combined load gives,
+    /// with and without unilateral conditions (the combined forward
+    /// substitution, the combined responses).
+    #[test]
+    fn steps_of_a_history_match_steps_of_its_loads() {
+        use crate::analysis::history::{Term, TimeFunction};
+        let k = Matrix {
+            n: 3,
+            entries: vec![
+                (0, 0, 4.0),
+                (0, 1, -2.0),
+                (1, 0, -2.0),
+                (1, 1, 4.0),
+                (1, 2, -2.0),
+                (2, 1, -2.0),
+                (2, 2, 3.0),
+            ],
+            symmetric: true,
+        };
+        for unilateral in [false, true] {
+            let mut conditions = vec![Condition { terms: vec![(0, 1.0)], kind: Kind::Equal, dual: None }];
+            if unilateral {
+                conditions.push(Condition { terms: vec![(2, 1.0)], kind: Kind::Mini, dual: None });
+            }
+            let m = conditions.len();
+            let p = Problem { k: k.clone(), conditions };
+            let mut h = LoadHistory::new(3, m);
+            if unilateral {
+                h.base.d[1] = -0.3;
+            }
+            let ramp = TimeFunction::new(vec![0.0, 1.0, 2.0], vec![0.0, 1.0, -1.0]).unwrap();
+            h.terms.push(Term { load: Load { f: vec![0.0, 0.5, -1.0], d: vec![0.0; m] }, time: ramp });
+            let (mut a, mut b) = (Stepper::new(p.clone()).unwrap(), Stepper::new(p).unwrap());
+            for t in [0.25, 0.5, 1.0, 1.5, 2.0] {
+                let c = h.coefficients(t).unwrap();
+                let x = a.solve_history(&h, &c, None, &mut |_| {}).unwrap();
+                let y = b.solve(&h.at(t).unwrap(), &mut |_| {}).unwrap();
+                for (p, q) in x.solution.u.iter().zip(&y.solution.u) {
+                    assert!((p - q).abs() < 1e-13, "t = {t}: {:?} vs {:?}", x.solution.u, y.solution.u);
+                }
+                assert_eq!(x.solution.active, y.solution.active);
+            }
         }
     }
 
