@@ -147,7 +147,7 @@ pub fn reference_f_s(k: &Matrix, fixed: &[usize]) -> (f64, f64, f64) {
     let t = Instant::now();
     let llt = a.as_ref().sp_cholesky(faer::Side::Upper).expect("SPD");
     let f = t.elapsed().as_secs_f64();
-    let mut time_solves = || {
+    let time_solves = || {
         let mut s = Vec::new();
         for r in 0..5 {
             let mut rhs = faer::Mat::<f64>::from_fn(nn, 1, |i, _| ((i + r) % 7) as f64 - 3.0);
