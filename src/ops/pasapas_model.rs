@@ -425,8 +425,14 @@ pub(crate) fn loads(
             match p.name.as_str() {
                 // 'FORC' is read like 'MECA' by Cast3M's step (unpas).
                 "MECA" | "FORC" | "DIMP" => {
-                    let load =
-                        s.asm.load(it, &[&chpo]).map_err(|e| a.err(format!("load '{}': {}", p.name, e.message)))?;
+                    let load = s.asm.load(it, &[&chpo]).map_err(|e| {
+                        let err = a.err(format!("load '{}': {}", p.name, e.message));
+                        if e.message.contains("carries no condition") {
+                            err.note("give DEPI the very conditions of 'BLOCAGES_MECANIQUES' (cl = BLOQ … ; DEPI cl v): a new BLOQ makes new conditions")
+                        } else {
+                            err
+                        }
+                    })?;
                     history.terms.push(Term { load, time: f });
                 }
                 "T" => {
