@@ -264,6 +264,9 @@ fn pasapas(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         let l: Vec<i64> = st.iter().map(|&x| x as i64).collect();
         w.borrow_mut().set(key("STATUTS_UNILATERAUX"), Value::ListEnti(Rc::new(l)));
     }
+    // pasapas.notice's outputs: the run converged, without error.
+    set(&tab, "CONV", Value::Bool(true));
+    set(&tab, "ERREUR", Value::Bool(false));
     set(&tab, "SOUSTYPE", Value::mot("PASAPAS"));
     Ok(vec![Value::Table(tab)])
 }
