@@ -20,7 +20,7 @@ cd "$(dirname "$0")/.."
 # What each layer may import (besides itself and the basement).
 declare -A ALLOWED=(
   [syntax]=""
-  [value]="syntax fem solve"
+  [value]="syntax fem solve analysis"
   [eval]="syntax value fem solve io analysis"
   [ops]="syntax value eval fem solve io analysis props"
   [io]="fem"

@@ -22,6 +22,7 @@
 //! assert_eq!(out.text(), "x = 9\n");
 //! ```
 
+pub mod analysis;
 pub mod error;
 pub mod eval;
 pub mod fem;
@@ -89,9 +90,16 @@ pub struct InterpreterBuilder {
     step_limit: Option<u64>,
     report_files: bool,
     procedures: Vec<std::path::PathBuf>,
+    progress: Option<Box<dyn FnMut(usize, usize)>>,
 }
 
 impl InterpreterBuilder {
+    /// Told of the progress of long operators (PASAPAS calls it after each
+    /// step with the steps done and planned): a host's progress bar.
+    pub fn progress(mut self, f: impl FnMut(usize, usize) + 'static) -> Self {
+        self.progress = Some(Box::new(f));
+        self
+    }
     /// Where MESS, LIST, … write. Default: discarded.
     pub fn output(mut self, w: impl Write + 'static) -> Self {
         self.out = Box::new(w);
@@ -134,6 +142,7 @@ impl InterpreterBuilder {
         interp.step_limit = self.step_limit;
         interp.report_files = self.report_files;
         interp.library = eval::library::Library::new(self.procedures);
+        interp.progress = self.progress;
         Interpreter { interp }
     }
 }
@@ -163,6 +172,7 @@ impl Interpreter {
             step_limit: None,
             report_files: true,
             procedures: Vec::new(),
+            progress: None,
         }
     }
 

@@ -225,3 +225,49 @@ fn gmsh_volumes_and_quadratic_surfaces_export() {
         assert_eq!(t, types, "{}", f);
     }
 }
+
+/// `SORT 'VTK'` of a PASAPAS table: one .pvd with every saved step at its
+/// time, each with the displacements, stresses and contact fields of that
+/// step (a block through a gap onto a support: open, then closed).
+#[test]
+fn pasapas_table_writes_every_saved_step() {
+    let dir = scratch("pasapas");
+    let mut gibi = Interpreter::builder().files(FilePolicy::Under(dir.clone())).build();
+    let deck = "opti dime 2 elem qua4 mode plan cont echo 0 ;
+        bas = (0. 1.e-3) droi 2 (1. 1.e-3) ; blk = bas tran 2 (0. 1.) ; haut = blk cote 3 ;
+        sup = (2. 0.) droi 3 (-1. 0.) ;
+        mo = (mode blk mecanique elastique) et (mode (impo 'MAIL' bas sup) 'CONTACT') ;
+        clh = bloq haut 'UY' ;
+        t = tabl ; t . 'MODELE' = mo ; t . 'CARACTERISTIQUES' = mate mo 'YOUN' 1.e3 'NU' 0.2 ;
+        t . 'BLOCAGES_MECANIQUES' = (bloq sup 'DEPL') et clh et (bloq (blk cote 4) 'UX') ;
+        t . 'CHARGEMENT' = char 'DIMP' (depi clh -2.e-3) (evol manu (prog 0. 1.) (prog 0. 1.)) ;
+        t . 'TEMPS_CALCULES' = prog 0.25 0.5 0.75 1. ; t . 'TEMPS_SAUVES' = prog 0.25 1. ;
+        pasapas t ;
+        opti sort 'res/steps' ; sort 'VTK' t ;";
+    gibi.run_str("pasapas", deck).unwrap();
+    let pvd = parse(&dir.join("res/steps.pvd"));
+    let sets: Vec<(f64, &str)> = pvd
+        .iter()
+        .filter(|e| e.tag == "DataSet")
+        .map(|e| (e.attrs["timestep"].parse().unwrap(), e.attrs["file"].as_str()))
+        .collect();
+    assert_eq!(sets, vec![(0.0, "steps_0000.vtu"), (0.25, "steps_0001.vtu"), (1.0, "steps_0002.vtu")]);
+    // The block's 9 nodes and 4 elements (the support is no cell).
+    let last = parse(&dir.join("res/steps_0002.vtu"));
+    assert_eq!(piece(&last), (9, 4));
+    // Pushed by 2e-3 through a 1e-3 gap: the bottom is at -1e-3, the
+    // stress uniform, -E 1e-3 / 1, and so is the pressure on the bottom.
+    let depl = floats(array(&last, "DEPL"));
+    let uy_min = depl.chunks(3).map(|v| v[1]).fold(f64::INFINITY, f64::min);
+    assert!((uy_min + 2.0e-3).abs() < 1e-12, "{uy_min}");
+    // SIGMA: SMXX SMYY SMZZ SMXY per cell.
+    let sig = floats(array(&last, "SIGMA"));
+    assert_eq!(sig.len(), 16);
+    assert!(sig.chunks(4).all(|s| (s[1] + 1.0).abs() < 1e-9 && s[0].abs() < 1e-9), "{sig:?}");
+    let st = floats(array(&last, "contact_status"));
+    assert_eq!(st.iter().filter(|s| **s == 1.0).count(), 3, "{st:?}");
+    let p = floats(array(&last, "contact_pressure"));
+    assert!(p.iter().filter(|v| !v.is_nan()).all(|v| (v - 1.0).abs() < 1e-9), "{p:?}");
+    let open = parse(&dir.join("res/steps_0001.vtu"));
+    assert!(floats(array(&open, "contact_status")).iter().all(|s| s.is_nan() || *s == 0.0));
+}

@@ -108,13 +108,13 @@ fn errors_inside_a_library_procedure_point_into_its_file() {
 #[test]
 fn a_cast3m_procedure_the_library_lacks_is_refused_by_name() {
     let (mut g, _) = session(&["folder"]);
-    let e = g.run_str("t", "t = tabl ; pasapas t ;").unwrap_err();
+    let e = g.run_str("t", "t = tabl ; dynamic t ;").unwrap_err();
     assert_eq!(
         e.message,
-        "PASAPAS is a Cast3M procedure that gibi does not implement, and the procedure library does not hold it"
+        "DYNAMIC is a Cast3M procedure that gibi does not implement, and the procedure library does not hold it"
     );
     let mut g = Interpreter::new();
-    let e = g.run_str("t", "t = tabl ; pasapas t ;").unwrap_err();
+    let e = g.run_str("t", "t = tabl ; dynamic t ;").unwrap_err();
     assert!(e.notes.iter().any(|n| n.contains("GIBI_PROCEDURES")), "{:?}", e.notes);
 }
 

@@ -162,13 +162,17 @@ ep = epsi mo ma u ;
 lr = prog 1. 2. 3. ; le = lect 1 2 3 ; lm = mots 'UX' 'UY' ;
 t = table ; t . 1 = 2. ;
 ev = evol manu lr lr ;
+ch = char 'MECA' (forc 'FX' 1. p3) ev ;
+moc = mode (impo 'MAIL' l1 l3) 'CONTACT' ;
+tp = tabl ; tp . 'MODELE' = mo et moc ; tp . 'CARACTERISTIQUES' = ma ;
+tp . 'BLOCAGES_MECANIQUES' = cl ; tp . 'CHARGEMENT' = ch ; tp . 'TEMPS_CALCULES' = lr ;
 n = 3 ; x = 2.5 ; w = 'ABCD' ; b = vrai ;
 ";
 
 const POOL: &[&str] = &[
     "p1", "p3", "l1", "s", "mo", "ma", "k", "cl", "cu", "u", "sg", "ep", "lr", "le", "lm", "t", "ev", "n", "x", "w",
-    "b", "0", "-1", "2", "0.", "1.e300", "'UX'", "'FX'", "'MINI'", "'MAXI'", "'MAIL'", "'TRAN'", "'COMP'", "'CONT'",
-    "'CHPO'", "'ABS'", "'SOMM'", "'NOEC'", "'VALE'", "(0. 0.)", "(1. 2.)",
+    "b", "ch", "moc", "tp", "'TEMP'", "'DIMP'", "0", "-1", "2", "0.", "1.e300", "'UX'", "'FX'", "'MINI'", "'MAXI'",
+    "'MAIL'", "'TRAN'", "'COMP'", "'CONT'", "'CHPO'", "'ABS'", "'SOMM'", "'NOEC'", "'VALE'", "(0. 0.)", "(1. 2.)",
 ];
 
 /// Operators that change the session itself (dimension, files, the end of

@@ -117,3 +117,51 @@ pub fn median(v: &mut [f64]) -> f64 {
     v.sort_by(f64::total_cmp);
     v[v.len() / 2]
 }
+
+/// [`reference_f`] and S, the seconds of one forward and backward solve
+/// (one right-hand side) with that factor (median of 5), and S_seq, the
+/// same solve with faer's parallelism off (the step solver's partial
+/// substitutions run sequentially).
+#[allow(dead_code)]
+pub fn reference_f_s(k: &Matrix, fixed: &[usize]) -> (f64, f64, f64) {
+    use faer::linalg::solvers::Solve;
+    let mut keep = vec![true; k.n];
+    for &j in fixed {
+        keep[j] = false;
+    }
+    let mut new = vec![usize::MAX; k.n];
+    let mut nn = 0;
+    for j in 0..k.n {
+        if keep[j] {
+            new[j] = nn;
+            nn += 1;
+        }
+    }
+    let trip: Vec<Triplet<usize, usize, f64>> = k
+        .entries
+        .iter()
+        .filter(|&&(i, j, _)| keep[i] && keep[j] && i <= j)
+        .map(|&(i, j, v)| Triplet::new(new[i], new[j], v))
+        .collect();
+    let a = SparseColMat::<usize, f64>::try_new_from_triplets(nn, nn, &trip).expect("valid");
+    let t = Instant::now();
+    let llt = a.as_ref().sp_cholesky(faer::Side::Upper).expect("SPD");
+    let f = t.elapsed().as_secs_f64();
+    let time_solves = || {
+        let mut s = Vec::new();
+        for r in 0..5 {
+            let mut rhs = faer::Mat::<f64>::from_fn(nn, 1, |i, _| ((i + r) % 7) as f64 - 3.0);
+            let t = Instant::now();
+            llt.solve_in_place(rhs.as_mut());
+            s.push(t.elapsed().as_secs_f64());
+            std::hint::black_box(&rhs);
+        }
+        median(&mut s)
+    };
+    let s = time_solves();
+    let before = faer::get_global_parallelism();
+    faer::set_global_parallelism(faer::Par::Seq);
+    let s_seq = time_solves();
+    faer::set_global_parallelism(before);
+    (f, s, s_seq)
+}

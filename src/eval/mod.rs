@@ -75,6 +75,10 @@ pub struct Interp {
     /// Library procedures being run (their instructions echo only with
     /// `OPTI ECHO 2`, as Cast3M's external procedures do).
     pub in_library: usize,
+    /// Told of the progress of long operators (PASAPAS: steps done, steps
+    /// planned), so a host can show a progress bar; the library itself
+    /// prints nothing for it.
+    pub progress: Option<Box<dyn FnMut(usize, usize)>>,
 }
 
 /// How deep blocks, parenthesised groups and procedure calls may run
@@ -142,6 +146,7 @@ impl Interp {
             factors: Default::default(),
             library: Default::default(),
             in_library: 0,
+            progress: None,
         }
     }
 

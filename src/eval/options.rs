@@ -22,11 +22,9 @@ pub struct Options {
     /// Linear solver: DIRECTE or ITERATIVE.
     pub reso: String,
     /// The other options given to OPTI, as read (ops/opti.rs), for VALE
-    /// and for the operators that use them (SORT, FTRA, TRAC, EPTR).
+    /// and for the operators that use them (SORT, FTRA, TRAC, EPTR); ECHO
+    /// too, to know that it was given (PASAPAS's step lines).
     pub kept: BTreeMap<&'static str, crate::value::Value>,
-    /// State operators keep between calls (the steps of a .pvd collection,
-    /// the count of pictures drawn).
-    pub other: BTreeMap<String, String>,
 }
 
 impl Options {
@@ -58,7 +56,6 @@ impl Default for Options {
             erre: "NORMAL".into(),
             reso: "DIRECTE".into(),
             kept: BTreeMap::new(),
-            other: BTreeMap::new(),
         }
     }
 }

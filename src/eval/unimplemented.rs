@@ -16,7 +16,8 @@ use super::catalogue::{self, Entry, Kind};
 use super::registry::Registry;
 use crate::error::Error;
 
-const STATICS: &str = "gibi solves linear statics: RIGI, BLOQ/RELA, RESO (UNIL for unilateral conditions)";
+const STATICS: &str =
+    "gibi solves linear statics: RIGI, BLOQ/RELA, RESO (UNIL for unilateral conditions), and PASAPAS on elastic structures with contact";
 const FILES: &str = "gibi writes results with SORT 'VTK' (ParaView) and reads meshes with LIRE 'GMSH'";
 const MESHING: &str = "gibi meshes with DROI, CERC, DALL, SURF, REGL, COUT, TRAN, ROTA, VOLU, SYME, PLUS, ELIM and ET";
 const POST: &str = "gibi post-processes with SIGM, EPSI, VMIS, PRIN, EXTR, EVOL, INTG, and draws with TRAC and DESS";
@@ -29,7 +30,6 @@ pub(crate) const HINTS: &[(&str, &str)] = &[
     ("AMOR", STATICS),
     ("CALP", "SIGM gives the beam resultants EFFX … MOMZ"),
     ("CAPA", STATICS),
-    ("CHAR", STATICS),
     ("COND", STATICS),
     ("DYNAMIC", STATICS),
     ("DYNE", STATICS),
@@ -40,7 +40,6 @@ pub(crate) const HINTS: &[(&str, &str)] = &[
     ("KSIG", STATICS),
     ("MREM", "RESO and UNIL re-insert eliminated unknowns themselves"),
     ("OBTE", FILES),
-    ("PASAPAS", STATICS),
     ("PJBA", STATICS),
     ("RECO", STATICS),
     ("REST", FILES),

@@ -43,7 +43,14 @@ fn frame(elem: &'static str, mode: Mode, x: &[[f64; 3]], m: &Material, need_vect
     let (ey, ez) = if mode != Mode::Trid {
         ([-ex[1], ex[0], 0.0], [0.0, 0.0, 1.0])
     } else if need_vect {
-        let v = m.vect.ok_or(FemError::MissingProperty { prop: "VECT", elem })?;
+        // Without CARA 'VECT', Cast3M's default local y (pouloc.eso): the
+        // horizontal normal (−dy, dx, 0) of the axis, or (0, −dz, dy) for an
+        // axis along z.
+        let v = m.vect.unwrap_or(if ex[0].abs().max(ex[1].abs()) > 1e-12 {
+            [-ex[1], ex[0], 0.0]
+        } else {
+            [0.0, -ex[2], ex[1]]
+        });
         let p = dot(v, ex);
         let y = [v[0] - p * ex[0], v[1] - p * ex[1], v[2] - p * ex[2]];
         let ny = dot(y, y).sqrt();

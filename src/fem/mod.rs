@@ -10,6 +10,7 @@ pub mod beam;
 pub mod colour;
 pub mod constitutive;
 pub mod contact;
+pub mod contact_weak;
 pub mod element;
 pub mod integrate;
 pub mod loads;

@@ -358,8 +358,13 @@ pub fn field(
         let mut eps: Vec<f64> = b.iter().map(|row| row.iter().zip(u).map(|(a, b)| a * b).sum()).collect();
         if mode == Mode::PlanCont && !stress {
             // Plane stress: the out-of-plane strain follows from σzz = 0.
-            let nu = m.poisson_plane_stress(ty.name())?;
-            eps[2] = -nu / (1.0 - nu) * (eps[0] + eps[1]);
+            // Without a material (EPSI mo u, as Cast3M decks write it to
+            // compare with ELAS) it stays 0: the in-plane strains need no
+            // constant, and Hooke's law in plane stress ignores EPZZ.
+            if m.nu.is_some() {
+                let nu = m.poisson_plane_stress(ty.name())?;
+                eps[2] = -nu / (1.0 - nu) * (eps[0] + eps[1]);
+            }
         }
         values.push(match (&d, stress) {
             (Some(d), true) => d.iter().map(|row| row.iter().zip(&eps).map(|(a, b)| a * b).sum()).collect(),

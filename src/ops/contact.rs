@@ -17,13 +17,14 @@ use std::rc::Rc;
 pub(crate) const OPS: &[OpDef] = &[
     OpDef {
         name: "IMPO",
-        signature: "IMPO POINT|MAIL1 MAIL2 | IMPO 'MAIL' MAIL1 MAIL2 | IMPO 'BLOC' MAIL3",
+        signature: "IMPO POINT|MAIL1 MAIL2 | IMPO 'MAIL' ('SYME'|'MESC'|'FAIB') MAIL1 MAIL2 | IMPO 'BLOC' MAIL3",
         doc: "Unilateral contact of the nodes of MAIL1 against the oriented SEG2 line (2D) or TRI3 surface (3D) MAIL2, \
               which they must stay on the right-hand side of (the side of the TRI3 normal in 3D; a QUA4 counts as two TRI3): one RELA 'MINI'-like \
               condition per node of MAIL1 that projects onto MAIL2, with the nearest facet. Returns the gap field \
-              (as DEPI gives it) and the conditions. 'MAIL' gives the contact elements instead (slave node then facet \
-              nodes: TRI3 in 2D, TET4 in 3D), and 'BLOC' the gap and conditions of such a mesh. Nodes that project onto \
-              no facet get no condition.",
+              (as DEPI gives it) and the conditions. 'MAIL' gives the contact elements of MODE 'CONTACT' instead, both \
+              ways by default ('SYME'; slave node then facet: TRI3 in 2D, TET4 in 3D), one way with 'MESC' (the nodes \
+              of MAIL2 against MAIL1), segment against segment with 'FAIB' (2D, QUA4 elements); 'BLOC' gives the gap \
+              and conditions of a strong contact mesh. Nodes that project onto no facet get no condition.",
         example: "jeu0 cont = impo haut_bas sol ; u = reso (k et cont) (f et jeu0) ;",
         f: impo,
     },
@@ -99,73 +100,136 @@ fn other_type(m: &Mesh, want: &[ElemType]) -> Option<ElemType> {
 /// knows and draws; Cast3M has a contact element type of its own, so the
 /// mesh serves 'BLOC' and pictures, not MODE.
 fn impo(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let form = a.keyword(&["MAIL", "BLOC", "MESC", "FAIB", "SYME", "ACTI", "IMPA"]);
-    if form == Some("MAIL") {
-        // 'SYME' asks for the symmetric treatment, which is the default.
-        a.keyword(&["SYME"]);
-    }
-    if let Some(k @ ("MESC" | "FAIB" | "SYME" | "ACTI" | "IMPA")) = form {
+    let form = a.keyword(&["MAIL", "BLOC", "ACTI", "IMPA"]);
+    if let Some(k @ ("ACTI" | "IMPA")) = form {
         return Err(a.err(format!("the option '{}' is not supported", k)));
     }
     let ft = facet_type(it, a)?;
+    if form == Some("MAIL") {
+        return impo_mail(it, a, ft);
+    }
     let pairs = if form == Some("BLOC") {
         let m = a.req::<Rc<Mesh>>()?;
         bloc_pairs(it, a, &m, ft)?
     } else {
         let slave = req_geo(a)?;
         let master = a.req::<Rc<Mesh>>()?;
-        let dim = ft.dim() + 1;
-        // In 3D a QUA4 of the master side counts as two TRI3 (a b c, a c d),
-        // which keep its orientation: surfaces made by DALL or FACE are QUA4.
-        let allowed: &[ElemType] = if dim == 3 { &[ElemType::Tri3, ElemType::Qua4] } else { &[ElemType::Seg2] };
-        if let Some(t) = other_type(&master, allowed) {
-            return Err(a.err(format!(
-                "the second mesh (the master side) must be made of {} elements in {}D, found {}",
-                if dim == 3 { "TRI3 or QUA4" } else { "SEG2" },
-                dim,
-                t.name()
-            )));
-        }
-        if let Some(t) = slave.parts.iter().map(|p| p.ty).find(|t| t.dim() >= dim) {
-            return Err(a.err(format!(
-                "the first mesh (the slave side) must be points, lines{} in {}D, found {}",
-                if dim == 3 { " or surfaces" } else { "" },
-                dim,
-                t.name()
-            )));
-        }
-        // Each facet with the number of the master element it comes from.
-        let mut facets: Vec<Vec<usize>> = Vec::new();
-        let mut elem_of: Vec<usize> = Vec::new();
-        for (e, el) in master.parts.iter().flat_map(|p| p.elems()).enumerate() {
-            match el {
-                [a, b, c, d] => {
-                    facets.extend([vec![*a, *b, *c], vec![*a, *c, *d]]);
-                    elem_of.extend([e, e]);
-                }
-                _ => {
-                    facets.push(el.to_vec());
-                    elem_of.push(e);
-                }
-            }
-        }
-        let refs: Vec<&[usize]> = facets.iter().map(|f| f.as_slice()).collect();
-        contact::pairs(&it.nodes.coords, &slave.node_list(), &refs)
-            .map_err(|i| a.err(format!("element {} of the master side has no length or area", elem_of[i] + 1)))?
+        one_way(it, a, &slave, &master, ft, ["the first mesh", "the second mesh"])?
     };
     if pairs.is_empty() {
         // Legal (bodies far apart sideways) but nearly always a mistake in
         // the orientation or the order of the meshes: say so.
         it.println("IMPO: warning: no node of the slave side projects onto the master side: no contact condition");
     }
-    if form == Some("MAIL") {
-        let ty = if ft == ElemType::Seg2 { ElemType::Tri3 } else { ElemType::Tet4 };
-        let conn = pairs.iter().flat_map(|p| std::iter::once(p.slave).chain(p.facet.iter().copied())).collect();
-        return Ok(vec![Value::Mesh(Rc::new(Mesh::single(Part::with(ty, conn))))]);
-    }
     let rig = conditions(it, &pairs, ft.dim() + 1);
     let gap = gaps(it, &rig);
     Ok(vec![Value::Chpo(Rc::new(gap)), Value::Rigi(Rc::new(rig))])
+}
+
+/// The nodes of `slave` against the facets of `master`, each node with the
+/// facet it projects onto (see `impo`).
+/// `names`: how the error messages call the slave and the master meshes.
+fn one_way(it: &Interp, a: &Args, slave: &Mesh, master: &Mesh, ft: ElemType, names: [&str; 2]) -> Result<Vec<Pair>> {
+    let dim = ft.dim() + 1;
+    // In 3D a QUA4 of the master side counts as two TRI3 (a b c, a c d),
+    // which keep its orientation: surfaces made by DALL or FACE are QUA4.
+    let allowed: &[ElemType] = if dim == 3 { &[ElemType::Tri3, ElemType::Qua4] } else { &[ElemType::Seg2] };
+    if let Some(t) = other_type(master, allowed) {
+        return Err(a.err(format!(
+            "{} (the master side) must be made of {} elements in {}D, found {}",
+            names[1],
+            if dim == 3 { "TRI3 or QUA4" } else { "SEG2" },
+            dim,
+            t.name()
+        )));
+    }
+    if let Some(t) = slave.parts.iter().map(|p| p.ty).find(|t| t.dim() >= dim) {
+        return Err(a.err(format!(
+            "{} (the slave side) must be points, lines{} in {}D, found {}",
+            names[0],
+            if dim == 3 { " or surfaces" } else { "" },
+            dim,
+            t.name()
+        )));
+    }
+    // Each facet with the number of the master element it comes from.
+    let mut facets: Vec<Vec<usize>> = Vec::new();
+    let mut elem_of: Vec<usize> = Vec::new();
+    for (e, el) in master.parts.iter().flat_map(|p| p.elems()).enumerate() {
+        match el {
+            [a, b, c, d] => {
+                facets.extend([vec![*a, *b, *c], vec![*a, *c, *d]]);
+                elem_of.extend([e, e]);
+            }
+            _ => {
+                facets.push(el.to_vec());
+                elem_of.push(e);
+            }
+        }
+    }
+    let refs: Vec<&[usize]> = facets.iter().map(|f| f.as_slice()).collect();
+    contact::pairs(&it.nodes.coords, &slave.node_list(), &refs)
+        .map_err(|i| a.err(format!("element {} of the master side has no length or area", elem_of[i] + 1)))
+}
+
+/// `IMPO 'MAIL' ('SYME'|'MESC'|'FAIB') M1 M2`: the contact elements, as
+/// Cast3M makes them (impo.notice):
+/// * by default (and 'SYME') both ways: the nodes of M2 against the facets
+///   of M1, then the nodes of M1 against the facets of M2;
+/// * 'MESC' one way: the nodes of M2 against the facets of M1;
+/// * 'FAIB' (2D): segment against segment, one condition per pair of
+///   facing segments, imposed on average over their overlap
+///   (`fem::contact_weak`).
+///
+/// A strong element is a simplex, slave node then facet (TRI3 in 2D, TET4
+/// in 3D); a weak one a QUA4 of the two segments (a b of M1, c d of M2).
+/// Only facing pairs are kept (the nearest facet a node projects onto;
+/// segments that overlap): Cast3M keeps every pair within the optional
+/// distance and sorts them at each step, gibi sorts them here, on the
+/// geometry of the call (small displacements). A distance criterion given
+/// after the meshes is read and, as every pair kept faces the other side,
+/// has no further use.
+fn impo_mail(it: &mut Interp, a: &mut Args, ft: ElemType) -> Result<Vec<Value>> {
+    let way = a.keyword(&["SYME", "MESC", "FAIB"]).unwrap_or("SYME");
+    let m1 = req_geo(a)?;
+    let m2 = req_geo(a)?;
+    let _criterion = a.opt_num();
+    if way == "FAIB" {
+        if ft != ElemType::Seg2 {
+            return Err(a.err("the weak form 'FAIB' is available in 2D (SEG2 lines) only"));
+        }
+        let segs = |m: &Mesh, which: &str| -> Result<Vec<[usize; 2]>> {
+            if let Some(t) = other_type(m, &[ElemType::Seg2]) {
+                return Err(a.err(format!(
+                    "'FAIB': the {} line must be made of SEG2 elements, found {}",
+                    which,
+                    t.name()
+                )));
+            }
+            Ok(m.parts.iter().flat_map(|p| p.elems()).map(|e| [e[0], e[1]]).collect())
+        };
+        let (s1, s2) = (segs(&m1, "first")?, segs(&m2, "second")?);
+        let pairs = crate::fem::contact_weak::pairs(&it.nodes.coords, &s1, &s2);
+        if pairs.is_empty() {
+            it.println("IMPO: warning: no segment of the two lines faces the other: no contact element");
+        }
+        let conn = pairs.iter().flat_map(|p| p.nodes).collect();
+        return Ok(vec![Value::Mesh(Rc::new(Mesh::single(Part::with(ElemType::Qua4, conn))))]);
+    }
+    let mut pairs = one_way(it, a, &m2, &m1, ft, ["the second mesh", "the first mesh"])?;
+    if way == "SYME" {
+        // With matching meshes a node facing a node gives the same
+        // condition both ways: both elements are kept (as Cast3M keeps
+        // them; the facets of both sides then carry the contact pressure)
+        // and the solver keeps one of each pair of equal rows active.
+        pairs.extend(one_way(it, a, &m1, &m2, ft, ["the first mesh", "the second mesh"])?);
+    }
+    if pairs.is_empty() {
+        it.println("IMPO: warning: no node of either side projects onto the other: no contact element");
+    }
+    let ty = if ft == ElemType::Seg2 { ElemType::Tri3 } else { ElemType::Tet4 };
+    let conn = pairs.iter().flat_map(|p| std::iter::once(p.slave).chain(p.facet.iter().copied())).collect();
+    Ok(vec![Value::Mesh(Rc::new(Mesh::single(Part::with(ty, conn))))])
 }
 
 /// The pairs a contact mesh (IMPO 'MAIL') stands for: slave node first,

@@ -15,8 +15,8 @@ use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[OpDef {
     name: "EVOL",
-    signature: "EVOL (colour) 'MANU' ('LEGE' text) (nameX) LISTREEL (nameY) LISTREEL | EVOL (colour) 'CHPO' CHPOINT (comp) LINE",
-    doc: "A curve: given point by point, or a node field along an ordered line against its curvilinear abscissa.",
+    signature: "EVOL (colour) 'MANU' ('LEGE' text) (nameX) LISTREEL (nameY) LISTREEL | EVOL (colour) 'CHPO' CHPOINT (comp) LINE | EVOL (colour) 'TEMP' TABLE|LISTCHPO LISTREEL ('MOT') (LISTENTI) COMP|LISTMOTS POINT|MAILLAGE|(N1 N2 N3)",
+    doc: "A curve: given point by point, or a node field along an ordered line against its curvilinear abscissa, or a result against time at points ('TEMP': the tables of a PASAPAS run, DEPLACEMENTS by default, or a LISTCHPO and its times; N1 N2 N3 for an MCHAML: point N3 of element N2 of zone N1).",
     example: "ev = evol 'CHPO' u 'UY' l ;",
     f: evol,
 }];
@@ -29,8 +29,9 @@ const COLOURS: &[&str] = &[
 
 fn evol(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     a.keyword(COLOURS);
-    let curve = match a.req_keyword(&["MANU", "CHPO"])? {
+    let curve = match a.req_keyword(&["MANU", "CHPO", "TEMP"])? {
         "MANU" => manu(a)?,
+        "TEMP" => return super::evol_temps::evol_temp(it, a),
         _ => along_line(it, a)?,
     };
     Ok(vec![Value::Evol(Rc::new(Evolution { curves: vec![curve] }))])

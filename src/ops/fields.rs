@@ -55,7 +55,7 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "DEFO",
-        signature: "DEFO GEO CHPOINT (SCALE) (COLOUR)",
+        signature: "DEFO GEO CHPOINT (SCALE) (VECTEUR) (COLOUR)",
         doc: "The deformed mesh: nodes moved by SCALE times the displacement field (for TRAC), in COLOUR if given.",
         example: "d = defo s u 100. ;",
         f: defo,
@@ -238,6 +238,11 @@ fn defo(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let u = a.req::<Rc<Chpoint>>()?;
     let scale = a.opt_num().unwrap_or(1.0);
     let moved = super::mesh::moved_by_field(it, &geo, &u, scale);
+    // Arrows to draw on the deformed mesh (VECT): gibi draws no arrows.
+    let _ = a.opt_with(|v| match v {
+        Value::Host(h) if h.type_name() == "VECTEUR" => Some(()),
+        _ => None,
+    });
     // A colour word colours the deformed mesh for TRAC; other words are
     // options of Cast3M's graphics.
     let colour = a.word_not_operator().and_then(|w| crate::fem::mesh::Colour::from_name(&w));

@@ -11,7 +11,7 @@ use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[OpDef {
     name: "MANU",
-    signature: "MANU TYPE P1 P2 … | MANU 'SUPE' P1 P2 … | MANU 'CHPO' GEO (n) COMP1 V1 … ('NATURE' 'DIFFUS'|'DISCRET') | MANU 'RIGI' ('TYPE' 'RIGIDITE'|'MASSE') GEO LISTMOTS ('DUAL' LISTMOTS) ('ANTI'|'QUEL') LISTREEL | MANU 'RIGI' CHPOINT 'DIAG' | MANU 'CHML' MMODEL COMP1 V1 … ('TYPE' word) (support word)",
+    signature: "MANU TYPE P1 P2 … | MANU 'SUPE' P1 P2 … | MANU 'CHPO' GEO (n) COMP1 V1 … ('NATURE' 'DIFFUS'|'DISCRET') | MANU 'RIGI' ('TYPE' 'RIGIDITE'|'MASSE') GEO LISTMOTS ('DUAL' LISTMOTS) ('ANTI'|'QUEL') LISTREEL | MANU 'RIGI' CHPOINT 'DIAG' | MANU 'CHML' MMODEL|GEO COMP1 V1 … ('TYPE' word) (support word)",
     doc: "Build a mesh from points, a field from values, a constant field by element on every zone of a model \
           (at the points SIGM uses, or the element nodes with 'NOEUD'; subtype from 'TYPE', default SCALAIRE; \
           other support words such as 'STRESSES' change nothing for a constant), or a matrix from a list of values.",
@@ -52,7 +52,12 @@ fn manu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 /// computed field; another support word changes nothing for a constant.
 fn chml(a: &mut Args) -> Result<Vec<Value>> {
     use crate::value::model::{Mchaml, MchamlZone};
-    let model = a.req::<Rc<crate::value::Model>>()?;
+    // On a mesh (no model) the values sit at the element nodes, as Cast3M
+    // gives them (a gap field on contact elements: MANU 'CHML' mc 'JEU' j).
+    let (model, mesh) = match a.opt::<Rc<crate::value::Model>>() {
+        Some(m) => (Some(m), None),
+        None => (None, Some(a.opt::<Rc<Mesh>>().ok_or_else(|| a.missing("MMODEL or MAILLAGE"))?)),
+    };
     let mut comps: Vec<String> = Vec::new();
     let mut vals: Vec<f64> = Vec::new();
     let mut subtype = "SCALAIRE".to_string();
@@ -81,7 +86,17 @@ fn chml(a: &mut Args) -> Result<Vec<Value>> {
         return Err(a.missing("a component name and its value"));
     }
     let mut zones = Vec::new();
-    for z in &model.zones {
+    for part in mesh.iter().flat_map(|m| m.parts.iter()) {
+        zones.push(MchamlZone {
+            mesh: Mesh::single(part.clone()),
+            element: part.ty.name().to_string(),
+            comps: comps.clone(),
+            values: vec![vec![vals.clone(); part.ty.nodes()]; part.elems().count()],
+            at_nodes: true,
+            ..Default::default()
+        });
+    }
+    for z in model.iter().flat_map(|m| m.zones.iter()) {
         let form = super::model::formulation(z);
         for part in &z.mesh.parts {
             let npts = if at_nodes { part.ty.nodes() } else { crate::fem::element::gauss_points(form, part.ty).len() };

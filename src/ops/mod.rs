@@ -7,11 +7,13 @@ mod assemble;
 mod bc;
 #[cfg(test)]
 mod catalogue_tests;
+mod chargement;
 mod colour;
 mod contact;
 mod curves;
 mod dofs;
 mod evol;
+mod evol_temps;
 mod export;
 mod extract;
 mod fields;
@@ -36,6 +38,9 @@ mod model;
 mod objects;
 mod opti;
 mod opti_own;
+mod pasapas;
+mod pasapas_fields;
+mod pasapas_model;
 mod pointwise;
 mod post;
 mod principal;
@@ -84,6 +89,7 @@ impl Registry {
             colour::OPS,
             bc::OPS,
             contact::OPS,
+            chargement::OPS,
             model::OPS,
             manu::OPS,
             fields::OPS,
@@ -101,6 +107,7 @@ impl Registry {
             curves::OPS,
             tables::OPS,
             variable::OPS,
+            pasapas::OPS,
         ] {
             for d in table {
                 r.insert(OpSpec::from(d));

@@ -13,8 +13,8 @@ use crate::value::{Evolution, Mchaml, Model, Rigidite, Value};
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
-    OpDef { name: "MODE", signature: "MODE GEO 'MECANIQUE' ('ELASTIQUE' ('ISOTROPE')) (BARR|POUT|TIMO|Q4RI|COQ3|DKT|COQ4|…)", doc: "A model: a mesh tied to a formulation, a behaviour and an element type (COQ3, DKT on TRI3 and COQ4 on QUA4 are thin shells, in TRID).", example: "mo = mode l mecanique elastique pout ;", f: mode },
-    OpDef { name: "MATE", signature: "MATE MMODEL 'YOUN' E 'NU' nu ('RHO' r) ('ALPH' a ('TREF' t)) (SECT INRY INRZ TORS SECY SECZ EPAI DIM3 …); a value may be an EVOLUTIO of a parameter", doc: "Material (and section) data of a model. A property given as an EVOLUTIO depends on the parameter its abscissa names (VARI 'NUAG' evaluates it against a field).", example: "ma = mate mo youn 2.e11 nu 0.3 ;", f: mate },
+    OpDef { name: "MODE", signature: "MODE GEO 'MECANIQUE' ('ELASTIQUE' ('ISOTROPE')) (BARR|POUT|TIMO|Q4RI|COQ3|DKT|COQ4|…) | MODE CONTACT_MESH 'CONTACT' ('UNILATERAL')", doc: "A model: a mesh tied to a formulation, a behaviour and an element type (COQ3, DKT on TRI3 and COQ4 on QUA4 are thin shells, in TRID). 'CONTACT' on the elements of IMPO 'MAIL' makes a contact model for PASAPAS.", example: "mo = mode l mecanique elastique pout ;", f: mode },
+    OpDef { name: "MATE", signature: "MATE MMODEL 'YOUN' E 'NU' nu ('RHO' r) ('ALPH' a ('TREF' t)) (SECT INRY INRZ TORS SECY SECZ EPAI DIM3 …); a value may be an EVOLUTIO of a parameter | MATE MMODEL_CONTACT ('JEU' j|MCHAML) ('ADHE' a|MCHAML)", doc: "Material (and section) data of a model. A property given as an EVOLUTIO depends on the parameter its abscissa names (VARI 'NUAG' evaluates it against a field). For a contact model, the distance the bodies keep ('JEU') and the tension the contact holds before it opens ('ADHE', per unit length or area).", example: "ma = mate mo youn 2.e11 nu 0.3 ;", f: mate },
     OpDef { name: "CARA", signature: "CARA MMODEL ('SECT' s) ('INRY' i) ('INRZ' i) ('TORS' j) ('SECY' a) ('SECZ' a) ('EPAI' e) ('DIM3' e) ('VECT' P)", doc: "Geometric characteristics of a model (merge with MATE using ET).", example: "ca = cara mo sect 1. inrz 1. ;", f: cara },
     OpDef { name: "RIGI", signature: "RIGI MMODEL MCHAML (MCHAML) | RIGI ('DEPL') ('ROTA') (comps) VALUE GEO", doc: "Stiffness of a model, or springs to ground.", example: "k = rigi mo ma ;", f: rigi },
     OpDef { name: "APPU", signature: "APPU ('DEPL') ('ROTA') (comps) ('DIRECTION' VEC) VALUE GEO", doc: "Springs to ground of stiffness VALUE on the listed unknowns of every node.", example: "ri = appu 'UX' 10. p1 ;", f: appu },
@@ -29,7 +29,15 @@ const BEHAVIOURS: &[&str] = &["ELASTIQUE", "ISOTROPE"];
 
 fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let geo = req_geo(a)?;
-    let formulation = a.word_not_operator().unwrap_or_else(|| "MECANIQUE".into()).to_uppercase();
+    // CONTACT is read as a word before any operator check: its first four
+    // letters name the operator CONT.
+    let formulation = match a.keyword_next(&["CONTACT"]) {
+        Some(c) => c.to_string(),
+        None => a.word_not_operator().unwrap_or_else(|| "MECANIQUE".into()).to_uppercase(),
+    };
+    if formulation.starts_with("CONT") {
+        return contact_model(it, a, &geo);
+    }
     if !formulation.starts_with("MECA") {
         return Err(a.err(format!("only the MECANIQUE formulation is available, not {}", formulation)));
     }
@@ -43,6 +51,11 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         if let Some(f) = FORMS.iter().find(|f| super::args::keyword_matches(&w, f)) {
             element = f.to_string();
         } else if ["ELAS", "ISOT"].iter().any(|k| w.starts_with(k)) {
+            behaviour.push(w);
+        } else if INELASTIC.iter().any(|k| w.starts_with(k)) || behaviour.iter().any(|b| inelastic(b)) {
+            // A constitutive law gibi does not integrate: the model exists
+            // (RIGI gives its elastic stiffness, as Cast3M does) and
+            // PASAPAS refuses it by name.
             behaviour.push(w);
         } else {
             return Err(a.err(format!(
@@ -90,9 +103,52 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     Ok(vec![Value::Model(Rc::new(model))])
 }
 
+/// Behaviour families beyond elasticity (mode.notice): accepted by MODE,
+/// with whatever words follow them, so that PASAPAS can name what it lacks.
+const INELASTIC: &[&str] = &["PLAS", "VISC", "ENDO", "FLUA", "NONL", "FISS", "UTIL"];
+
+/// Whether a behaviour word belongs to a law beyond linear elasticity.
+pub(crate) fn inelastic(word: &str) -> bool {
+    INELASTIC.iter().any(|k| word.starts_with(k))
+}
+
+/// `MODE mesh 'CONTACT' ('UNILATERAL'|'FROTTANT' 'COULOMB' …)`: a contact
+/// model on the elements of IMPO 'MAIL' (node against facet: TRI3 in 2D,
+/// TET4 in 3D; segment against segment in 2D: QUA4). PASAPAS turns each
+/// element into a unilateral condition; friction models are accepted here
+/// and refused by PASAPAS by name.
+fn contact_model(it: &mut Interp, a: &mut Args, geo: &Mesh) -> Result<Vec<Value>> {
+    let mut behaviour = Vec::new();
+    // UNILATERAL is read as a word before any operator check (UNIL).
+    while let Some(w) = a.keyword_next(&["UNILATERAL"]).map(String::from).or_else(|| a.word_not_operator()) {
+        behaviour.push(w.trim().to_uppercase());
+    }
+    if behaviour.is_empty() {
+        behaviour.push("UNILATERAL".into());
+    }
+    let allowed: &[ElemType] = if it.opts.dime == 3 { &[ElemType::Tet4] } else { &[ElemType::Tri3, ElemType::Qua4] };
+    if let Some(p) = geo.parts.iter().find(|p| !allowed.contains(&p.ty)) {
+        return Err(a
+            .err(format!("a contact model is made on contact elements, not on {} elements", p.ty.name()))
+            .note("make them with IMPO 'MAIL' line1 line2 (surfaces in 3D)"));
+    }
+    let zones = geo
+        .parts
+        .iter()
+        .map(|p| ModelZone {
+            mesh: Mesh::single(p.clone()),
+            formulation: "CONTACT".into(),
+            behaviour: behaviour.clone(),
+            element: p.ty.name().into(),
+            mode: it.opts.mode.clone(),
+        })
+        .collect();
+    Ok(vec![Value::Model(Rc::new(Model { zones }))])
+}
+
 const PROPS: &[&str] = &[
     "YOUN", "NU", "RHO", "ALPH", "TREF", "SECT", "INRY", "INRZ", "TORS", "SECY", "SECZ", "EPAI", "DIM3", "DX", "DY",
-    "DZ", "VECT",
+    "DZ", "VECT", "JEU", "ADHE", "SIGY", "H",
 ];
 
 fn props(it: &Interp, a: &mut Args, subtype: &str) -> Result<Vec<Value>> {
@@ -100,7 +156,15 @@ fn props(it: &Interp, a: &mut Args, subtype: &str) -> Result<Vec<Value>> {
     let mut consts = std::collections::BTreeMap::new();
     let mut vecs = std::collections::BTreeMap::new();
     let mut laws = std::collections::BTreeMap::new();
+    // Contact data given element by element (MANU 'CHML' mc 'JEU' j).
+    let mut fields: Vec<(&str, Rc<Mchaml>)> = Vec::new();
     while let Some(k) = a.keyword(PROPS) {
+        if matches!(k, "JEU" | "ADHE") {
+            if let Some(f) = a.opt::<Rc<Mchaml>>() {
+                fields.push((k, f));
+                continue;
+            }
+        }
         if k == "VECT" {
             let p = a.req::<PointId>()?;
             vecs.insert(k.to_string(), it.nodes.get(p.0));
@@ -114,19 +178,62 @@ fn props(it: &Interp, a: &mut Args, subtype: &str) -> Result<Vec<Value>> {
     if let Some(w) = a.word_not_operator() {
         return Err(a.err(format!("unknown property {}", w)));
     }
-    let zones = model
-        .zones
-        .iter()
-        .map(|z| MchamlZone {
+    let mut zones = Vec::new();
+    for z in &model.zones {
+        let mut mz = MchamlZone {
             mesh: z.mesh.clone(),
             element: z.element.clone(),
             constants: consts.clone(),
             vectors: vecs.clone(),
             laws: laws.clone(),
             ..Default::default()
-        })
-        .collect();
+        };
+        for (name, f) in &fields {
+            let per = element_values(f, &z.mesh, name).map_err(|e| a.err(e))?;
+            match per.iter().all(|v| *v == per[0]) {
+                // One value everywhere: a constant like a number.
+                true if !per.is_empty() => {
+                    mz.constants.insert(name.to_string(), per[0]);
+                }
+                _ => {
+                    mz.comps.push(name.to_string());
+                    if mz.values.is_empty() {
+                        mz.values = vec![vec![vec![]]; per.len()];
+                    }
+                    for (e, v) in per.iter().enumerate() {
+                        mz.values[e][0].push(*v);
+                    }
+                }
+            }
+        }
+        zones.push(mz);
+    }
     Ok(vec![Value::Mchaml(Rc::new(Mchaml { subtype: subtype.into(), zones }))])
+}
+
+/// The value of component `name` of `f` on each element of `mesh` (its
+/// first point), the field being given on that mesh.
+fn element_values(f: &Mchaml, mesh: &Mesh, name: &str) -> std::result::Result<Vec<f64>, String> {
+    let mut out = Vec::new();
+    for part in &mesh.parts {
+        let z = f
+            .zones
+            .iter()
+            .find(|z| z.mesh.parts.first() == Some(part) || z.mesh == Mesh::single(part.clone()))
+            .ok_or_else(|| format!("the {} field is not given on the elements of the model", name))?;
+        let ci = z.comps.iter().position(|c| c == name);
+        for e in 0..part.len() {
+            let v = match (ci, z.values.get(e).and_then(|pts| pts.first())) {
+                (Some(ci), Some(pt)) => pt[ci],
+                _ => *z.constants.get(name).ok_or_else(|| format!("the field has no component {}", name))?,
+            };
+            if !v.is_finite() {
+                return Err(format!("the {} field holds a non-finite value", name));
+            }
+            out.push(v);
+        }
+    }
+    Ok(out)
 }
 
 fn mate(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {

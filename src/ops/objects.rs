@@ -18,7 +18,7 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "EXIS",
-        signature: "EXIS NAME | TABLE KEY | CHPOINT COMP | LIST VALUE",
+        signature: "EXIS NAME | TABLE KEY | CHPOINT COMP | CHARGEMENT NAME | LIST VALUE",
         doc: "Whether a name, a table key, a component or a list member exists.",
         example: "si (exis t 'K') ; mess 'yes' ; finsi ;",
         f: exis,
@@ -105,6 +105,11 @@ fn exis(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         },
         Value::Chpo(c) => match a.opt_right::<String>() {
             Some(comp) => c.components().contains(&comp),
+            None => true,
+        },
+        // Whether a load of that name is part of a CHARGEMENT.
+        Value::Charge(c) => match a.opt_right::<String>() {
+            Some(name) => c.has(&name.trim().to_uppercase().chars().take(4).collect::<String>()),
             None => true,
         },
         _ => true,

@@ -271,6 +271,7 @@ pub(super) fn pointer(v: &Value) -> i64 {
         Value::Model(r) => addr(r),
         Value::Mchaml(r) => addr(r),
         Value::Evol(r) => addr(r),
+        Value::Charge(r) => addr(r),
         Value::Host(r) => addr(r),
     }
 }

@@ -34,6 +34,10 @@ pub(super) fn set(it: &mut Interp, a: &mut Args, key: &'static str) -> Result<()
                 return Err(a.err(format!("ECHO is -1, 0, 1 or 2, found {}", n)));
             }
             it.opts.echo = n;
+            // Kept as given: the messages Cast3M prints by default
+            // (PASAPAS's step lines) stay silent only under an explicit
+            // OPTI ECHO 0, gibi's default being 0 too.
+            it.opts.kept.insert(key, Value::Int(n));
         }
         // As Cast3M does, a negative density counts by its size.
         "DENS" => it.opts.dens = a.req_num()?.abs(),

@@ -35,8 +35,8 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "ORIE",
-        signature: "ORIE MAILLAGE (('DIRE') VECTOR | 'POIN' POINT)",
-        doc: "The mesh with one orientation: lines head to tail, plane surfaces counter-clockwise, surfaces in space consistent across edges, volumes positive (each connected piece follows its first element). With a vector (or 'POIN' a point), each surface element's normal is turned along the vector (or towards the point's side).",
+        signature: "ORIE MAILLAGE (('DIRECTION') VECTOR | 'POINT' POINT)",
+        doc: "The mesh with one orientation: lines head to tail, plane surfaces counter-clockwise, surfaces in space consistent across edges, volumes positive (each connected piece follows its first element). With a vector (or 'POINT' a point), each surface element (TRI3, TRI6, QUA4, QUA8) is turned so that its normal has a positive component along the vector (or points to the side of the point); other elements are kept.",
         example: "l2 = orie l ;",
         f: orie,
     },

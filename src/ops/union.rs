@@ -80,6 +80,11 @@ pub(crate) fn union(_: &mut Interp, a: &Args, x: Value, y: Value, noer: bool) ->
             Model(Rc::new(crate::value::Model { zones: p.zones.iter().chain(q.zones.iter()).cloned().collect() }))
         }
         (Mchaml(p), Mchaml(q)) => Mchaml(Rc::new(p.merge(q))),
+        // Loads join part by part, in order (several parts may share a name:
+        // PASAPAS and TIRE sum them).
+        (Charge(p), Charge(q)) => {
+            Charge(Rc::new(crate::value::Chargement { parts: p.parts.iter().chain(&q.parts).cloned().collect() }))
+        }
         _ => return Err(a.err(format!("cannot join {} and {}", x.type_name(), y.type_name()))),
     })
 }

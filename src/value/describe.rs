@@ -101,8 +101,43 @@ pub fn describe(v: &Value) -> String {
             }
             s
         }
+        Value::Charge(c) => chargement(c),
         other => other.type_name(),
     }
+}
+
+/// One line per elementary load: its name, what it is in space and its
+/// time function (or the times of the table form).
+fn chargement(c: &crate::value::Chargement) -> String {
+    use crate::value::chargement::Timing;
+    let mut s = format!("{} load(s)", c.parts.len());
+    for (i, p) in c.parts.iter().enumerate() {
+        let name = if p.name.is_empty() { "(no name)".to_string() } else { format!("'{}'", p.name) };
+        match &p.time {
+            Timing::Scaled { field, function } => {
+                let t = function.times();
+                s.push_str(&format!(
+                    "\n  load {} {}: {} times a time function of {} point(s) from {} to {}",
+                    i + 1,
+                    name,
+                    field.type_name(),
+                    t.len(),
+                    fmt_float(t[0]),
+                    fmt_float(t[t.len() - 1])
+                ));
+                let first = describe(field);
+                s.push_str(&format!("\n    {}", first.replace('\n', "\n    ")));
+            }
+            Timing::Table(steps) => s.push_str(&format!(
+                "\n  load {} {}: {} field(s) at times {}",
+                i + 1,
+                name,
+                steps.len(),
+                steps.iter().map(|(t, _)| fmt_float(*t)).collect::<Vec<_>>().join(" ")
+            )),
+        }
+    }
+    s
 }
 
 /// Nature, components, then one line per node (at most MAX_LINES).

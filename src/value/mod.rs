@@ -4,6 +4,7 @@
 //! object, except TABLE which Gibiane mutates in place (`T . k = v`).
 
 pub mod arith;
+pub mod chargement;
 mod describe;
 mod display;
 pub mod field;
@@ -12,6 +13,7 @@ pub mod model;
 pub mod rigidity;
 pub mod table;
 
+pub use chargement::Chargement;
 pub use display::{fmt_float, list_value, list_value_short};
 pub use field::{Chpoint, Nature};
 pub use model::{Evolution, Mchaml, Model};
@@ -60,6 +62,8 @@ pub enum Value {
     Model(Rc<Model>),
     Mchaml(Rc<Mchaml>),
     Evol(Rc<Evolution>),
+    /// CHARGEMENT: loads in space and time (CHAR).
+    Charge(Rc<Chargement>),
     Host(Rc<dyn HostObject>),
 }
 
@@ -84,6 +88,7 @@ pub enum Ty {
     Mmodel,
     Mchaml,
     Evolutio,
+    Chargeme,
     Host,
 }
 
@@ -108,6 +113,7 @@ impl Ty {
             Ty::Mmodel => "MMODEL",
             Ty::Mchaml => "MCHAML",
             Ty::Evolutio => "EVOLUTIO",
+            Ty::Chargeme => "CHARGEME",
             Ty::Host => "HOST",
         }
     }
@@ -134,6 +140,7 @@ impl Ty {
             Ty::Mmodel,
             Ty::Mchaml,
             Ty::Evolutio,
+            Ty::Chargeme,
         ]
         .into_iter()
         .find(|t| t.name() == s)
@@ -161,6 +168,7 @@ impl Value {
             Value::Model(_) => Ty::Mmodel,
             Value::Mchaml(_) => Ty::Mchaml,
             Value::Evol(_) => Ty::Evolutio,
+            Value::Charge(_) => Ty::Chargeme,
             Value::Host(_) => Ty::Host,
         }
     }

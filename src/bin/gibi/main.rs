@@ -77,6 +77,39 @@ pub(crate) fn catch_ctrl_c(gibi: &Interpreter) {
     });
 }
 
+/// The progress of long operators (PASAPAS's steps) as a bar on the
+/// terminal: shown once a run has lasted half a second, cleared at its end.
+fn progress_bar() -> impl FnMut(usize, usize) {
+    let mut bar: Option<indicatif::ProgressBar> = None;
+    let mut start = std::time::Instant::now();
+    move |done, total| {
+        if done <= 1 {
+            start = std::time::Instant::now();
+            if let Some(b) = bar.take() {
+                b.finish_and_clear();
+            }
+        }
+        if bar.is_none() && done < total && start.elapsed().as_secs_f64() > 0.5 {
+            let b = indicatif::ProgressBar::new(total as u64);
+            b.set_style(
+                indicatif::ProgressStyle::with_template("{msg} [{bar:40}] {pos}/{len} steps, {elapsed} (eta {eta})")
+                    .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar())
+                    .progress_chars("=> "),
+            );
+            b.set_message("PASAPAS");
+            bar = Some(b);
+        }
+        if let Some(b) = &bar {
+            b.set_length(total as u64);
+            b.set_position(done as u64);
+            if done >= total {
+                b.finish_and_clear();
+                bar = None;
+            }
+        }
+    }
+}
+
 /// Standard input as deck text (Latin-1 bytes accepted, see `decode`).
 fn read_stdin() -> Result<String, String> {
     let mut b = Vec::new();
@@ -112,12 +145,15 @@ fn run() -> ExitCode {
         eprintln!("gibi: cannot read the procedure library {}: no such file or folder", p.display());
         return ExitCode::from(66);
     }
-    let mut gibi = Interpreter::builder()
+    let mut builder = Interpreter::builder()
         .output(std::io::stdout())
         .files(FilePolicy::Under(cwd))
         .procedures(procedures)
-        .report_files(!cli.quiet)
-        .build();
+        .report_files(!cli.quiet);
+    if std::io::stderr().is_terminal() {
+        builder = builder.progress(progress_bar());
+    }
+    let mut gibi = builder.build();
 
     if cli.list_operators {
         println!("{}", repl::catalogue_json(gibi.registry()));

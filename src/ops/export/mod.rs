@@ -3,18 +3,20 @@
 //! arguments and convert objects; the formats live in `crate::io`.
 //!
 //! Every path goes through the host's file policy. Output names come from
-//! `OPTI SORT 'name'` (kept in `opts.other`, like every OPTI key gibi does
+//! `OPTI SORT 'name'` (kept in `opts.kept`, like every OPTI key gibi does
 //! not interpret itself); what must survive between calls (the steps of a
 //! `.pvd` collection, the picture counter) is the interpreter's typed
 //! `exports` state.
 //!
-//! One file per kind: [`sort_vtk`] (ParaView), [`sort_matrix`]
+//! One file per kind: [`sort_vtk`] (ParaView) with [`sort_pasapas`] (a
+//! PASAPAS table as a collection), [`sort_matrix`]
 //! (MatrixMarket), [`read_gmsh`], [`pictures`] (TRAC, DESS, VECT) with
 //! [`trac_fields`] (the scalar a picture is coloured by).
 
 mod pictures;
 mod read_gmsh;
 mod sort_matrix;
+mod sort_pasapas;
 mod sort_vtk;
 mod trac_fields;
 
@@ -28,11 +30,13 @@ use std::path::{Path, PathBuf};
 pub(crate) const OPS: &[OpDef] = &[
     OpDef {
         name: "SORT",
-        signature: "SORT 'VTK' MAILLAGE (CHPOINT|MCHAML ('NAME'))… ('CONTACT' RIGIDITE SOLUTION (LIMITS)) ('TEMPS' t) | SORT 'MAT' RIGIDITE 'file.mtx'",
+        signature: "SORT 'VTK' MAILLAGE (CHPOINT|MCHAML ('NAME'))… ('CONTACT' RIGIDITE SOLUTION (LIMITS)) ('TEMPS' t) | SORT 'VTK' TABLE_PASAPAS (MAILLAGE) | SORT 'MAT' RIGIDITE 'file.mtx'",
         doc: "Write files for other tools. 'VTK': a ParaView .vtu named by OPTI SORT (default gibi.vtu) with \
               nodal fields (UX UY UZ → one 3-component vector, also in 2D) and element fields (MCHAML, averaged \
               per element); with 'TEMPS' t each call writes name_NNNN.vtu and rewrites name.pvd with every time \
-              so far. A field is named by the word after it, else by its variable name. 'MAT': the assembled \
+              so far. A field is named by the word after it, else by its variable name. A PASAPAS table gives \
+              name.pvd with every saved step (DEPL, SIGMA, EPSI, contact_status, contact_pressure) on the mesh of \
+              its model (or the mesh given). 'MAT': the assembled \
               matrix in MatrixMarket format plus file.mtx.dofs (row node component); conditions are extra LX \
               rows with a single multiplier each.",
         example: "opti sort 'beam' ; sort 'VTK' s u 'DEPL' sig 'SIGMA' 'TEMPS' 1. ;",

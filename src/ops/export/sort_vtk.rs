@@ -9,7 +9,8 @@ use crate::eval::args::Args;
 use crate::eval::Interp;
 use crate::fem::mesh::Mesh;
 use crate::io::vtk;
-use crate::value::{Chpoint, Mchaml, Value};
+use crate::value::{Chpoint, Mchaml, Table, Value};
+use std::cell::RefCell;
 use std::path::Path;
 use std::rc::Rc;
 
@@ -17,6 +18,9 @@ use std::rc::Rc;
 type ContactArgs = (Rc<crate::value::Rigidite>, Rc<Chpoint>, Option<Rc<Chpoint>>);
 
 pub(super) fn sort_vtk(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    if let Some(t) = a.opt::<Rc<RefCell<Table>>>() {
+        return super::sort_pasapas::sort_table(it, a, &t);
+    }
     let mut mesh: Option<Rc<Mesh>> = None;
     let mut fields: Vec<(Value, String)> = Vec::new();
     let mut pending: Option<(Value, String)> = None;
@@ -114,7 +118,7 @@ pub(super) fn sort_vtk(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 /// An element field averaged per element, on the cells of `grid`.
 /// Elements of the field that the exported mesh lacks are dropped; cells
 /// the field does not cover get NaN.
-fn cell_field(grid: &vtk::Grid, m: &Mchaml, name: &str) -> vtk::DataArray {
+pub(super) fn cell_field(grid: &vtk::Grid, m: &Mchaml, name: &str) -> vtk::DataArray {
     let mut comps: Vec<String> = Vec::new();
     for z in &m.zones {
         let names = if z.values.is_empty() { z.constants.keys().cloned().collect() } else { z.comps.clone() };

@@ -162,6 +162,7 @@ pub fn solve_unilateral(
         rule,
         keep_last: opts.keep_last,
         cancel: opts.cancel.clone(),
+        adhesion: None,
     };
     let global = |v: &[usize]| v.iter().map(|&q| uni[q]).collect::<Vec<_>>();
     let mut records = Vec::new();

@@ -182,6 +182,20 @@ impl Condenser {
 
     /// The condensed problem `T x = h` for one load (§3.2).
     pub fn condensed(&self, load: &Load) -> Result<Condensed, SolveError> {
+        let fw = self.forward_load(load)?;
+        if let Ok(mut slot) = self.forwarded.lock() {
+            *slot = Some((load_key(load), fw.y.subcols(0, 1).to_owned()));
+        }
+        Ok(self.condensed_from(&fw, &load.d))
+    }
+
+    /// The forward substitution of a load through the first block of the
+    /// factor: the right-hand side of the load and of its forces alone, and
+    /// their reduced tail. It is linear in the load, so a caller whose
+    /// loads combine a few fixed ones forwards each once
+    /// ([`Forwarded::add`]) and goes on with [`Condenser::condensed_from`]
+    /// and [`Condenser::recover_from`] (PASAPAS's steps).
+    pub fn forward_load(&self, load: &Load) -> Result<Forwarded, SolveError> {
         self.check_load(load)?;
         let sys = self.sys();
         let (n, dim) = (sys.n, sys.dim());
@@ -189,9 +203,7 @@ impl Condenser {
         sys.rhs(&load.f, &load.d, &mut full);
         let mut f_only = vec![0.0; dim];
         f_only[..n].copy_from_slice(&load.f);
-        // The Schur system reads −4T x = r, so h = −r/4; with d = 0
-        // (F only), r = −2ΣCH⁻¹F.
-        let (x, r) = match &self.core {
+        let (y, r) = match &self.core {
             Core::Bordered(b) => b.forward(&[full, f_only]),
             Core::Whole(w) => {
                 let x = w.forward(&[full, f_only]);
@@ -199,16 +211,23 @@ impl Condenser {
                 (x, r)
             }
         };
-        if let Ok(mut slot) = self.forwarded.lock() {
-            *slot = Some((load_key(load), x.subcols(0, 1).to_owned()));
-        }
+        Ok(Forwarded { y, r })
+    }
+
+    /// [`Condenser::condensed`] from a forwarded load; `d` are the limits of
+    /// every condition (the load's).
+    pub fn condensed_from(&self, fw: &Forwarded, d: &[f64]) -> Condensed {
+        let sys = self.sys();
+        let r = &fw.r;
         let mu = self.uni.len();
         let alpha: Vec<f64> = self.uni.iter().map(|&i| sys.scaling.alpha[i]).collect();
         let g_factor = match &self.core {
             Core::Whole(w) => w.tail_factor.clone(),
             Core::Bordered(_) => None,
         };
-        Ok(Condensed {
+        // The Schur system reads −4T x = r, so h = −r/4; with d = 0
+        // (F only), r = −2ΣCH⁻¹F.
+        Condensed {
             g: self.g.clone(),
             g_factor,
             h: (0..mu).map(|q| -r[(q, 0)] / 4.0).collect(),
@@ -217,20 +236,22 @@ impl Condenser {
             sense: self.sense.clone(),
             xtf: (0..mu).map(|q| -r[(q, 1)] / 2.0).collect(),
             rows: self.rows.clone(),
-            d: self.uni.iter().map(|&i| load.d[i]).collect(),
-        })
+            d: self.uni.iter().map(|&i| d.get(i).copied().unwrap_or(0.0)).collect(),
+        }
+    }
+
+    /// [`Condenser::recover`] from a forwarded load: the partial back
+    /// substitution only.
+    pub fn recover_from(&self, fw: &Forwarded, x: &[f64], active: &[bool]) -> Result<Solution, SolveError> {
+        self.finish(fw.y.subcols(0, 1).to_owned(), x, active)
     }
 
     /// Displacements and multipliers for the condensed solution `x` (the
     /// λ2 of the unilateral conditions) and their statuses.
     pub fn recover(&self, load: &Load, x: &[f64], active: &[bool]) -> Result<Solution, SolveError> {
         self.check_load(load)?;
-        let mu = self.uni.len();
-        if x.len() != mu || active.len() != mu {
-            return Err(SolveError::Other("status vector size mismatch".into()));
-        }
         let sys = self.sys();
-        let (n, m, dim) = (sys.n, sys.m, sys.dim());
+        let dim = sys.dim();
         let saved = self.forwarded.lock().ok().and_then(|mut s| s.take());
         let fx = match saved {
             Some((key, fx)) if key == load_key(load) => fx,
@@ -243,6 +264,18 @@ impl Condenser {
                 }
             }
         };
+        self.finish(fx, x, active)
+    }
+
+    /// The back substitution from a forwarded right-hand side `fx` (one
+    /// column) and the tail values `x`.
+    fn finish(&self, fx: Mat<f64>, x: &[f64], active: &[bool]) -> Result<Solution, SolveError> {
+        let mu = self.uni.len();
+        if x.len() != mu || active.len() != mu {
+            return Err(SolveError::Other("status vector size mismatch".into()));
+        }
+        let sys = self.sys();
+        let (n, m) = (sys.n, sys.m);
         let z = match &self.core {
             Core::Bordered(b) => b.finish(fx, x),
             Core::Whole(w) => w.finish_with_tail(fx, x),
@@ -255,6 +288,24 @@ impl Condenser {
             lambda[i] = if active[q] { 2.0 * sg[i] * x[q] } else { 0.0 };
         }
         Ok(Solution { u: z[..n].to_vec(), lambda, active: act })
+    }
+}
+
+/// A load forwarded through the first block of a [`Condenser`]'s factor
+/// (see [`Condenser::forward_load`]).
+#[derive(Debug, Clone)]
+pub struct Forwarded {
+    /// The forwarded right-hand sides (the load, its forces alone).
+    y: Mat<f64>,
+    /// Their reduced tail.
+    r: Mat<f64>,
+}
+
+impl Forwarded {
+    /// `self += a · other` (the forward substitution is linear).
+    pub fn add(&mut self, a: f64, other: &Forwarded) {
+        self.y += faer::Scale(a) * &other.y;
+        self.r += faer::Scale(a) * &other.r;
     }
 }
 

@@ -336,6 +336,24 @@ pub fn run(
     on_iter: &mut dyn FnMut(&IterRecord),
 ) -> Result<StatusResult, SolveError> {
     let mut op = TOperator::new(c)?;
+    // The adhesion in the units of x (physical λ = 2σx).
+    let scaled;
+    let opts = match &opts.adhesion {
+        Some(a) if a.len() != c.sigma.len() => {
+            return Err(SolveError::Other(format!("{} adhesion values for {} conditions", a.len(), c.sigma.len())))
+        }
+        Some(a) if a.iter().any(|v| !(v.is_finite() && *v >= 0.0)) => {
+            return Err(SolveError::Other("adhesion must be finite and non-negative".into()))
+        }
+        Some(a) => {
+            scaled = StatusOptions {
+                adhesion: Some(a.iter().zip(&c.sigma).map(|(v, s)| v / (2.0 * s)).collect()),
+                ..opts.clone()
+            };
+            &scaled
+        }
+        None => opts,
+    };
     let (x, active, records) = iterate(&mut op, &c.sense, &c.rows, &c.d, opts, on_iter)?;
     Ok(StatusResult { x, active, records })
 }

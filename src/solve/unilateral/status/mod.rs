@@ -63,6 +63,10 @@ pub struct StatusOptions {
     /// Set from outside (Ctrl-C) to stop between two solves with
     /// [`SolveError::Interrupted`]: a long status loop is not waited out.
     pub cancel: Option<Cancel>,
+    /// Adhesion: the tension each condition holds while active before it
+    /// is released, in the units of its physical multiplier (a force);
+    /// none by default. Honoured by the condensed operator's `run`.
+    pub adhesion: Option<Vec<f64>>,
 }
 
 impl StatusOptions {
@@ -229,19 +233,31 @@ pub(crate) fn iterate(
             // must hold at the end. Cast3M drops such rows too (MAFREIN).
             // Rows that depend on other unilateral rows are reported
             // (§7.5: do not guess which of them should act).
+            // A row that depends on other unilateral rows starts inactive
+            // (deferred, not dropped): its value follows from theirs while
+            // they act, and it is checked like any inactive row. The
+            // symmetric node-to-segment contact of two meshes makes such
+            // rows (impo.notice's default), and Cast3M solves them.
+            let mut deferred = 0;
             loop {
                 let dep = b.dependent(&cold);
                 let k = match dep[..] {
-                    [k] if cold[k] => k,
+                    [k] if cold[k] => {
+                        groups.fixed_inactive[k] = true;
+                        dropped.push((k, dep));
+                        k
+                    }
+                    [.., k] if cold[k] => {
+                        deferred += 1;
+                        k
+                    }
                     _ => return Err(SolveError::DependentConditions { conditions: dep }),
                 };
-                groups.fixed_inactive[k] = true;
                 cold[k] = false;
-                dropped.push((k, dep));
                 if b.set_status(&cold).is_ok() {
                     break;
                 }
-                if dropped.len() == m {
+                if dropped.len() + deferred >= m {
                     return Err(SolveError::DependentConditions { conditions: (0..m).collect() });
                 }
             }
@@ -260,7 +276,13 @@ pub(crate) fn iterate(
             return Err(SolveError::Interrupted);
         }
         let x = b.solve()?;
-        let v: Vec<f64> = (0..m).map(|i| sense[i] * x[i]).collect();
+        // s_i x_i: a penetration for an inactive condition, a tension for
+        // an active one, beyond its adhesion if it has some.
+        let held = |i: usize| match &opts.adhesion {
+            Some(a) if status[i] => a[i],
+            _ => 0.0,
+        };
+        let v: Vec<f64> = (0..m).map(|i| sense[i] * x[i] - held(i)).collect();
         let worst = |act: bool| {
             (0..m).filter(|&i| status[i] == act && !groups.fixed_inactive[i]).fold(0.0_f64, |a, i| a.max(v[i]))
         };
@@ -420,8 +442,19 @@ fn activate_all(
         activate(ctx, &mut trial, i, &mut released);
         activated.push(i);
     }
-    if b.set_status(&trial).is_err() {
-        return Err(SolveError::DependentConditions { conditions: b.dependent(&trial) });
+    // An activation that makes the active rows dependent is skipped: that
+    // row's value follows from the others once they act, and it is tested
+    // again at the next solve. Only when every activation is of that kind
+    // are the rows reported (§7.5: a violated row that depends on active
+    // ones cannot be met without releasing one of them).
+    while let Err(k) = b.set_status(&trial) {
+        match activated.iter().position(|&i| i == k) {
+            Some(pos) if activated.len() > 1 => {
+                activated.remove(pos);
+                trial[k] = false;
+            }
+            _ => return Err(SolveError::DependentConditions { conditions: b.dependent(&trial) }),
+        }
     }
     *status = trial;
     activated.sort_unstable();

@@ -39,16 +39,29 @@ fn bad_input_is_an_error_not_a_panic() {
 }
 
 #[test]
-fn dependent_rows_are_reported() {
-    // u0 ≥ 0, u1 ≥ 0 and u0 + u1 ≥ 0 active together: the third row is the
-    // sum of the first two (not proportional to either).
+fn dependent_rows_are_deferred_or_reported() {
+    // u0 ≥ 0, u1 ≥ 0 and u0 + u1 ≥ 0 pressed down: the third row is the sum
+    // of the first two (not proportional to either). All active is
+    // singular; the third starts inactive, and its value follows from the
+    // others (0, on its limit): a KKT point, with the reaction on the
+    // first two.
     let p = Dense::new(Mat::<f64>::identity(2, 2), vec![-1.0, -1.0])
         .cond(&[(0, 1.0)], MINI, 0.0)
         .cond(&[(1, 1.0)], MINI, 0.0)
         .cond(&[(0, 1.0), (1, 1.0)], MINI, 0.0);
-    let r = solve(&p, &opts());
-    assert_eq!(r.unwrap_err(), SolveError::DependentConditions { conditions: vec![0, 1, 2] });
-    assert!(matches!(solve_ancien(&p, &opts()), Err(SolveError::DependentConditions { .. })));
+    let r = solve(&p, &opts()).unwrap();
+    assert_eq!(r.active, vec![true, true, false]);
+    assert!(r.u.iter().all(|u| u.abs() < 1e-14), "{:?}", r.u);
+    assert!(r.lambda[0] < 0.0 && r.lambda[1] < 0.0 && r.lambda[2] == 0.0, "{:?}", r.lambda);
+    let old = solve_ancien(&p, &opts()).unwrap();
+    assert_eq!(old.active, r.active);
+    // u0 + u1 ≥ 1 cannot hold while the first two act at 0: meeting it
+    // means releasing them, which the loop does not guess (§7.5).
+    let q = Dense::new(Mat::<f64>::identity(2, 2), vec![-1.0, -1.0])
+        .cond(&[(0, 1.0)], MINI, 0.0)
+        .cond(&[(1, 1.0)], MINI, 0.0)
+        .cond(&[(0, 1.0), (1, 1.0)], MINI, 1.0);
+    assert_eq!(solve(&q, &opts()).unwrap_err(), SolveError::DependentConditions { conditions: vec![0, 1, 2] });
 }
 
 /// A backend whose only condition is always violated, whatever its status:
