@@ -80,6 +80,20 @@ fn native_operators_win_over_library_procedures_of_their_name_and_deck_procedure
     assert_eq!(g.get_f64("z"), Some(4.0));
 }
 
+/// A library procedure runs where its name would run; where an operator
+/// reads its arguments the name is a word, as in Cast3M, which loads a
+/// library procedure only when it comes to run it (`VARI PSATT T` with
+/// a PSATT procedure in the library).
+#[test]
+fn a_library_procedure_name_read_as_an_argument_is_a_word() {
+    let (mut g, _) = session(&["folder"]);
+    g.run_str("t", "p = vari psatt 373.15 ; q = psatt 2. ; w = mot psatt ;").unwrap();
+    // IAPWS-IF97 saturation pressure at 373.15 K: 101 417.98 Pa.
+    assert!((g.get_f64("p").unwrap() - 101_417.98).abs() < 0.1, "{:?}", g.get_f64("p"));
+    assert_eq!(g.get_f64("q"), Some(4.0));
+    assert!(matches!(g.get("W"), Some(gibi::Value::Mot(m)) if &*m == "PSATT"));
+}
+
 #[test]
 fn errors_inside_a_library_procedure_point_into_its_file() {
     let (mut g, _) = session(&["folder", "utilproc.txt"]);

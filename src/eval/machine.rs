@@ -93,10 +93,7 @@ impl Interp {
                 kind => {
                     let named = matches!(kind, ItemKind::Word(_));
                     match self.resolve(kind, span)? {
-                        TokKind::Word(w) => match self.library_proc(&w, span)? {
-                            Some(p) => out.push(Tok { kind: TokKind::Val(Value::Proc(p)), span, named }),
-                            None => self.word_token(w, span, &mut out)?,
-                        },
+                        TokKind::Word(w) => self.word_token(w, span, &mut out)?,
                         kind => out.push(Tok { kind, span, named }),
                     }
                 }
@@ -237,15 +234,28 @@ impl Interp {
                         st.left.push(Value::Mot(s))
                     }
                 },
-                TokKind::Word(w) => match self.registry.find(&w) {
-                    Some(op) => {
-                        last_op = Some(op.name);
-                        self.invoke(op, &mut st, t.span)?
+                // A procedure of the library runs where its name would run
+                // (before an operator whose 4 letters it merely begins
+                // with: TRANSGEN is not TRAN). Where an operator reads its
+                // arguments the name is a word (`VARI PSATT x`: PSATT is
+                // also a library procedure), as in Cast3M, which loads a
+                // library procedure only when it comes to run it.
+                TokKind::Word(w) => match self.library_proc(&w, t.span)? {
+                    Some(p) => {
+                        let r = self.call_proc(p, &mut st, t.span)?;
+                        self.called_proc = true;
+                        st.left.extend(r);
                     }
-                    None => {
-                        self.refuse(&w, t.span, last_op)?;
-                        st.left.push(Value::mot(&w))
-                    }
+                    None => match self.registry.find(&w) {
+                        Some(op) => {
+                            last_op = Some(op.name);
+                            self.invoke(op, &mut st, t.span)?
+                        }
+                        None => {
+                            self.refuse(&w, t.span, last_op)?;
+                            st.left.push(Value::mot(&w))
+                        }
+                    },
                 },
                 TokKind::Sym(s) => match self.registry.find(s) {
                     Some(op) => {
