@@ -56,10 +56,10 @@ pub fn perimeter(nx: usize) -> Vec<usize> {
     v
 }
 
-/// Seconds of one plain faer factorisation (AMD, symbolic + numeric LLᵀ,
-/// supernodal by the automatic rule) of K with the unknowns `fixed`
-/// eliminated (Dirichlet).
-pub fn reference_f(k: &Matrix, fixed: &[usize]) -> f64 {
+/// The upper triangle of K with the unknowns `fixed` eliminated
+/// (Dirichlet), renumbered. Laplacian rows lose their eliminated
+/// neighbours: still SPD.
+fn reduced(k: &Matrix, fixed: &[usize]) -> SparseColMat<usize, f64> {
     let mut keep = vec![true; k.n];
     for &j in fixed {
         keep[j] = false;
@@ -78,8 +78,14 @@ pub fn reference_f(k: &Matrix, fixed: &[usize]) -> f64 {
         .filter(|&&(i, j, _)| keep[i] && keep[j] && i <= j)
         .map(|&(i, j, v)| Triplet::new(new[i], new[j], v))
         .collect();
-    // Laplacian rows lose their eliminated neighbours: still SPD.
-    let a = SparseColMat::<usize, f64>::try_new_from_triplets(nn, nn, &trip).expect("valid");
+    SparseColMat::<usize, f64>::try_new_from_triplets(nn, nn, &trip).expect("valid")
+}
+
+/// Seconds of one plain faer factorisation (AMD, symbolic + numeric LLᵀ,
+/// supernodal by the automatic rule) of K with the unknowns `fixed`
+/// eliminated (Dirichlet).
+pub fn reference_f(k: &Matrix, fixed: &[usize]) -> f64 {
+    let a = reduced(k, fixed);
     let t = Instant::now();
     let llt = a.as_ref().sp_cholesky(faer::Side::Upper).expect("SPD");
     let s = t.elapsed().as_secs_f64();
@@ -125,25 +131,8 @@ pub fn median(v: &mut [f64]) -> f64 {
 #[allow(dead_code)]
 pub fn reference_f_s(k: &Matrix, fixed: &[usize]) -> (f64, f64, f64) {
     use faer::linalg::solvers::Solve;
-    let mut keep = vec![true; k.n];
-    for &j in fixed {
-        keep[j] = false;
-    }
-    let mut new = vec![usize::MAX; k.n];
-    let mut nn = 0;
-    for j in 0..k.n {
-        if keep[j] {
-            new[j] = nn;
-            nn += 1;
-        }
-    }
-    let trip: Vec<Triplet<usize, usize, f64>> = k
-        .entries
-        .iter()
-        .filter(|&&(i, j, _)| keep[i] && keep[j] && i <= j)
-        .map(|&(i, j, v)| Triplet::new(new[i], new[j], v))
-        .collect();
-    let a = SparseColMat::<usize, f64>::try_new_from_triplets(nn, nn, &trip).expect("valid");
+    let a = reduced(k, fixed);
+    let nn = a.nrows();
     let t = Instant::now();
     let llt = a.as_ref().sp_cholesky(faer::Side::Upper).expect("SPD");
     let f = t.elapsed().as_secs_f64();

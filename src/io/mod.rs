@@ -8,7 +8,7 @@
 //!
 //! Like `solve`, this layer knows nothing of the language: it works on the
 //! FE core's plain data (`fem::mesh`) and on numbers and names. The Gibiane
-//! operators that call it live in `ops/export.rs`. It prints nothing; every
+//! operators that call it live in `ops/export/`. It prints nothing; every
 //! failure is an [`IoError`] with a message a user can act on.
 
 pub mod gmsh;

@@ -4,8 +4,8 @@
 //! model the status and pressure at the contact nodes (contact_status,
 //! contact_pressure; NaN elsewhere).
 
-use super::sort_vtk::cell_field;
-use super::{io_err, out_path, sort_base, write_err, wrote};
+use super::sort_vtk::{cell_field, write_collection, write_step};
+use super::{io_err, sort_base};
 use crate::error::Result;
 use crate::eval::args::Args;
 use crate::eval::Interp;
@@ -13,7 +13,6 @@ use crate::fem::mesh::Mesh;
 use crate::io::vtk;
 use crate::value::{Key, Table, Value};
 use std::cell::RefCell;
-use std::path::Path;
 use std::rc::Rc;
 
 pub(super) fn sort_table(it: &mut Interp, a: &mut Args, t: &Rc<RefCell<Table>>) -> Result<Vec<Value>> {
@@ -62,15 +61,8 @@ pub(super) fn sort_table(it: &mut Interp, a: &mut Args, t: &Rc<RefCell<Table>>) 
                 grid.add_point_field(name, &[comp.to_string()], |n, k| c.get(n, k));
             }
         }
-        let file = format!("{}_{:04}.vtu", base, i);
-        let p = out_path(it, &file)?;
-        grid.write(&p).map_err(write_err)?;
-        wrote(it, &p);
-        let local = Path::new(&file).file_name().map_or(file.clone(), |f| f.to_string_lossy().into_owned());
-        steps.push((time, local));
+        steps.push((time, write_step(it, &grid, &format!("{}_{:04}.vtu", base, i))?));
     }
-    let p = out_path(it, &format!("{}.pvd", base))?;
-    vtk::write_pvd(&p, &steps).map_err(write_err)?;
-    wrote(it, &p);
+    write_collection(it, &base, &steps)?;
     Ok(vec![])
 }

@@ -100,19 +100,30 @@ pub(super) fn sort_vtk(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 Some((b, steps)) if *b == base => steps.clone(),
                 _ => Vec::new(),
             };
-            let file = format!("{}_{:04}.vtu", base, steps.len());
-            let p = out_path(it, &file)?;
-            grid.write(&p).map_err(write_err)?;
-            wrote(it, &p);
-            let local = Path::new(&file).file_name().map_or(file.clone(), |f| f.to_string_lossy().into_owned());
+            let local = write_step(it, &grid, &format!("{}_{:04}.vtu", base, steps.len()))?;
             steps.push((t, local));
-            let p = out_path(it, &format!("{}.pvd", base))?;
-            vtk::write_pvd(&p, &steps).map_err(write_err)?;
-            wrote(it, &p);
+            write_collection(it, &base, &steps)?;
             it.exports.pvd = Some((base, steps));
         }
     }
     Ok(vec![])
+}
+
+/// Writes one step's `.vtu` as `file`; its name as the `.pvd` that lists
+/// it names it (the same folder).
+pub(super) fn write_step(it: &mut Interp, grid: &vtk::Grid, file: &str) -> Result<String> {
+    let p = out_path(it, file)?;
+    grid.write(&p).map_err(write_err)?;
+    wrote(it, &p);
+    Ok(Path::new(file).file_name().map_or(file.to_string(), |f| f.to_string_lossy().into_owned()))
+}
+
+/// Writes `base.pvd`, the collection of `steps` (time, `.vtu` file).
+pub(super) fn write_collection(it: &mut Interp, base: &str, steps: &[(f64, String)]) -> Result<()> {
+    let p = out_path(it, &format!("{}.pvd", base))?;
+    vtk::write_pvd(&p, steps).map_err(write_err)?;
+    wrote(it, &p);
+    Ok(())
 }
 
 /// An element field averaged per element, on the cells of `grid`.
