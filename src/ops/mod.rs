@@ -48,6 +48,7 @@ mod products;
 mod reso;
 mod restrict;
 mod superele;
+mod symmetry;
 mod tables;
 mod thermo;
 mod transform;
@@ -88,6 +89,7 @@ impl Registry {
             transform::OPS,
             colour::OPS,
             bc::OPS,
+            symmetry::OPS,
             contact::OPS,
             chargement::OPS,
             model::OPS,
