@@ -165,13 +165,45 @@ fn abs(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 fn sin(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    unary(a, |x| x.to_radians().sin())
+    unary(a, sin_deg)
 }
 fn cos(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    unary(a, |x| x.to_radians().cos())
+    unary(a, cos_deg)
 }
 fn tan(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    unary(a, |x| x.to_radians().tan())
+    unary(a, |x| sin_deg(x) / cos_deg(x))
+}
+
+/// An angle in degrees brought into [-180, 180] and its sign folded into
+/// [0, 180], exactly: `%` is exact, and so are the subtractions (Sterbenz).
+/// Converting a large angle to radians first would lose the digits that
+/// matter near the zeros (sin 36000.0001 degrees), and 180 would not give
+/// exactly 0.
+fn reduce_deg(x: f64) -> f64 {
+    let mut r = x % 360.0;
+    if r > 180.0 {
+        r -= 360.0;
+    } else if r < -180.0 {
+        r += 360.0;
+    }
+    r
+}
+
+/// sin of an angle in degrees, exact at multiples of 90.
+pub(crate) fn sin_deg(x: f64) -> f64 {
+    let r = reduce_deg(x);
+    let (s, r) = if r < 0.0 { (-1.0, -r) } else { (1.0, r) };
+    // sin(r) = sin(180 - r), exact for r in [90, 180]
+    let r = if r > 90.0 { 180.0 - r } else { r };
+    s * r.to_radians().sin()
+}
+
+/// cos of an angle in degrees, exact at multiples of 90.
+pub(crate) fn cos_deg(x: f64) -> f64 {
+    let r = reduce_deg(x).abs();
+    let (s, r) = if r > 90.0 { (-1.0, 180.0 - r) } else { (1.0, r) };
+    // cos(r) = sin(90 - r), exact for r in [45, 90]
+    s * if r <= 45.0 { r.to_radians().cos() } else { (90.0 - r).to_radians().sin() }
 }
 fn asin(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     unary(a, |x| x.asin().to_degrees())
@@ -329,4 +361,30 @@ fn maxi(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 fn mini(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     extremum(a, false)
+}
+
+#[cfg(test)]
+mod trig_tests {
+    use super::{cos_deg, sin_deg};
+
+    #[test]
+    fn degrees_are_reduced_exactly() {
+        assert_eq!(sin_deg(180.0), 0.0);
+        assert_eq!(sin_deg(-540.0), 0.0);
+        assert_eq!(cos_deg(90.0), 0.0);
+        assert_eq!(cos_deg(360.0 * 1000.0 + 180.0), -1.0);
+        assert_eq!(sin_deg(30.0 + 3600.0), sin_deg(30.0));
+        // near a zero far out: sin(x) = sin(x - 36000) to full precision
+        // (the subtraction is exact), where radians first lose 7 digits
+        let x = 36000.0001f64;
+        let want = (x - 36000.0).to_radians().sin();
+        let got = sin_deg(x);
+        assert!(((x.to_radians().sin() - want) / want).abs() > 1e-9);
+        assert!(((got - want) / want).abs() < 1e-15, "{got} {want}");
+        for k in 0..720 {
+            let x = k as f64 * 0.5 - 180.0;
+            assert!((sin_deg(x) - x.to_radians().sin()).abs() < 1e-15);
+            assert!((cos_deg(x) - x.to_radians().cos()).abs() < 1e-15);
+        }
+    }
 }

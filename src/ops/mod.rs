@@ -47,6 +47,7 @@ mod principal;
 mod products;
 mod reso;
 mod restrict;
+mod special;
 mod superele;
 mod symmetry;
 mod tables;
@@ -90,6 +91,7 @@ impl Registry {
             colour::OPS,
             bc::OPS,
             symmetry::OPS,
+            special::OPS,
             contact::OPS,
             chargement::OPS,
             model::OPS,

@@ -132,7 +132,9 @@ fn conditions(it: &mut Interp, a: &mut Args, symmetric: bool) -> Result<Vec<Valu
         }
     }
     if on_plane == 0 {
-        return Err(a.err(format!("no node of the mesh lies within {tol:e} of the axis or plane")));
+        return Err(
+            a.err(format!("no node of the mesh lies within {} of the axis or plane", crate::value::fmt_float(tol)))
+        );
     }
     Ok(vec![Value::Rigi(Rc::new(rig))])
 }
