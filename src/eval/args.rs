@@ -212,6 +212,12 @@ impl<'a> Args<'a> {
         Some(t)
     }
 
+    /// Give back an operand taken too early: it is pushed as the newest
+    /// left operand, where the next read finds it.
+    pub fn unread(&mut self, v: Value) {
+        self.st.left.push(v);
+    }
+
     /// Left operand of an infix operator: the newest pushed value.
     pub fn left_value(&mut self) -> Option<Value> {
         self.st.left.pop()
