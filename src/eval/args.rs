@@ -442,6 +442,16 @@ impl Args<'_> {
         }
     }
 
+    /// A word on the right, even an operator's name, when a value (not a
+    /// word) follows it: a label before its data, which Cast3M reads as
+    /// a word wherever the operator expects one.
+    pub fn word_before_value(&mut self) -> Option<String> {
+        match self.st.right.get(1).map(|t| &t.kind)? {
+            TokKind::Val(v) if !matches!(v, Value::Mot(_) | Value::Proc(_)) => self.word(),
+            _ => None,
+        }
+    }
+
     /// If the next right token is a name that is bound to nothing (an
     /// unassigned word), consume it and return it (EXIS, OUBL).
     pub fn unbound_word(&mut self) -> Option<String> {

@@ -13,6 +13,7 @@ mod contact;
 mod curves;
 mod dofs;
 mod evol;
+mod evol_extr;
 mod evol_temps;
 mod export;
 mod extract;
