@@ -384,13 +384,24 @@ fn with_value<R>(t: &Tok, f: impl FnOnce(&Value) -> R) -> R {
 /// of several types (a POINT or a MAILLAGE) must find the one waiting on
 /// the left before it looks far to the right.
 pub fn take_typed<T>(st: &mut GroupState, registry: &Registry, conv: impl Fn(&Value) -> Option<T>) -> Option<T> {
+    take_typed_before(st, registry, conv, |_| false)
+}
+
+/// [`take_typed`], but the right window also ends at a token `stop`
+/// accepts (that token is not read).
+pub fn take_typed_before<T>(
+    st: &mut GroupState,
+    registry: &Registry,
+    conv: impl Fn(&Value) -> Option<T>,
+    stop: impl Fn(&Tok) -> bool,
+) -> Option<T> {
     if let Some(i) = st.left.iter().position(|v| conv(v).is_some()) {
         return conv(&st.left.remove(i));
     }
     let reach = if st.left.is_empty() { st.right.len() } else { st.right.len().min(1) };
     for i in 0..reach {
         let t = &st.right[i];
-        if ends_window(t, registry) {
+        if ends_window(t, registry) || (stop(t) && with_value(t, &conv).is_none()) {
             return None;
         }
         if let Some(x) = with_value(t, &conv) {
