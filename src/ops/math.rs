@@ -295,7 +295,8 @@ fn extremum(a: &mut Args, max: bool) -> Result<Vec<Value>> {
     let conv = |x: f64| if use_abs { x.abs() } else { x };
     // Third form (maxi.notice): several lists or fields of one kind give
     // their extremum value by value.
-    let first = a.opt_with(|v| matches!(v, Value::ListReel(_) | Value::ListEnti(_) | Value::Chpo(_)).then(|| v.clone()));
+    let first =
+        a.opt_with(|v| matches!(v, Value::ListReel(_) | Value::ListEnti(_) | Value::Chpo(_)).then(|| v.clone()));
     if let Some(first) = first {
         let same = |v: &Value| std::mem::discriminant(v) == std::mem::discriminant(&first);
         let mut acc: Option<Value> = None;

@@ -50,6 +50,7 @@ mod reso;
 mod restrict;
 mod superele;
 mod tables;
+mod temps;
 mod thermo;
 mod transform;
 mod union;
@@ -76,6 +77,7 @@ impl Registry {
             extract::OPS,
             objects::OPS,
             io::OPS,
+            temps::OPS,
             opti::OPS,
             union::OPS,
             mesh::OPS,

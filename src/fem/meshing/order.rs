@@ -30,7 +30,9 @@ pub fn order(nodes: &Nodes, mesh: &Mesh) -> Result<Mesh, MeshError> {
             Ok(Mesh::single(Part { ty, conn: sorted, colour: first.colour }))
         }
         t if t.dim() == 1 => Ok(Mesh::single(Part { ty, conn: chain(&parts), colour: first.colour })),
-        t => fail("ORDO", format!("ordering {} elements by vicinity is not available (points and lines are)", t.name())),
+        t => {
+            fail("ORDO", format!("ordering {} elements by vicinity is not available (points and lines are)", t.name()))
+        }
     }
 }
 
