@@ -127,7 +127,7 @@ fn couples(a: &mut Args, ev: &Evolution, k: &str) -> Result<Value> {
             }
         };
         match (k, bounds.as_slice()) {
-            ("PAS", _) => i % step.unwrap_or(1) == 0,
+            ("PAS", _) => i.is_multiple_of(step.unwrap_or(1)),
             ("AVAN", [b]) => inside(b, false),
             ("APRE", [b]) => inside(b, true),
             (_, [b1, b2]) => inside(b1, true) && inside(b2, false),
