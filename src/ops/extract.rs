@@ -14,8 +14,10 @@ use std::rc::Rc;
 pub(crate) const OPS: &[OpDef] = &[
     OpDef {
         name: "EXTR",
-        signature: "EXTR LISTREEL|LISTENTI|LISTMOTS|LISTCHPO I | LIST LISTENTI | MOT I J | CHPOINT COMP POINT | EVOLUTIO 'ABSC'|'ORDO'|'LEGX'|'LEGY'|name (N) | EVOLUTIO 'COUR' N|LISTENTI|name | EVOLUTIO 'PAS'|'AVAN'|'APRE'|'COMP' … | …",
-        doc: "Extract a part of an object (list element, I from 1; sub-list at the places of a LISTENTI; substring; field value; curve N's lists; …).",
+        signature: "EXTR LISTREEL|LISTENTI|LISTMOTS|LISTCHPO I | LIST LISTENTI | MOT I J | CHPOINT COMP POINT | EVOLUTIO 'ABSC'|'ORDO' (N) | …",
+        doc: "Extract a part of an object (list element, I from 1; sub-list at the places of a LISTENTI; substring; field value; \
+              curve N's lists; …). Of an EVOLUTIO: 'ABSC'|'ORDO'|'LEGE'|'LEGX'|'LEGY' (N), a list by its name, 'COUR' \
+              N|LISTENTI|name (curves), 'PAS' N, 'AVAN'|'APRE' ('ENTI' I)|X ('ZERO'), 'COMP' ('ENTI' I J)|X1 X2 ('ZERO') (couples).",
         example: "x = extr l 2 ;",
         f: extr,
     },
