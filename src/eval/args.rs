@@ -212,6 +212,12 @@ impl<'a> Args<'a> {
         Some(t)
     }
 
+    /// Give back an operand taken too early: it is pushed as the newest
+    /// left operand, where the next read finds it.
+    pub fn unread(&mut self, v: Value) {
+        self.st.left.push(v);
+    }
+
     /// Left operand of an infix operator: the newest pushed value.
     pub fn left_value(&mut self) -> Option<Value> {
         self.st.left.pop()
@@ -378,13 +384,24 @@ fn with_value<R>(t: &Tok, f: impl FnOnce(&Value) -> R) -> R {
 /// of several types (a POINT or a MAILLAGE) must find the one waiting on
 /// the left before it looks far to the right.
 pub fn take_typed<T>(st: &mut GroupState, registry: &Registry, conv: impl Fn(&Value) -> Option<T>) -> Option<T> {
+    take_typed_before(st, registry, conv, |_| false)
+}
+
+/// [`take_typed`], but the right window also ends at a token `stop`
+/// accepts (that token is not read).
+pub fn take_typed_before<T>(
+    st: &mut GroupState,
+    registry: &Registry,
+    conv: impl Fn(&Value) -> Option<T>,
+    stop: impl Fn(&Tok) -> bool,
+) -> Option<T> {
     if let Some(i) = st.left.iter().position(|v| conv(v).is_some()) {
         return conv(&st.left.remove(i));
     }
     let reach = if st.left.is_empty() { st.right.len() } else { st.right.len().min(1) };
     for i in 0..reach {
         let t = &st.right[i];
-        if ends_window(t, registry) {
+        if ends_window(t, registry) || (stop(t) && with_value(t, &conv).is_none()) {
             return None;
         }
         if let Some(x) = with_value(t, &conv) {
@@ -433,6 +450,16 @@ impl Args<'_> {
             TokKind::Word(w) if self.registry.find(w).is_some() => None,
             TokKind::Sym(_) => None,
             _ => self.word(),
+        }
+    }
+
+    /// A word on the right, even an operator's name, when a value (not a
+    /// word) follows it: a label before its data, which Cast3M reads as
+    /// a word wherever the operator expects one.
+    pub fn word_before_value(&mut self) -> Option<String> {
+        match self.st.right.get(1).map(|t| &t.kind)? {
+            TokKind::Val(v) if !matches!(v, Value::Mot(_) | Value::Proc(_)) => self.word(),
+            _ => None,
         }
     }
 

@@ -173,6 +173,12 @@ impl Interp {
         if self.called_proc && vals.len() > ins.targets.len() {
             vals.truncate(ins.targets.len());
         }
+        // One name for two or three numbers left by an operator and the
+        // operands after it (`p = (MINI x) 0.`): they make a POINT, as
+        // numbers written alone do (language.md §2 rule 6).
+        if ins.targets.len() == 1 && (vals.len() == 2 || vals.len() == 3) && vals.iter().all(Value::is_number) {
+            vals = vec![self.make_point(&vals).map_err(|e| e.with_span_if_missing(ins.span, &self.source))?];
+        }
         if vals.len() != ins.targets.len() {
             let msg = if vals.len() > ins.targets.len() {
                 format!("{} results for {} name(s): a result is left over (error 11)", vals.len(), ins.targets.len())

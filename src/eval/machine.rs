@@ -36,7 +36,7 @@ impl Interp {
         Ok(vals)
     }
 
-    fn make_point(&mut self, nums: &[Value]) -> Result<Value> {
+    pub(super) fn make_point(&mut self, nums: &[Value]) -> Result<Value> {
         let dim = self.opts.dime;
         if dim == 0 {
             return Err(Error::runtime("two or three numbers make a POINT, which needs OPTI DIME first (error 14)"));

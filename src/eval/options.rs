@@ -80,12 +80,15 @@ pub struct Timers {
     pub origin: std::time::Instant,
     /// The last TEMP call, for the time elapsed since.
     pub last: std::time::Instant,
+    /// TEMP 'ZERO' was the last TEMP call: its own call, recorded after
+    /// the reset, is not one TEMP counts.
+    pub zeroed: bool,
 }
 
 impl Default for Timers {
     fn default() -> Self {
         let now = std::time::Instant::now();
-        Timers { phases: BTreeMap::new(), origin: now, last: now }
+        Timers { phases: BTreeMap::new(), origin: now, last: now, zeroed: false }
     }
 }
 

@@ -10,7 +10,7 @@ use crate::value::{Ty, Value};
 use std::rc::Rc;
 
 use super::env::Frame;
-use super::tokens::GroupState;
+use super::tokens::{GroupState, Tok, TokKind};
 
 impl Interp {
     pub fn call_proc(&mut self, p: Rc<ProcDef>, st: &mut GroupState, span: Span) -> Result<Vec<Value>> {
@@ -147,7 +147,18 @@ fn take_param(st: &mut GroupState, p: &Param, registry: &super::registry::Regist
         Some(Ty::Flottant) => v.is_number(),
         Some(t) => v.ty() == t,
     };
-    Ok(super::args::take_typed(st, registry, |v| fits(v).then(|| v.clone())).map(|v| coerce(v, want)))
+    // An optional argument is not looked for past a word: the words of a
+    // call are the procedure's keywords, and what follows one belongs to
+    // it (`@POINTIR ... 'GERM' 1`: an optional ENTIER read before 'GERM'
+    // must not take the 1 that belongs to 'GERM').
+    let is_word = |t: &Tok| match &t.kind {
+        TokKind::Quoted(_) | TokKind::Word(_) => true,
+        TokKind::Val(v) => matches!(v, Value::Mot(_)),
+        _ => false,
+    };
+    let stop = |t: &Tok| p.optional && is_word(t);
+    let v = super::args::take_typed_before(st, registry, |v| fits(v).then(|| v.clone()), stop);
+    Ok(v.map(|v| coerce(v, want)))
 }
 
 fn coerce(v: Value, want: Option<Ty>) -> Value {

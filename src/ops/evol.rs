@@ -1,6 +1,6 @@
 //! EVOLUTIO objects: curves y(x) built by hand (`EVOL 'MANU'`) or read
-//! along an ordered line from a node field (`EVOL 'CHPO'`), and what EXTR
-//! gives back from them (`'ABSC'`, `'ORDO'`, `'LEGE'`, `'COUR'`).
+//! along an ordered line from a node field (`EVOL 'CHPO'`); what EXTR
+//! gives back from them is in `evol_extr`.
 //! Cast3M mostly draws these; gibi has no graphics, so the colour word is
 //! accepted and dropped.
 
@@ -43,17 +43,33 @@ fn manu(a: &mut Args) -> Result<Curve> {
     if a.keyword(&["LEGE", "TITR"]).is_some() {
         legend = a.word().ok_or_else(|| a.missing("the legend text"))?;
     }
-    let x_name = a.word_not_operator().unwrap_or_default();
-    let x = a.req::<Rc<Vec<f64>>>()?;
-    let y_name = a.word_not_operator().unwrap_or_default();
-    let y = a.opt::<Rc<Vec<f64>>>().ok_or_else(|| a.missing("LISTREEL (the ordinates)"))?;
+    let x_name = label(a).unwrap_or_default();
+    let x = numbers(a).ok_or_else(|| a.missing("LISTREEL (the abscissae)"))?;
+    let y_name = label(a).unwrap_or_default();
+    let y = numbers(a).ok_or_else(|| a.missing("LISTREEL (the ordinates)"))?;
     if x.len() != y.len() {
         return Err(a.err(format!("the abscissae have {} values but the ordinates {}", x.len(), y.len())));
     }
     if x.is_empty() {
         return Err(a.err("a curve needs at least one point"));
     }
-    Ok(Curve { legend, x_name, y_name, x: x.to_vec(), y: y.to_vec() })
+    Ok(Curve { legend, x_name, y_name, x, y })
+}
+
+/// A list's name: a word before the list, even one that names an
+/// operator (`EVOL 'MANU' temp lt ampl la`: a title, not the TEMP operator).
+fn label(a: &mut Args) -> Option<String> {
+    a.word_before_value().or_else(|| a.word_not_operator())
+}
+
+/// A LISTREEL, or a LISTENTI read as reals. A LISTMOTS (words as the
+/// abscissae of a bar chart) has no place in gibi's numeric curves.
+fn numbers(a: &mut Args) -> Option<Vec<f64>> {
+    a.opt_with(|v| match v {
+        Value::ListReel(l) => Some(l.to_vec()),
+        Value::ListEnti(l) => Some(l.iter().map(|&i| i as f64).collect()),
+        _ => None,
+    })
 }
 
 /// `'CHPO' CHPO (comp) LINE`: values at the line's nodes in order, against
@@ -91,27 +107,4 @@ fn along_line(it: &Interp, a: &mut Args) -> Result<Curve> {
         y.push(v);
     }
     Ok(Curve { legend: String::new(), x_name: "ABSC".into(), y_name: comp, x, y })
-}
-
-/// EXTR on an EVOLUTIO: `'ABSC' (n)`, `'ORDO' (n)` (lists of curve n,
-/// 1 by default), `'LEGE' (n)` (its legend), `'COUR' n` (curve n alone).
-pub(crate) fn extr(a: &mut Args, ev: &Evolution) -> Result<Vec<Value>> {
-    let k = a.req_keyword(&["ABSC", "ORDO", "LEGE", "COUR"])?;
-    let n = a.opt::<i64>();
-    if k == "COUR" && n.is_none() {
-        return Err(a.missing("ENTIER (the curve number)"));
-    }
-    let n = n.unwrap_or(1);
-    let count = ev.curves.len();
-    let c = usize::try_from(n)
-        .ok()
-        .and_then(|i| i.checked_sub(1))
-        .and_then(|i| ev.curves.get(i))
-        .ok_or_else(|| a.err(format!("curve {} does not exist (the object has {})", n, count)))?;
-    Ok(vec![match k {
-        "ABSC" => Value::ListReel(Rc::new(c.x.clone())),
-        "ORDO" => Value::ListReel(Rc::new(c.y.clone())),
-        "LEGE" => Value::mot(&c.legend),
-        _ => Value::Evol(Rc::new(Evolution { curves: vec![c.clone()] })),
-    }])
 }

@@ -4,7 +4,7 @@
 //! curves in `evol`, super-elements in `superele`, tables in `tables`).
 
 use super::lists::{self, AnyList};
-use super::{evol, fields, superele, tables, Args, OpDef};
+use super::{evol_extr, fields, superele, tables, Args, OpDef};
 use crate::error::Result;
 use crate::eval::Interp;
 use crate::value::{Chpoint, Evolution, Mchaml, Model, Rigidite, Table, Value};
@@ -15,7 +15,9 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef {
         name: "EXTR",
         signature: "EXTR LISTREEL|LISTENTI|LISTMOTS|LISTCHPO I | LIST LISTENTI | MOT I J | CHPOINT COMP POINT | EVOLUTIO 'ABSC'|'ORDO' (N) | …",
-        doc: "Extract a part of an object (list element, I from 1; sub-list at the places of a LISTENTI; substring; field value; curve N's lists; …).",
+        doc: "Extract a part of an object (list element, I from 1; sub-list at the places of a LISTENTI; substring; field value; \
+              curve N's lists; …). Of an EVOLUTIO: 'ABSC'|'ORDO'|'LEGE'|'LEGX'|'LEGY' (N), a list by its name, 'COUR' \
+              N|LISTENTI|name (curves), 'PAS' N, 'AVAN'|'APRE' ('ENTI' I)|X ('ZERO'), 'COMP' ('ENTI' I J)|X1 X2 ('ZERO') (couples).",
         example: "x = extr l 2 ;",
         f: extr,
     },
@@ -36,7 +38,7 @@ pub(crate) const OPS: &[OpDef] = &[
 /// LISTENTI of places for the list), a LISTCHPO, a word.
 fn extr(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     if let Some(ev) = a.opt::<Rc<Evolution>>() {
-        return evol::extr(a, &ev);
+        return evol_extr::extr(a, &ev);
     }
     if let Some(ch) = a.find::<Rc<Chpoint>>() {
         return fields::extr_chpo(it, a, &ch);

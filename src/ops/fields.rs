@@ -364,7 +364,14 @@ pub(crate) fn extr_chpo(it: &Interp, a: &mut Args, ch: &Chpoint) -> Result<Vec<V
                 Value::Mesh(Rc::new(Mesh::points(&nodes)))
             }
             "VALE" => {
-                let comp = a.word_not_operator().ok_or_else(|| a.missing("a component"))?;
+                // Without a component, the field's only one.
+                let comp = match a.word_not_operator() {
+                    Some(c) => c,
+                    None => match ch.components().as_slice() {
+                        [c] => c.clone(),
+                        cs => return Err(a.err(format!("say which component (the field has {})", cs.join(" ")))),
+                    },
+                };
                 let geo = super::mesh::opt_geo(a);
                 let nodes = geo.map_or_else(|| ch.nodes.clone(), |g| g.node_list());
                 Value::ListReel(Rc::new(nodes.iter().filter_map(|n| ch.get(*n, &comp)).collect()))

@@ -1,12 +1,10 @@
-//! Directives that talk to the user: DENS, MESS, LIST, SAUT, TITR, TEMP,
-//! ERRE (OPTI and VALE are in opti.rs). Output goes to the injected sink.
+//! Directives that talk to the user: DENS, MESS, LIST, SAUT, TITR, ERRE
+//! (OPTI and VALE are in opti.rs, TEMP in temps.rs). Output goes to the injected sink.
 
 use super::{Args, OpDef};
 use crate::error::{Error, ErrorKind, Result};
 use crate::eval::Interp;
-use crate::value::{fmt_float, list_value, Key, Table, Value};
-use std::cell::RefCell;
-use std::rc::Rc;
+use crate::value::{fmt_float, list_value, Value};
 
 pub(crate) const OPS: &[OpDef] = &[
     OpDef {
@@ -43,15 +41,6 @@ pub(crate) const OPS: &[OpDef] = &[
         doc: "Set the title (72 characters at most).",
         example: "titr 'Cantilever' ;",
         f: titr,
-    },
-    OpDef {
-        name: "TEMP",
-        signature: "TEMP ('IMPR'|'ZERO'|'NOEC'|'SGAC')",
-        doc: "Print the time spent per operator and per solver phase ('NOEC': print nothing). Also returns a TABLE: \
-              'TEMPS_CPU' and 'TEMPS_HORLOGE', each a TABLE with 'INITIAL' (milliseconds since the start or the last \
-              'ZERO') and 'ECOULE' (since the previous TEMP), ENTIERs. gibi has no CPU clock of its own: both are wall-clock times.",
-        example: "t = temp 'NOEC' ; mess (t . 'TEMPS_HORLOGE' . 'INITIAL') ;",
-        f: temp,
     },
     OpDef {
         name: "ERRE",
@@ -129,49 +118,6 @@ fn titr(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let parts = shown_args(it, a);
     it.title = parts.join(" ").chars().take(72).collect();
     Ok(vec![])
-}
-
-fn temp(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    if a.keyword(&["ZERO"]).is_some() {
-        it.timers = Default::default();
-        for op in it.registry.all() {
-            op.reset_stats();
-        }
-        return Ok(vec![]);
-    }
-    let quiet = a.keyword(&["IMPR", "SGAC", "NOEC"]) == Some("NOEC");
-    if !quiet {
-        let mut lines = vec![format!("{:<10} {:>8} {:>12}", "operator", "calls", "seconds")];
-        let mut ops: Vec<_> =
-            it.registry.all().iter().map(|o| (o.name, o.stats())).filter(|(_, (n, _))| *n > 0).collect();
-        ops.sort_by_key(|x| std::cmp::Reverse(x.1 .1));
-        for (k, (n, d)) in ops {
-            lines.push(format!("{:<10} {:>8} {:>12.6}", k, n, d.as_secs_f64()));
-        }
-        if !it.timers.phases.is_empty() {
-            lines.push(format!("{:<24} {:>8} {:>12}", "solver phase", "count", "seconds"));
-            for (k, (n, d)) in &it.timers.phases {
-                lines.push(format!("{:<24} {:>8} {:>12.6}", k, n, d.as_secs_f64()));
-            }
-        }
-        for l in lines {
-            it.println(&l);
-        }
-    }
-    // The clocks as a table, the form decks read timings from.
-    let now = std::time::Instant::now();
-    let ms = |d: std::time::Duration| Value::Int(d.as_millis() as i64);
-    let clock = || {
-        let mut c = Table::new();
-        c.set(Key::Mot("INITIAL".into()), ms(now - it.timers.origin));
-        c.set(Key::Mot("ECOULE".into()), ms(now - it.timers.last));
-        Value::Table(Rc::new(RefCell::new(c)))
-    };
-    let mut t = Table::new();
-    t.set(Key::Mot("TEMPS_CPU".into()), clock());
-    t.set(Key::Mot("TEMPS_HORLOGE".into()), clock());
-    it.timers.last = now;
-    Ok(vec![Value::Table(Rc::new(RefCell::new(t)))])
 }
 
 /// Cast3M severities: message 0 is harmless; message 5 ("abnormal error")

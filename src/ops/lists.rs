@@ -38,8 +38,8 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "ORDO",
-        signature: "ORDO LIST1 (LIST2 …) ('CROI'|'DECR') ('ABS')",
-        doc: "Sort a LISTREEL, LISTENTI or LISTMOTS (increasing by default); further lists of the same length follow the first one's order, one result per list.",
+        signature: "ORDO LIST1 (LIST2 …) ('CROI'|'DECR') ('ABS') | ORDO EVOLUTIO ('CROI'|'DECR') ('ABS') | ORDO MAILLAGE",
+        doc: "Sort a LISTREEL, LISTENTI or LISTMOTS (increasing by default); further lists of the same length follow the first one's order, one result per list. An EVOLUTIO's curves are sorted by abscissa; a line's elements are chained from one end to the other, points ordered by distance to the first.",
         example: "ls = ordo (prog 3. 1. 2.) ;",
         f: ordo,
     },
@@ -211,9 +211,22 @@ fn list_len(v: &Value) -> Option<usize> {
 }
 
 /// ORDO: a stable sort of the first list; the others follow its order.
-fn ordo(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+fn ordo(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    if let Some(m) = a.opt::<Rc<crate::fem::mesh::Mesh>>() {
+        let m = crate::fem::meshing::order::order(&it.nodes, &m).map_err(|e| a.err(e.message))?;
+        return Ok(vec![Value::Mesh(Rc::new(m))]);
+    }
     let mut order = None;
     let mut use_abs = false;
+    if let Some(ev) = a.opt::<Rc<crate::value::Evolution>>() {
+        while let Some(k) = a.keyword(&["CROI", "DECR", "ABS"]) {
+            match k {
+                "ABS" => use_abs = true,
+                k => order = Some(k),
+            }
+        }
+        return Ok(vec![Value::Evol(Rc::new(super::evol_extr::sorted(&ev, order == Some("DECR"), use_abs)))]);
+    }
     let mut lists: Vec<Value> = Vec::new();
     loop {
         if let Some(k) = a.keyword(&["CROI", "DECR", "ABS"]) {

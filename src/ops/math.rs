@@ -4,7 +4,7 @@
 use super::{pointwise, Args, FromArg, OpDef};
 use crate::error::Result;
 use crate::eval::Interp;
-use crate::value::{fmt_float, Value};
+use crate::value::{fmt_float, Chpoint, Value};
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
@@ -52,8 +52,8 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "ATG",
-        signature: "ATG NUM (NUM2) | ATG LISTREEL (LISTREEL2) | ATG CHPOINT|MCHAML|EVOLUTIO",
-        doc: "Arc tangent in degrees; with two numbers or lists, atan2(NUM, NUM2).",
+        signature: "ATG NUM (NUM2) | ATG LISTREEL (LISTREEL2) | ATG CHPOINT (CHPOINT2) | ATG MCHAML|EVOLUTIO",
+        doc: "Arc tangent in degrees; with two numbers, lists or fields, atan2(NUM, NUM2).",
         example: "a = atg 1. ;",
         f: atg,
     },
@@ -96,14 +96,14 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef {
         name: "MAXI",
         signature: "MAXI (ABS) LISTREEL|LISTENTI|NUM1 NUM2 ...|CHPOINT|MCHAML",
-        doc: "Largest value of a list, of several numbers or of a field (ENTIER when every value is).",
+        doc: "Largest value of a list, of several numbers or of a field (ENTIER when every value is); of several lists or fields, the largest value by value.",
         example: "m = maxi (prog 3. 8. 1.) ;",
         f: maxi,
     },
     OpDef {
         name: "MINI",
         signature: "MINI (ABS) LISTREEL|LISTENTI|NUM1 NUM2 ...|CHPOINT|MCHAML",
-        doc: "Smallest value of a list, of several numbers or of a field (ENTIER when every value is).",
+        doc: "Smallest value of a list, of several numbers or of a field (ENTIER when every value is); of several lists or fields, the smallest value by value.",
         example: "m = mini (prog 3. 8. 1.) ;",
         f: mini,
     },
@@ -228,6 +228,10 @@ fn atg(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             Some(m) => Err(a.err(format!("lists of different lengths ({} and {})", l.len(), m.len()))),
             None => Ok(vec![pointwise::map(&y, &|x| x.atan().to_degrees()).unwrap_or(y)]),
         },
+        Value::Chpo(_) => match a.opt_right::<Rc<Chpoint>>() {
+            Some(x) => Ok(vec![value_by_value(a, &y, &Value::Chpo(x), |p, q| p.atan2(q).to_degrees())?]),
+            None => Ok(vec![pointwise::map(&y, &|x| x.atan().to_degrees()).unwrap_or(y)]),
+        },
         _ => Ok(vec![pointwise::map(&y, &|x| x.atan().to_degrees()).unwrap_or(y)]),
     }
 }
@@ -321,6 +325,23 @@ fn extremum(a: &mut Args, max: bool) -> Result<Vec<Value>> {
     let use_abs = a.keyword(&["ABS"]).is_some();
     let pick = |x: f64, y: f64| if max { x.max(y) } else { x.min(y) };
     let conv = |x: f64| if use_abs { x.abs() } else { x };
+    // Third form (maxi.notice): several lists or fields of one kind give
+    // their extremum value by value.
+    let first =
+        a.opt_with(|v| matches!(v, Value::ListReel(_) | Value::ListEnti(_) | Value::Chpo(_)).then(|| v.clone()));
+    if let Some(first) = first {
+        let same = |v: &Value| std::mem::discriminant(v) == std::mem::discriminant(&first);
+        let mut acc: Option<Value> = None;
+        while let Some(next) = a.peek_right().filter(same) {
+            a.right_any();
+            let prev = acc.as_ref().unwrap_or(&first);
+            acc = Some(value_by_value(a, prev, &next, |p, q| pick(conv(p), conv(q)))?);
+        }
+        match acc {
+            Some(v) => return Ok(vec![v]),
+            None => a.unread(first),
+        }
+    }
     if let Some(l) = a.opt::<Rc<Vec<f64>>>() {
         let v = l.iter().copied().map(conv).reduce(pick).ok_or_else(|| a.err("empty list"))?;
         return Ok(vec![Value::Float(v)]);
@@ -356,6 +377,31 @@ fn extremum(a: &mut Args, max: bool) -> Result<Vec<Value>> {
     }
     Ok(vec![Value::Float(nums.iter().filter_map(Value::as_f64).map(conv).reduce(pick).unwrap_or(0.0))])
 }
+/// `f` applied value by value to two lists of one length or two fields on
+/// the same nodes and components (MAXI/MINI of several objects, ATG of two
+/// fields).
+fn value_by_value(a: &Args, x: &Value, y: &Value, f: impl Fn(f64, f64) -> f64) -> Result<Value> {
+    let lengths = |n: usize, m: usize| a.err(format!("lists of different lengths ({} and {})", n, m));
+    Ok(match (x, y) {
+        (Value::ListReel(l), Value::ListReel(m)) if l.len() == m.len() => {
+            Value::ListReel(Rc::new(l.iter().zip(m.iter()).map(|(p, q)| f(*p, *q)).collect()))
+        }
+        (Value::ListEnti(l), Value::ListEnti(m)) if l.len() == m.len() => {
+            Value::ListEnti(Rc::new(l.iter().zip(m.iter()).map(|(p, q)| f(*p as f64, *q as f64) as i64).collect()))
+        }
+        (Value::ListReel(l), Value::ListReel(m)) => return Err(lengths(l.len(), m.len())),
+        (Value::ListEnti(l), Value::ListEnti(m)) => return Err(lengths(l.len(), m.len())),
+        (Value::Chpo(p), Value::Chpo(q)) => {
+            let covers = |p: &Chpoint, q: &Chpoint| p.entries().all(|(n, c, _)| q.get(n, c).is_some());
+            if !covers(p, q) || !covers(q, p) {
+                return Err(a.err("the fields must have the same components on the same nodes"));
+            }
+            Value::Chpo(Rc::new(p.combine(q, f)))
+        }
+        _ => return Err(a.err(format!("cannot combine {} and {} value by value", x.type_name(), y.type_name()))),
+    })
+}
+
 fn maxi(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     extremum(a, true)
 }

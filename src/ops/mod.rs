@@ -13,6 +13,7 @@ mod contact;
 mod curves;
 mod dofs;
 mod evol;
+mod evol_extr;
 mod evol_temps;
 mod export;
 mod extract;
@@ -51,6 +52,7 @@ mod special;
 mod superele;
 mod symmetry;
 mod tables;
+mod temps;
 mod thermo;
 mod transform;
 mod union;
@@ -77,6 +79,7 @@ impl Registry {
             extract::OPS,
             objects::OPS,
             io::OPS,
+            temps::OPS,
             opti::OPS,
             union::OPS,
             mesh::OPS,

@@ -2,6 +2,7 @@
 //! concatenation, mesh union, field merge, rigidity assembly: one entry,
 //! every pair of types in one match, each object's own union in `value`.
 
+use super::export::Vecteur;
 use super::{Args, OpDef};
 use crate::error::Result;
 use crate::eval::Interp;
@@ -11,20 +12,55 @@ use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[OpDef {
     name: "ET",
-    signature: "OBJ1 ET OBJ2 ('NOER')",
-    doc: "Logical and; union of meshes; assembly of rigidities; merge of fields; concatenation of lists and words (LISTCHPO ET CHPOINT|LISTCHPO appends); curves gathered into one EVOLUTIO.",
+    signature: "OBJ1 ET ('TELQUEL') OBJ2 ('NOER') | ET TABLE",
+    doc: "Logical and; union of meshes; assembly of rigidities; merge of fields; concatenation of lists and words (LISTCHPO ET CHPOINT|LISTCHPO appends); curves gathered into one EVOLUTIO; two numbers make a list (ENTIER ET ENTIER a LISTENTI, else a LISTREEL); VECTEUR arrows gathered; ET of a table joins all its objects.",
     example: "l = l1 et l2 ;",
     f: et,
 }];
 
 fn et(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    // 'TELQUEL' keeps the operands' order and blanks, which gibi always
+    // keeps: the word is accepted and has nothing more to do.
+    a.keyword_next(&["TELQUEL"]);
     let x = match a.left_value() {
         Some(v) => v,
         None => a.right_any().ok_or_else(|| a.missing("a left operand"))?,
     };
-    let y = a.right_any().ok_or_else(|| a.missing("a right operand"))?;
-    let noer = a.keyword(&["NOER"]).is_some();
+    a.keyword_next(&["TELQUEL"]);
+    let y = match a.right_any() {
+        Some(y) => y,
+        // `ET tab`: the union of every object the table holds (et.notice).
+        None => match &x {
+            Value::Table(t) => return Ok(vec![union_of_table(it, a, t)?]),
+            _ => return Err(a.missing("a right operand")),
+        },
+    };
+    let mut noer = false;
+    while let Some(k) = a.keyword(&["NOER", "TELQUEL"]) {
+        noer |= k == "NOER";
+    }
     Ok(vec![union(it, a, x, y, noer)?])
+}
+
+/// The objects of a table (its subtype left aside) joined in order.
+fn union_of_table(it: &mut Interp, a: &Args, t: &std::cell::RefCell<crate::value::Table>) -> Result<Value> {
+    let items: Vec<Value> = t
+        .borrow()
+        .iter()
+        .filter(|(k, _)| !matches!(k, crate::value::Key::Mot(m) if m == "SOUSTYPE"))
+        .map(|(_, v)| v.clone())
+        .collect();
+    let mut items = items.into_iter();
+    let first = items.next().ok_or_else(|| a.err("the table holds no object to join"))?;
+    // Points alone join into a mesh of POI1 elements.
+    let mut acc = match first {
+        Value::Point(_) => Value::Mesh(Rc::new(as_mesh(&first).unwrap_or_default())),
+        v => v,
+    };
+    for v in items {
+        acc = union(it, a, acc, v, false)?;
+    }
+    Ok(acc)
 }
 
 pub(crate) fn union(_: &mut Interp, a: &Args, x: Value, y: Value, noer: bool) -> Result<Value> {
@@ -34,6 +70,10 @@ pub(crate) fn union(_: &mut Interp, a: &Args, x: Value, y: Value, noer: bool) ->
     Ok(match (&x, &y) {
         (Bool(p), Bool(q)) => Bool(*p && *q),
         (Mot(s), Mot(t)) => Value::mot(format!("{}{}", s, t)),
+        (Int(i), Int(j)) => ListEnti(Rc::new(vec![*i, *j])),
+        (Int(_) | Float(_), Int(_) | Float(_)) => {
+            ListReel(Rc::new(vec![x.as_f64().unwrap_or(0.0), y.as_f64().unwrap_or(0.0)]))
+        }
         (ListReel(l), ListReel(m)) => ListReel(Rc::new(l.iter().chain(m.iter()).copied().collect())),
         (ListReel(l), Int(_) | Float(_)) => {
             let mut v = (**l).clone();
@@ -61,6 +101,13 @@ pub(crate) fn union(_: &mut Interp, a: &Args, x: Value, y: Value, noer: bool) ->
             let mut v = (**l).clone();
             v.push(s.to_string());
             ListMots(Rc::new(v))
+        }
+        (Mot(s), ListMots(l)) => ListMots(Rc::new([s.to_string()].into_iter().chain(l.iter().cloned()).collect())),
+        (Host(p), Host(q)) if p.type_name() == "VECTEUR" && q.type_name() == "VECTEUR" => {
+            match (p.as_any().downcast_ref::<Vecteur>(), q.as_any().downcast_ref::<Vecteur>()) {
+                (Some(p), Some(q)) => Host(Rc::new(p.join(q))),
+                _ => return Err(a.err("cannot join these VECTEUR objects")),
+            }
         }
         // A LISTCHPO grows by appending: its fields are separate load
         // cases, never merged as `CHPOINT ET CHPOINT` would merge them.

@@ -14,6 +14,7 @@
 //! [`trac_fields`] (the scalar a picture is coloured by).
 
 mod pictures;
+pub(crate) use pictures::Vecteur;
 mod read_gmsh;
 mod sort_matrix;
 mod sort_pasapas;

@@ -122,11 +122,24 @@ pub(super) fn trac(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 /// The VECTEUR object of VECT: what it would draw, kept for LIST and TYPE.
+/// `ET` gathers several sets of arrows into one VECTEUR (et.notice).
 #[derive(Debug)]
 pub struct Vecteur {
+    sets: Vec<Arrows>,
+}
+
+#[derive(Debug, Clone)]
+struct Arrows {
     comps: Vec<String>,
     scale: f64,
     colour: String,
+}
+
+impl Vecteur {
+    /// The union `v1 ET v2`: the arrows of both, in order.
+    pub(crate) fn join(&self, other: &Vecteur) -> Vecteur {
+        Vecteur { sets: self.sets.iter().chain(&other.sets).cloned().collect() }
+    }
 }
 
 impl crate::value::HostObject for Vecteur {
@@ -134,12 +147,19 @@ impl crate::value::HostObject for Vecteur {
         "VECTEUR"
     }
     fn describe(&self) -> String {
-        format!(
-            "arrows of {} scaled by {}, colour {} (TRAC does not draw them)",
-            self.comps.join(" "),
-            crate::value::fmt_float(self.scale),
-            self.colour
-        )
+        let sets: Vec<String> = self
+            .sets
+            .iter()
+            .map(|s| {
+                format!(
+                    "arrows of {} scaled by {}, colour {}",
+                    s.comps.join(" "),
+                    crate::value::fmt_float(s.scale),
+                    s.colour
+                )
+            })
+            .collect();
+        format!("{} (TRAC does not draw them)", sets.join("; "))
     }
     fn as_any(&self) -> &dyn std::any::Any {
         self
@@ -173,7 +193,7 @@ pub(super) fn vect(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     if chosen.is_empty() {
         chosen = comps;
     }
-    let v = Vecteur { comps: chosen, scale, colour: colour.name().to_string() };
+    let v = Vecteur { sets: vec![Arrows { comps: chosen, scale, colour: colour.name().to_string() }] };
     Ok(vec![Value::Host(Rc::new(v))])
 }
 
