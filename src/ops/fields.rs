@@ -6,6 +6,7 @@ use super::{dofs, Args, OpDef, PointId};
 use crate::error::Result;
 use crate::eval::Interp;
 use crate::fem::mesh::Mesh;
+use crate::value::model::ZoneKey;
 use crate::value::{Chpoint, Mchaml, Model, Nature, Rigidite, Value};
 use std::rc::Rc;
 
@@ -340,14 +341,35 @@ pub(crate) fn extr_mchaml(a: &mut Args, m: &Mchaml) -> Result<Vec<Value>> {
     Ok(vec![Value::Float(p[c])])
 }
 
-/// EXTR on a model: its mesh (`'MAIL'`).
+/// EXTR on a model: its mesh (`'MAIL'`), or the model of the zones of
+/// some formulations or elements (`'FORM' 'MECANIQUE'`, `'ELEM' 'QUA4'`).
 pub(crate) fn extr_model(a: &mut Args, m: &Model) -> Result<Vec<Value>> {
+    if let Some((key, words)) = zone_selection(a)? {
+        return Ok(vec![Value::Model(Rc::new(m.zones_with(key, &words)))]);
+    }
     a.keyword(&["MAIL"]);
     let mut mesh = Mesh::default();
     for z in &m.zones {
         mesh = mesh.union(&z.mesh);
     }
     Ok(vec![Value::Mesh(Rc::new(mesh))])
+}
+
+/// `'FORM' MOT1 (MOT2 …)` or `'ELEM' MOT1 …` after a model (EXTR, EXIS).
+pub(crate) fn zone_selection(a: &mut Args) -> Result<Option<(ZoneKey, Vec<String>)>> {
+    let key = match a.keyword(&["FORM", "ELEM"]) {
+        Some("FORM") => ZoneKey::Formulation,
+        Some(_) => ZoneKey::Element,
+        None => return Ok(None),
+    };
+    let mut words = Vec::new();
+    while let Some(w) = a.opt::<String>() {
+        words.push(w);
+    }
+    if words.is_empty() {
+        return Err(a.missing("a formulation or element name (MOT)"));
+    }
+    Ok(Some((key, words)))
 }
 
 pub(crate) fn extr_chpo(it: &Interp, a: &mut Args, ch: &Chpoint) -> Result<Vec<Value>> {

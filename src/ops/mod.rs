@@ -9,6 +9,7 @@ mod bc;
 mod catalogue_tests;
 mod chargement;
 mod colour;
+mod config;
 mod contact;
 mod curves;
 mod dofs;
@@ -87,6 +88,7 @@ impl Registry {
             mesh_edit::OPS,
             transform::OPS,
             colour::OPS,
+            config::OPS,
             bc::OPS,
             contact::OPS,
             chargement::OPS,

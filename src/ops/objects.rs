@@ -112,6 +112,11 @@ fn exis(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             Some(name) => c.has(&name.trim().to_uppercase().chars().take(4).collect::<String>()),
             None => true,
         },
+        // Whether some zone has one of the formulations or elements named.
+        Value::Model(m) => match super::fields::zone_selection(a)? {
+            Some((key, words)) => !m.zones_with(key, &words).zones.is_empty(),
+            None => true,
+        },
         _ => true,
     };
     Ok(vec![Value::Bool(r)])
