@@ -38,8 +38,8 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "ORDO",
-        signature: "ORDO LIST1 (LIST2 …) ('CROI'|'DECR') ('ABS')",
-        doc: "Sort a LISTREEL, LISTENTI or LISTMOTS (increasing by default); further lists of the same length follow the first one's order, one result per list.",
+        signature: "ORDO LIST1 (LIST2 …) ('CROI'|'DECR') ('ABS') | ORDO MAILLAGE",
+        doc: "Sort a LISTREEL, LISTENTI or LISTMOTS (increasing by default); further lists of the same length follow the first one's order, one result per list. A mesh: points by distance to the first, a line as one walk from end to end, other elements by vicinity.",
         example: "ls = ordo (prog 3. 1. 2.) ;",
         f: ordo,
     },
@@ -211,7 +211,10 @@ fn list_len(v: &Value) -> Option<usize> {
 }
 
 /// ORDO: a stable sort of the first list; the others follow its order.
-fn ordo(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+fn ordo(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    if let Some(m) = a.opt::<Rc<crate::fem::mesh::Mesh>>() {
+        return Ok(vec![Value::Mesh(Rc::new(crate::fem::meshing::order::ordo(&it.nodes, &m)?))]);
+    }
     let mut order = None;
     let mut use_abs = false;
     let mut lists: Vec<Value> = Vec::new();

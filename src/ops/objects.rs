@@ -38,6 +38,13 @@ pub(crate) const OPS: &[OpDef] = &[
         f: detr,
     },
     OpDef {
+        name: "MENA",
+        signature: "MENAGE ('OBLI') (ENTIER)",
+        doc: "Free memory no longer reachable (gibi frees objects as they become unreachable: no effect).",
+        example: "menage ;",
+        f: mena,
+    },
+    OpDef {
         name: "MOT",
         signature: "MOT WORD",
         doc: "A word as a MOT object (also an operator name kept for later).",
@@ -145,6 +152,12 @@ fn oubl(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 
 fn detr(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     a.rest();
+    Ok(vec![])
+}
+
+fn mena(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    a.keyword_next(&["OBLI"]);
+    a.opt::<i64>();
     Ok(vec![])
 }
 

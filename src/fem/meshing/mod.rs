@@ -30,6 +30,7 @@ pub mod free;
 pub mod grading;
 pub mod line;
 pub mod motion;
+pub mod order;
 pub mod orient;
 pub mod orient_to;
 pub mod pairing;
