@@ -347,12 +347,32 @@ pub(crate) fn extr_model(a: &mut Args, m: &Model) -> Result<Vec<Value>> {
     if let Some((key, words)) = zone_selection(a)? {
         return Ok(vec![Value::Model(Rc::new(m.zones_with(key, &words)))]);
     }
+    if let Some(k) = a.keyword(&["DEPL", "FORC"]) {
+        return Ok(vec![Value::ListMots(Rc::new(model_components(a, m, k == "FORC")?))]);
+    }
     a.keyword(&["MAIL"]);
     let mut mesh = Mesh::default();
     for z in &m.zones {
         mesh = mesh.union(&z.mesh);
     }
     Ok(vec![Value::Mesh(Rc::new(mesh))])
+}
+
+/// The displacement (or force) component names of a model's mechanical
+/// zones, each name once, in the order the zones give them.
+fn model_components(a: &Args, m: &Model, forces: bool) -> Result<Vec<String>> {
+    use crate::fem::element::{node_duals, node_dofs};
+    let mut out: Vec<String> = Vec::new();
+    for z in m.zones.iter().filter(|z| !z.formulation.starts_with("CONT")) {
+        let (f, mode) = (super::model::formulation(z), super::model::zone_mode(z)?);
+        let names = if forces { node_duals(f, mode) } else { node_dofs(f, mode) };
+        for n in names.map_err(|e| a.err(e))? {
+            if !out.iter().any(|o| o == n) {
+                out.push(n.to_string());
+            }
+        }
+    }
+    Ok(out)
 }
 
 /// `'FORM' MOT1 (MOT2 …)` or `'ELEM' MOT1 …` after a model (EXTR, EXIS).

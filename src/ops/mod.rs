@@ -19,6 +19,7 @@ mod export;
 mod extract;
 mod fields;
 mod format;
+mod fracture;
 mod integrate;
 mod io;
 mod limits;
@@ -104,6 +105,7 @@ impl Registry {
             principal::OPS,
             integrate::OPS,
             superele::OPS,
+            fracture::OPS,
             export::OPS,
             evol::OPS,
             curves::OPS,
