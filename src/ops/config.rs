@@ -63,7 +63,7 @@ fn forme(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let conf = a.opt_with(as_config);
     let u = a.opt::<Rc<Chpoint>>();
     if a.opt::<Rc<crate::value::Model>>().is_some() {
-        return Err(a.err("updating the characteristics (MMODEL MCHAML) is not supported: gibi's elements keep no local frames to update"));
+        return Err(a.err("updating the local frames of a model's characteristics (MMODEL MCHAML) is not supported"));
     }
     if let Some(c) = &conf {
         restore(&mut it.nodes, c);

@@ -361,7 +361,7 @@ pub(crate) fn extr_model(a: &mut Args, m: &Model) -> Result<Vec<Value>> {
 /// The displacement (or force) component names of a model's mechanical
 /// zones, each name once, in the order the zones give them.
 fn model_components(a: &Args, m: &Model, forces: bool) -> Result<Vec<String>> {
-    use crate::fem::element::{node_duals, node_dofs};
+    use crate::fem::element::{node_dofs, node_duals};
     let mut out: Vec<String> = Vec::new();
     for z in m.zones.iter().filter(|z| !z.formulation.starts_with("CONT")) {
         let (f, mode) = (super::model::formulation(z), super::model::zone_mode(z)?);
