@@ -6,6 +6,7 @@ use super::{dofs, Args, OpDef, PointId};
 use crate::error::Result;
 use crate::eval::Interp;
 use crate::fem::mesh::Mesh;
+use crate::value::model::ZoneKey;
 use crate::value::{Chpoint, Mchaml, Model, Nature, Rigidite, Value};
 use std::rc::Rc;
 
@@ -340,14 +341,55 @@ pub(crate) fn extr_mchaml(a: &mut Args, m: &Mchaml) -> Result<Vec<Value>> {
     Ok(vec![Value::Float(p[c])])
 }
 
-/// EXTR on a model: its mesh (`'MAIL'`).
+/// EXTR on a model: its mesh (`'MAIL'`), or the model of the zones of
+/// some formulations or elements (`'FORM' 'MECANIQUE'`, `'ELEM' 'QUA4'`).
 pub(crate) fn extr_model(a: &mut Args, m: &Model) -> Result<Vec<Value>> {
+    if let Some((key, words)) = zone_selection(a)? {
+        return Ok(vec![Value::Model(Rc::new(m.zones_with(key, &words)))]);
+    }
+    if let Some(k) = a.keyword(&["DEPL", "FORC"]) {
+        return Ok(vec![Value::ListMots(Rc::new(model_components(a, m, k == "FORC")?))]);
+    }
     a.keyword(&["MAIL"]);
     let mut mesh = Mesh::default();
     for z in &m.zones {
         mesh = mesh.union(&z.mesh);
     }
     Ok(vec![Value::Mesh(Rc::new(mesh))])
+}
+
+/// The displacement (or force) component names of a model's mechanical
+/// zones, each name once, in the order the zones give them.
+fn model_components(a: &Args, m: &Model, forces: bool) -> Result<Vec<String>> {
+    use crate::fem::element::{node_dofs, node_duals};
+    let mut out: Vec<String> = Vec::new();
+    for z in m.zones.iter().filter(|z| !z.formulation.starts_with("CONT")) {
+        let (f, mode) = (super::model::formulation(z), super::model::zone_mode(z)?);
+        let names = if forces { node_duals(f, mode) } else { node_dofs(f, mode) };
+        for n in names.map_err(|e| a.err(e))? {
+            if !out.iter().any(|o| o == n) {
+                out.push(n.to_string());
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// `'FORM' MOT1 (MOT2 …)` or `'ELEM' MOT1 …` after a model (EXTR, EXIS).
+pub(crate) fn zone_selection(a: &mut Args) -> Result<Option<(ZoneKey, Vec<String>)>> {
+    let key = match a.keyword(&["FORM", "ELEM"]) {
+        Some("FORM") => ZoneKey::Formulation,
+        Some(_) => ZoneKey::Element,
+        None => return Ok(None),
+    };
+    let mut words = Vec::new();
+    while let Some(w) = a.opt::<String>() {
+        words.push(w);
+    }
+    if words.is_empty() {
+        return Err(a.missing("a formulation or element name (MOT)"));
+    }
+    Ok(Some((key, words)))
 }
 
 pub(crate) fn extr_chpo(it: &Interp, a: &mut Args, ch: &Chpoint) -> Result<Vec<Value>> {

@@ -39,7 +39,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef {
         name: "ORDO",
         signature: "ORDO LIST1 (LIST2 …) ('CROI'|'DECR') ('ABS') | ORDO EVOLUTIO ('CROI'|'DECR') ('ABS') | ORDO MAILLAGE",
-        doc: "Sort a LISTREEL, LISTENTI or LISTMOTS (increasing by default); further lists of the same length follow the first one's order, one result per list. An EVOLUTIO's curves are sorted by abscissa; a line's elements are chained from one end to the other, points ordered by distance to the first.",
+        doc: "Sort a LISTREEL, LISTENTI or LISTMOTS (increasing by default); further lists of the same length follow the first one's order, one result per list. An EVOLUTIO's curves are sorted by abscissa. A mesh: points by distance to the first, a line as one walk from end to end, other elements by vicinity.",
         example: "ls = ordo (prog 3. 1. 2.) ;",
         f: ordo,
     },
@@ -213,8 +213,7 @@ fn list_len(v: &Value) -> Option<usize> {
 /// ORDO: a stable sort of the first list; the others follow its order.
 fn ordo(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     if let Some(m) = a.opt::<Rc<crate::fem::mesh::Mesh>>() {
-        let m = crate::fem::meshing::order::order(&it.nodes, &m).map_err(|e| a.err(e.message))?;
-        return Ok(vec![Value::Mesh(Rc::new(m))]);
+        return Ok(vec![Value::Mesh(Rc::new(crate::fem::meshing::order::ordo(&it.nodes, &m)?))]);
     }
     let mut order = None;
     let mut use_abs = false;

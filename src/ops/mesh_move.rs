@@ -42,6 +42,14 @@ fn depl(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             None => break a.req_keyword(&kinds)?,
         }
     };
+    // `DEPL 'PLUS' GEO VECTOR`: the keyword first, then the meshes (a
+    // point there would be the vector).
+    while objs.is_empty() || matches!(a.peek_right(), Some(Value::Mesh(_))) {
+        match a.opt_right::<Rc<Mesh>>() {
+            Some(m) => objs.push((*m).clone()),
+            None => break,
+        }
+    }
     if objs.is_empty() {
         return Err(a.missing("POINT or MAILLAGE (what to move)"));
     }

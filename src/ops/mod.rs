@@ -9,6 +9,7 @@ mod bc;
 mod catalogue_tests;
 mod chargement;
 mod colour;
+mod config;
 mod contact;
 mod curves;
 mod dofs;
@@ -19,6 +20,7 @@ mod export;
 mod extract;
 mod fields;
 mod format;
+mod fracture;
 mod integrate;
 mod io;
 mod limits;
@@ -92,6 +94,7 @@ impl Registry {
             mesh_edit::OPS,
             transform::OPS,
             colour::OPS,
+            config::OPS,
             bc::OPS,
             symmetry::OPS,
             special::OPS,
@@ -109,6 +112,7 @@ impl Registry {
             principal::OPS,
             integrate::OPS,
             superele::OPS,
+            fracture::OPS,
             export::OPS,
             evol::OPS,
             curves::OPS,

@@ -38,6 +38,13 @@ pub(crate) const OPS: &[OpDef] = &[
         f: detr,
     },
     OpDef {
+        name: "MENA",
+        signature: "MENAGE ('OBLI') (ENTIER)",
+        doc: "Free memory no longer reachable (gibi frees objects as they become unreachable: no effect).",
+        example: "menage ;",
+        f: mena,
+    },
+    OpDef {
         name: "MOT",
         signature: "MOT WORD",
         doc: "A word as a MOT object (also an operator name kept for later).",
@@ -112,6 +119,11 @@ fn exis(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             Some(name) => c.has(&name.trim().to_uppercase().chars().take(4).collect::<String>()),
             None => true,
         },
+        // Whether some zone has one of the formulations or elements named.
+        Value::Model(m) => match super::fields::zone_selection(a)? {
+            Some((key, words)) => !m.zones_with(key, &words).zones.is_empty(),
+            None => true,
+        },
         _ => true,
     };
     Ok(vec![Value::Bool(r)])
@@ -140,6 +152,12 @@ fn oubl(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 
 fn detr(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     a.rest();
+    Ok(vec![])
+}
+
+fn mena(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    a.keyword_next(&["OBLI"]);
+    a.opt::<i64>();
     Ok(vec![])
 }
 

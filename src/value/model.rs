@@ -164,3 +164,35 @@ impl Curve {
         self.x.len() == d.x.len() && self.x.iter().zip(&d.x).all(|(p, q)| (p - q).abs() <= 1e-12 * scale)
     }
 }
+
+/// What EXTR and EXIS select the zones of a model by.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ZoneKey {
+    /// 'FORM': the formulation (MECANIQUE, CONTACT, ...).
+    Formulation,
+    /// 'ELEM': the finite element (QUA4, POUT, ...).
+    Element,
+}
+
+impl Model {
+    /// The zones whose formulation or element is one of `words`. Names
+    /// compare on their first four letters, as Cast3M's keywords do
+    /// (`'MECA'` and `'MECANIQUE'` are one formulation).
+    pub fn zones_with(&self, key: ZoneKey, words: &[String]) -> Model {
+        let four = |s: &str| s.trim().to_uppercase().chars().take(4).collect::<String>();
+        let wanted: Vec<String> = words.iter().map(|w| four(w)).collect();
+        let zones = self
+            .zones
+            .iter()
+            .filter(|z| {
+                let name = match key {
+                    ZoneKey::Formulation => &z.formulation,
+                    ZoneKey::Element => &z.element,
+                };
+                wanted.contains(&four(name))
+            })
+            .cloned()
+            .collect();
+        Model { zones }
+    }
+}

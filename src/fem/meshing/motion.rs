@@ -112,3 +112,22 @@ pub fn copy_together(nodes: &mut Nodes, meshes: &[&Mesh], motion: Motion, dim: u
     let nm = NodeMap { map };
     Ok(meshes.iter().map(|m| nm.apply(m)).collect())
 }
+
+/// Move nodes by a displacement: each `(node, axis, value)` adds `value`
+/// to one coordinate (FORME). Checked first, so a bad node moves nothing.
+pub fn displace(nodes: &mut Nodes, moves: &[(usize, usize, f64)]) -> Result<(), MeshError> {
+    if let Some(&(n, _, _)) = moves.iter().find(|&&(n, k, _)| n >= nodes.len() || k > 2) {
+        return fail("FORM", format!("node {n} of the displacement field does not exist"));
+    }
+    for &(n, k, v) in moves {
+        nodes.coords[n][k] += v;
+    }
+    Ok(())
+}
+
+/// Put recorded coordinates back (FORME with a CONFIGURATION). Nodes made
+/// after the recording keep where they are: the record knows nothing of them.
+pub fn restore(nodes: &mut Nodes, coords: &[[f64; 3]]) {
+    let n = coords.len().min(nodes.len());
+    nodes.coords[..n].copy_from_slice(&coords[..n]);
+}
