@@ -142,8 +142,11 @@ fn reso(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         return Ok(regroup(&given, Vec::new()));
     }
     let asm = r.numbered();
-    let loads: Vec<Load> =
-        rhs.iter().map(|c| assemble::load(it, &asm, &[c])).collect::<Result<_>>().map_err(|e| a.err(e.message))?;
+    let loads: Vec<Load> = rhs
+        .iter()
+        .map(|c| assemble::load_of(it, &r, &asm, &[c]))
+        .collect::<Result<_>>()
+        .map_err(|e| a.err(e.message))?;
     finite_data(&asm, &loads).map_err(|e| a.err(e))?;
     let unilateral = r.n_unilateral() > 0 && !o.nounil;
     if o.ense && !unilateral {
@@ -381,7 +384,7 @@ fn solve_unil(
             .iter()
             .chain(&last.released)
             .take(8)
-            .map(|&k| super::assemble::describe_condition(it, r, k, load.d.get(k).copied().unwrap_or(0.0)))
+            .map(|&k| super::assemble::describe_condition(it, r, asm.origin(k), load.d.get(k).copied().unwrap_or(0.0)))
             .collect();
         it.println(&format!(
             "RESO 'SOUC': warning: the status iteration did not converge after {} solves; the last iterate is returned ({} condition(s) still changing: {})",
@@ -390,7 +393,9 @@ fn solve_unil(
             changing.join("; ")
         ));
     }
-    let statuses = r.conds.iter().enumerate().filter(|(_, c)| c.kind.is_unilateral()).map(|(k, _)| sol.active[k]);
+    // Only equality rows are merged: the unilateral ones keep their order.
+    let statuses =
+        asm.problem.conditions.iter().enumerate().filter(|(_, c)| c.kind.is_unilateral()).map(|(k, _)| sol.active[k]);
     r.cache.borrow_mut().last_unil = Some((report.clone(), statuses.collect()));
     Ok((sol, report))
 }
@@ -459,7 +464,7 @@ fn unil(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         return Err(a.err("the RIGIDITE holds no unilateral condition"));
     }
     let asm = r.numbered();
-    let load = assemble::load(it, &asm, &[&f]).map_err(|e| a.err(e.message))?;
+    let load = assemble::load_of(it, &r, &asm, &[&f]).map_err(|e| a.err(e.message))?;
     finite_data(&asm, std::slice::from_ref(&load)).map_err(|e| a.err(e))?;
     let (sol, rep) = solve_unil(it, &r, &asm, &load, &o)?;
     record(it, &rep);
