@@ -20,13 +20,16 @@ pub struct Twin {
     pub origin: usize,
 }
 
+/// A normalised row: (unknown, coefficient), sorted by unknown.
+type Row = Vec<(usize, f64)>;
+
 /// Relative tolerance for two rows (or two imposed values) to count as
 /// proportional.
 const TOL: f64 = 1e-10;
 
 /// Sorted by unknown, duplicates summed, zeros dropped: two writings of a
 /// row compare term by term.
-fn normalised(c: &Condition) -> Vec<(usize, f64)> {
+fn normalised(c: &Condition) -> Row {
     let mut t = c.terms.clone();
     t.sort_by_key(|x| x.0);
     let mut out: Vec<(usize, f64)> = Vec::with_capacity(t.len());
@@ -62,7 +65,7 @@ impl Assembled {
     pub fn merge_twins(&mut self) {
         let conds = std::mem::take(&mut self.problem.conditions);
         let nodes = std::mem::take(&mut self.mult_nodes);
-        let mut families: HashMap<Vec<usize>, Vec<(usize, Vec<(usize, f64)>)>> = HashMap::default();
+        let mut families: HashMap<Vec<usize>, Vec<(usize, Row)>> = HashMap::default();
         self.mult.clear();
         for (k, (c, node)) in conds.into_iter().zip(nodes).enumerate() {
             if c.kind == Kind::Equal && c.dual.is_none() {
