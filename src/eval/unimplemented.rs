@@ -36,7 +36,6 @@ pub(crate) const HINTS: &[(&str, &str)] = &[
     ("ECOU", STATICS),
     ("EXCI", "UNIL runs the unilateral status iteration natively"),
     ("FLUX", STATICS),
-    ("GRAD", "EPSI gives strains"),
     ("KSIG", STATICS),
     ("MREM", "RESO and UNIL re-insert eliminated unknowns themselves"),
     ("OBTE", FILES),

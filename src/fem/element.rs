@@ -40,7 +40,8 @@ impl Mode {
 }
 
 /// Element formulation: structural ones named in MODE, or a massive element
-/// following the mesh geometry. `Q4ri` is QUA4 with one Gauss point.
+/// following the mesh geometry. `Q4ri` is QUA4 with one Gauss point, `Q8ri`
+/// QUA8 with 2×2.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Formulation {
     Barr,
@@ -48,6 +49,7 @@ pub enum Formulation {
     Timo,
     Solid,
     Q4ri,
+    Q8ri,
     /// Thin flat shells (see [`shell`]).
     Coq3,
     Dkt,
@@ -62,6 +64,7 @@ impl Formulation {
             Formulation::Timo => "TIMO",
             Formulation::Solid => "massive",
             Formulation::Q4ri => "Q4RI",
+            Formulation::Q8ri => "Q8RI",
             Formulation::Coq3 => "COQ3",
             Formulation::Dkt => "DKT",
             Formulation::Coq4 => "COQ4",
@@ -124,7 +127,7 @@ pub fn node_dofs(f: Formulation, mode: Mode) -> Result<&'static [&'static str], 
     match f {
         Formulation::Barr => bar::dofs(mode),
         Formulation::Pout | Formulation::Timo => beam::dofs(mode),
-        Formulation::Solid | Formulation::Q4ri => Ok(solid::dofs(mode)),
+        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => Ok(solid::dofs(mode)),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::dofs(f, mode),
     }
 }
@@ -174,6 +177,7 @@ fn check(f: Formulation, ty: ElemType, mode: Mode) -> Result<(), FemError> {
     let ok = match f {
         Formulation::Barr | Formulation::Pout | Formulation::Timo => ty == ElemType::Seg2,
         Formulation::Q4ri => ty == ElemType::Qua4,
+        Formulation::Q8ri => ty == ElemType::Qua8,
         Formulation::Solid => ty.dim() >= 2,
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => ty == shell::geometry(f),
     };
@@ -196,7 +200,7 @@ pub fn stiffness(
         Formulation::Barr => bar::stiffness(mode, x, m),
         Formulation::Pout => beam::stiffness(false, mode, x, m),
         Formulation::Timo => beam::stiffness(true, mode, x, m),
-        Formulation::Solid | Formulation::Q4ri => solid::stiffness(f, ty, mode, x, m),
+        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::stiffness(f, ty, mode, x, m),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::stiffness(f, mode, x, m),
     }
 }
@@ -215,7 +219,7 @@ pub fn mass(
         Formulation::Barr => bar::mass(mode, x, m, lumped),
         Formulation::Pout => beam::mass(false, mode, x, m, lumped),
         Formulation::Timo => beam::mass(true, mode, x, m, lumped),
-        Formulation::Solid | Formulation::Q4ri => solid::mass(ty, mode, x, m, lumped),
+        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::mass(ty, mode, x, m, lumped),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::mass(f, mode, x, m, lumped),
     }
 }
@@ -235,8 +239,25 @@ pub fn stress(
         Formulation::Barr => bar::stress(mode, x, m, u),
         Formulation::Pout => beam::stress(false, mode, x, m, u),
         Formulation::Timo => beam::stress(true, mode, x, m, u),
-        Formulation::Solid | Formulation::Q4ri => solid::field(f, ty, mode, x, m, u, true),
+        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::field(f, ty, mode, x, m, u, true),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::stress(f, mode, x, m, u),
+    }
+}
+
+/// Displacement gradients (GRAD) of massive elements at the points of
+/// [`gauss_points`]; the material is not used.
+pub fn gradient(
+    f: Formulation,
+    ty: ElemType,
+    mode: Mode,
+    x: &[[f64; 3]],
+    _m: &Material,
+    u: &[f64],
+) -> Result<GaussField, FemError> {
+    check(f, ty, mode)?;
+    match f {
+        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::gradient(f, ty, mode, x, u),
+        _ => Err(FemError::NotFor { what: "GRAD", form: f.name() }),
     }
 }
 
@@ -256,7 +277,7 @@ pub fn strain(
         Formulation::Barr => bar::strain(mode, x, u),
         Formulation::Pout => beam::strain(false, mode, x, m, u),
         Formulation::Timo => beam::strain(true, mode, x, m, u),
-        Formulation::Solid | Formulation::Q4ri => solid::field(f, ty, mode, x, m, u, false),
+        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::field(f, ty, mode, x, m, u, false),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::strain(f, mode, x, u),
     }
 }
@@ -276,7 +297,7 @@ pub fn internal_forces(
     match f {
         Formulation::Barr => bar::internal_forces(mode, x, sig),
         Formulation::Pout | Formulation::Timo => beam::internal_forces(f == Formulation::Timo, mode, x, m, sig),
-        Formulation::Solid | Formulation::Q4ri => solid::internal_forces(f, ty, mode, x, m, sig),
+        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::internal_forces(f, ty, mode, x, m, sig),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::internal_forces(f, mode, x, sig),
     }
 }
@@ -289,7 +310,7 @@ pub fn gauss_points(f: Formulation, ty: ElemType) -> Vec<([f64; 3], f64)> {
         Formulation::Barr | Formulation::Pout | Formulation::Timo => {
             vec![([-1.0, 0.0, 0.0], 1.0), ([1.0, 0.0, 0.0], 1.0)]
         }
-        Formulation::Solid | Formulation::Q4ri => solid::rule(f, ty),
+        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::rule(f, ty),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::rule(ty),
     }
 }

@@ -94,7 +94,8 @@ pub fn pressure_load(
                     why: format!("AXIS face reaches r = {r:e} < 0"),
                 });
             }
-            wt *= r;
+            // The whole ring, as the stiffness (solid::points).
+            wt *= std::f64::consts::TAU * r;
         }
         for (fi, ni) in f.iter_mut().zip(&s.n) {
             for c in 0..dims {

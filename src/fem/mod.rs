@@ -33,6 +33,8 @@ mod tests_integrate;
 #[cfg(test)]
 mod tests_patch;
 #[cfg(test)]
+mod tests_reduced;
+#[cfg(test)]
 mod tests_shell;
 #[cfg(test)]
 mod tests_solid;

@@ -5,6 +5,8 @@
 //! * TRI3, TET4: 1 point (B is constant, so this is exact).
 //! * TRI6: 3 points (degree 2: exact for straight-sided elements).
 //! * QUA4: 2×2. Q4RI: 1 point, see [`rule`] for its hourglass modes.
+//! * Q8RI: QUA8 at 2×2 (reduced): exact for linear strain fields, less
+//!   stiff in bending; a lone element has one zero-energy mode.
 //! * QUA8: 3×3, full integration. 2×2 would leave a zero-energy mode in a
 //!   lone element (and locks less only for thin bending); we prefer a matrix
 //!   that is never spuriously singular and exact on rectangles, as Cast3M
@@ -31,6 +33,7 @@ use super::shape::eval;
 pub fn rule(f: Formulation, ty: ElemType) -> Vec<QPoint> {
     match (f, ty) {
         (Formulation::Q4ri, _) => quad(1),
+        (Formulation::Q8ri, _) => quad(2),
         (_, ElemType::Tri3) => tri(1),
         (_, ElemType::Tri6) => tri(3),
         (_, ElemType::Qua4) => quad(2),
@@ -80,7 +83,7 @@ pub fn strain_comps(mode: Mode) -> Vec<&'static str> {
 }
 
 /// One integration point mapped to the element: shape values, physical
-/// derivatives and the full weight (w·|J|·thickness, or ·r in AXIS).
+/// derivatives and the full weight (w·|J|·thickness, or ·2πr in AXIS).
 struct Point {
     n: Vec<f64>,
     dndx: Vec<[f64; 3]>,
@@ -167,7 +170,9 @@ fn points(ty: ElemType, mode: Mode, x: &[[f64; 3]], rule: &[QPoint], t: f64) -> 
                     why: format!("AXIS element reaches r = {r:e} <= 0 (radius must be the first coordinate, positive)"),
                 });
             }
-            wt *= r;
+            // Cast3M integrates AXIS over the whole ring: the reactions
+            // of a pressure p on a disc of radius a sum to p·π·a².
+            wt *= std::f64::consts::TAU * r;
         }
         out.push(Point { n: s.n, dndx, w: wt, r });
     }
@@ -375,7 +380,40 @@ pub fn field(
     Ok(GaussField { comps, values })
 }
 
-/// Integration weights (w·|J|·thickness, ·r in AXIS) of the points of
+/// Displacement gradient (GRAD) at the points of [`rule`]: ∂u_i/∂x_j,
+/// row by row (UX,X UX,Y UY,X UY,Y in the plane; UR,R UR,Z UZ,R UZ,Z and
+/// the hoop term UR/R in AXIS; nine terms in TRID).
+pub fn gradient(f: Formulation, ty: ElemType, mode: Mode, x: &[[f64; 3]], u: &[f64]) -> Result<GaussField, FemError> {
+    let names = dofs(mode);
+    let nc = names.len();
+    let nd = ty.nodes() * nc;
+    if u.len() != nd {
+        return Err(FemError::WrongDofCount { elem: ty.name(), expected: nd, got: u.len() });
+    }
+    let pts = points(ty, mode, x, &rule(f, ty), 1.0)?;
+    let dim = nc;
+    let values = pts
+        .iter()
+        .map(|p| {
+            let mut g: Vec<f64> = (0..nc)
+                .flat_map(|i| (0..dim).map(move |j| (i, j)))
+                .map(|(i, j)| p.dndx.iter().enumerate().map(|(a, d)| d[j] * u[a * nc + i]).sum())
+                .collect();
+            if mode == Mode::Axis {
+                g.push(p.n.iter().enumerate().map(|(a, n)| n * u[a * nc]).sum::<f64>() / p.r);
+            }
+            g
+        })
+        .collect();
+    let comps = match mode {
+        Mode::PlanCont | Mode::PlanDefo => vec!["UX,X", "UX,Y", "UY,X", "UY,Y"],
+        Mode::Axis => vec!["UR,R", "UR,Z", "UZ,R", "UZ,Z", "UT,T"],
+        Mode::Trid => vec!["UX,X", "UX,Y", "UX,Z", "UY,X", "UY,Y", "UY,Z", "UZ,X", "UZ,Y", "UZ,Z"],
+    };
+    Ok(GaussField { comps, values })
+}
+
+/// Integration weights (w·|J|·thickness, ·2πr in AXIS) of the points of
 /// [`rule`], where [`field`] gives stresses and strains.
 pub fn point_weights(
     f: Formulation,
@@ -388,7 +426,7 @@ pub fn point_weights(
     Ok(points(ty, mode, x, &rule(f, ty), t)?.into_iter().map(|p| p.w).collect())
 }
 
-/// `∫ N_i` over the element for each node (with thickness, ·r in AXIS).
+/// `∫ N_i` over the element for each node (with thickness, ·2πr in AXIS).
 pub fn node_weights(ty: ElemType, mode: Mode, x: &[[f64; 3]], m: &Material) -> Result<Vec<f64>, FemError> {
     let t = m.thickness(mode, ty.name())?;
     let mut w = vec![0.0; ty.nodes()];

@@ -11,8 +11,14 @@ use crate::value::{fmt_float, Chpoint, Rigidite};
 pub use crate::solve::Assembled;
 pub use crate::value::rigidity::numbering::solution_field;
 
-/// The load of right-hand side fields on a numbered system.
+/// The load of right-hand side fields on a numbered system without
+/// merged twin conditions ([`Rigidite::number`]).
 pub fn load(it: &Interp, asm: &Assembled, rhs: &[&Chpoint]) -> Result<Load> {
+    load_of(it, &Rigidite::new(crate::value::rigidity::Subtype::Rigidite), asm, rhs)
+}
+
+/// The load of right-hand side fields on the system of `r`.
+pub fn load_of(it: &Interp, r: &Rigidite, asm: &Assembled, rhs: &[&Chpoint]) -> Result<Load> {
     asm.load(rhs.iter().flat_map(|c| c.entries())).map_err(|e| match e {
         LoadError::NoCondition { node } => Error::runtime(format!(
             "the right-hand side imposes a value (FLX) at {} which carries no condition of this RIGIDITE",
@@ -23,6 +29,17 @@ pub fn load(it: &Interp, asm: &Assembled, rhs: &[&Chpoint]) -> Result<Load> {
             comp,
             node_name(it, node)
         )),
+        LoadError::Conflicting { kept, twin } => {
+            let value = |k: usize| {
+                let node = r.conds.get(k).map(|c| c.mult_node);
+                rhs.iter().flat_map(|c| c.entries()).filter(|e| Some(e.0) == node && e.1 == "FLX").map(|e| e.2).sum()
+            };
+            Error::runtime(format!(
+                "conflicting conditions: the same condition is imposed twice with different values: {}; {}",
+                describe_condition(it, r, kept, value(kept)),
+                describe_condition(it, r, twin, value(twin))
+            ))
+        }
     })
 }
 
@@ -32,8 +49,9 @@ pub fn explain(it: &Interp, r: &Rigidite, asm: &Assembled, e: SolveError, loads:
         Some((n, c)) => format!("{} of {}", c, node_name(it, *n)),
         None => format!("unknown {}", i),
     };
-    let cond =
-        |k: usize| describe_condition(it, r, k, loads.first().map_or(0.0, |l| l.d.get(k).copied().unwrap_or(0.0)));
+    let cond = |k: usize| {
+        describe_condition(it, r, asm.origin(k), loads.first().map_or(0.0, |l| l.d.get(k).copied().unwrap_or(0.0)))
+    };
     let list = |v: &[usize], f: &dyn Fn(usize) -> String| {
         let mut s: Vec<String> = v.iter().take(8).map(|&i| f(i)).collect();
         if v.len() > 8 {

@@ -63,7 +63,13 @@ fn chml(a: &mut Args) -> Result<Vec<Value>> {
     let mut subtype = "SCALAIRE".to_string();
     let mut at_nodes = false;
     const SUPPORTS: &[&str] = &["STRESSES", "GRAVITE", "RIGIDITE", "MASSE", "DEFORMATIONS"];
-    while let Some(w) = a.word_not_operator() {
+    loop {
+        // TYPE unquoted is also an operator name: read as the keyword here.
+        if a.keyword(&["TYPE"]).is_some() {
+            subtype = a.req::<String>()?.trim().to_uppercase();
+            continue;
+        }
+        let Some(w) = a.word_not_operator() else { break };
         let w = w.trim().to_uppercase();
         if super::args::keyword_matches(&w, "TYPE") {
             subtype = a.req::<String>()?.trim().to_uppercase();

@@ -21,8 +21,8 @@ pub(crate) const OPS: &[OpDef] = &[
 ];
 
 const FORMS: &[&str] = &[
-    "BARR", "POUT", "TIMO", "Q4RI", "COQ3", "DKT", "COQ4", "TRI3", "TRI6", "QUA4", "QUA8", "CUB8", "TET4", "PRI6",
-    "SEG2",
+    "BARR", "POUT", "TIMO", "Q4RI", "Q8RI", "COQ3", "DKT", "COQ4", "TRI3", "TRI6", "QUA4", "QUA8", "CUB8", "TET4",
+    "PRI6", "SEG2",
 ];
 
 const BEHAVIOURS: &[&str] = &["ELASTIQUE", "ISOTROPE"];
@@ -278,6 +278,7 @@ pub(crate) fn formulation(zone: &ModelZone) -> Formulation {
         "POUT" => Formulation::Pout,
         "TIMO" => Formulation::Timo,
         "Q4RI" => Formulation::Q4ri,
+        "Q8RI" => Formulation::Q8ri,
         _ => Formulation::Solid,
     }
 }

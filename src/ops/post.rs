@@ -15,6 +15,7 @@ use std::rc::Rc;
 pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "SIGM", signature: "SIGM ('LINE') MMODEL MCHAML (MCHAML) CHPOINT", doc: "Elastic stresses (SMXX … for massive elements, EFFX … MOMZ resultants for bars and beams, N11 N22 N12 M11 M22 M12 V1 V2 for shells) at the element points.", example: "sig = sigm mo ma u ;", f: sigm },
     OpDef { name: "EPSI", signature: "EPSI ('LINE') MMODEL (MCHAML) CHPOINT", doc: "Strains (EPXX … GAXY; generalised strains for bars and beams; EPSS EPTT GAST RTSS RTTT RTST for shells).", example: "eps = epsi mo ma u ;", f: epsi },
+    OpDef { name: "GRAD", signature: "GRAD MMODEL CHPOINT (MCHAML)", doc: "Gradient of the displacements of a massive model at its stress points (UX,X UX,Y UY,X UY,Y …; UR,R UR,Z UZ,R UZ,Z UT,T in AXIS).", example: "g = grad mo u ;", f: grad },
     OpDef { name: "VMIS", signature: "VMIS MMODEL MCHAML_STRESS (MCHAML)", doc: "Von Mises equivalent stress (the beam formula for bars and beams).", example: "vm = vmis mo sig ma ;", f: vmis },
     OpDef { name: "CHAN", signature: "CHAN 'POI1'|QUA8|TRI6|SEG3|QUA4|TRI3|SEG2 GEO | CHAN 'CHPO'|'NOEUD'|'GRAVITE' MMODEL MCHAML | CHAN 'INCO' RIGIDITE LISTMOTS LISTMOTS | CHAN 'ATTRIBUT' CHPOINT 'NATURE' word | CHAN 'TYPE' MCHAML word | CHAN 'MAJU'|'MINU' MOT", doc: "Change the type or attributes of an object.", example: "pts = chan 'POI1' l ;", f: chan },
     OpDef { name: "PRES", signature: "PRES 'MASS' MMODEL (MCHAML) VALUE GEO | PRES 'COQU' MMODEL VALUE ('NORM')", doc: "Nodal forces equivalent to a pressure on edges/faces of a massive model (positive towards the solid; in plane stress for the DIM3 thickness of the characteristics MCHAML when given, else per unit thickness), or on every element of a shell model (positive along the element normal).", example: "f = pres 'MASS' mo 10. haut ;", f: pres },
@@ -37,6 +38,10 @@ pub(crate) fn model_args(a: &mut Args) -> Result<ModelArgs> {
         fields.push(f);
     }
     let u = a.opt::<Rc<Chpoint>>();
+    // GRAD writes its characteristics after the field.
+    while let Some(f) = a.opt::<Rc<Mchaml>>() {
+        fields.push(f);
+    }
     Ok((model, fields, u))
 }
 
@@ -113,6 +118,10 @@ fn epsi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             e
         }
     })
+}
+
+fn grad(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    gauss_field(it, a, "GRADIENT", element::gradient)
 }
 
 /// Component names as the element library wants them (`&'static str`).
@@ -264,6 +273,8 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                             comps: to_gauss(z, e).comps,
                             values: vec![v[0].clone(); part.ty.nodes()],
                         },
+                        // Already at the nodes (CHAN 'NOEUD' before 'CHPO').
+                        Some(v) if z.at_nodes && v.len() == part.ty.nodes() => to_gauss(z, e),
                         _ => crate::fem::stress::to_nodes(form, part.ty, &to_gauss(z, e)).map_err(fem_err)?,
                     };
                     for (k, n) in nodes.iter().enumerate() {

@@ -142,8 +142,11 @@ fn reso(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         return Ok(regroup(&given, Vec::new()));
     }
     let asm = r.numbered();
-    let loads: Vec<Load> =
-        rhs.iter().map(|c| assemble::load(it, &asm, &[c])).collect::<Result<_>>().map_err(|e| a.err(e.message))?;
+    let loads: Vec<Load> = rhs
+        .iter()
+        .map(|c| assemble::load_of(it, &r, &asm, &[c]))
+        .collect::<Result<_>>()
+        .map_err(|e| a.err(e.message))?;
     finite_data(&asm, &loads).map_err(|e| a.err(e))?;
     let unilateral = r.n_unilateral() > 0 && !o.nounil;
     if o.ense && !unilateral {
@@ -265,8 +268,21 @@ fn soft_singular(
     o: &Opts,
     e: SolveError,
 ) -> Result<Vec<Rc<Chpoint>>> {
-    if !(o.soft && matches!(e, SolveError::Singular { .. })) {
+    if !matches!(e, SolveError::Singular { .. }) {
         return Err(explain(it, r, asm, e, loads));
+    }
+    if !o.soft {
+        // Cast3M's RESO goes through a free mode that nothing loads (a
+        // plane truss in 3D and its out-of-plane motion): holding it gives
+        // the solution whose free-mode part is zero. A load with work along
+        // the mode has no equilibrium: that stays the error.
+        let opts = DirectOptions { check_residual: !o.noid, stab: o.stab };
+        let held = hold_rigid_modes(&asm.problem, &opts).map_err(|_| explain(it, r, asm, e.clone(), loads))?;
+        let sols = held.solve(loads).map_err(|_| explain(it, r, asm, e.clone(), loads))?;
+        if !unloaded_modes(asm.problem.conditions.len(), loads, &sols) {
+            return Err(explain(it, r, asm, e, loads));
+        }
+        return Ok(sols.iter().map(|s| Rc::new(solution_field(asm, s))).collect());
     }
     let (sols, extra) = reso_ense(it, r, asm, loads, o)?;
     let held = match &extra[..] {
@@ -278,6 +294,18 @@ fn soft_singular(
     };
     it.println(&format!("RESO 'SOUC': warning: singular system; {held}; that solution is returned"));
     Ok(sols)
+}
+
+/// Whether the conditions added to hold the free modes (after the `m`
+/// given ones) carry no force: each one's multiplier is the work of the
+/// load along its mode, negligible against the loads and reactions.
+fn unloaded_modes(m: usize, loads: &[Load], sols: &[crate::solve::Solution]) -> bool {
+    loads.iter().zip(sols).all(|(l, s)| {
+        let big = |v: &[f64]| v.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+        let scale = big(&l.f).max(big(&s.lambda[..m]));
+        let held = big(&s.lambda[m..]);
+        held <= 1e-9 * scale || (scale == 0.0 && held == 0.0)
+    })
 }
 
 /// 'ENSE': on a singular system, hold each free rigid mode by blocking its
@@ -381,7 +409,7 @@ fn solve_unil(
             .iter()
             .chain(&last.released)
             .take(8)
-            .map(|&k| super::assemble::describe_condition(it, r, k, load.d.get(k).copied().unwrap_or(0.0)))
+            .map(|&k| super::assemble::describe_condition(it, r, asm.origin(k), load.d.get(k).copied().unwrap_or(0.0)))
             .collect();
         it.println(&format!(
             "RESO 'SOUC': warning: the status iteration did not converge after {} solves; the last iterate is returned ({} condition(s) still changing: {})",
@@ -390,7 +418,9 @@ fn solve_unil(
             changing.join("; ")
         ));
     }
-    let statuses = r.conds.iter().enumerate().filter(|(_, c)| c.kind.is_unilateral()).map(|(k, _)| sol.active[k]);
+    // Only equality rows are merged: the unilateral ones keep their order.
+    let statuses =
+        asm.problem.conditions.iter().enumerate().filter(|(_, c)| c.kind.is_unilateral()).map(|(k, _)| sol.active[k]);
     r.cache.borrow_mut().last_unil = Some((report.clone(), statuses.collect()));
     Ok((sol, report))
 }
@@ -459,7 +489,7 @@ fn unil(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         return Err(a.err("the RIGIDITE holds no unilateral condition"));
     }
     let asm = r.numbered();
-    let load = assemble::load(it, &asm, &[&f]).map_err(|e| a.err(e.message))?;
+    let load = assemble::load_of(it, &r, &asm, &[&f]).map_err(|e| a.err(e.message))?;
     finite_data(&asm, std::slice::from_ref(&load)).map_err(|e| a.err(e))?;
     let (sol, rep) = solve_unil(it, &r, &asm, &load, &o)?;
     record(it, &rep);

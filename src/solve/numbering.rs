@@ -9,6 +9,7 @@
 //! million unknowns allocates no strings.
 
 use super::problem::{Condition, Load, Matrix, Problem};
+use super::twins::{agree, Twin};
 use rustc_hash::FxHashMap as HashMap;
 
 /// The numbered problem of one system over named unknowns.
@@ -21,7 +22,12 @@ pub struct Assembled {
     duals: Vec<String>,
     index: HashMap<(usize, u16), usize>,
     /// Multiplier node of each condition -> condition number.
-    mult: HashMap<usize, usize>,
+    pub(super) mult: HashMap<usize, usize>,
+    /// Multiplier nodes of the rows merged into an earlier twin
+    /// ([`Assembled::merge_twins`]).
+    pub(super) twins: HashMap<usize, Twin>,
+    /// Unmerged number of each condition (empty: nothing was merged).
+    pub(super) origin: Vec<usize>,
     /// The multiplier node of each condition, in condition order.
     pub mult_nodes: Vec<usize>,
     pub problem: Problem,
@@ -34,6 +40,9 @@ pub enum LoadError {
     NoCondition { node: usize },
     /// A force component at a node where the system has no such unknown.
     NoUnknown { node: usize, comp: String },
+    /// Twin conditions (one row a multiple of the other) given values that
+    /// disagree; both numbered as in the unmerged system.
+    Conflicting { kept: usize, twin: usize },
 }
 
 impl Assembled {
@@ -86,11 +95,13 @@ impl Assembled {
     pub fn load<'a>(&self, entries: impl IntoIterator<Item = (usize, &'a str, f64)>) -> Result<Load, LoadError> {
         let mut f = vec![0.0; self.dofs.len()];
         let mut d = vec![0.0; self.problem.conditions.len()];
+        let mut twins: HashMap<usize, f64> = HashMap::default();
         for (n, c, v) in entries {
             if c == "FLX" {
-                match self.mult.get(&n) {
-                    Some(&k) => d[k] += v,
-                    None => return Err(LoadError::NoCondition { node: n }),
+                match (self.mult.get(&n), self.twins.get(&n)) {
+                    (Some(&k), _) => d[k] += v,
+                    (None, Some(_)) => *twins.entry(n).or_default() += v,
+                    (None, None) => return Err(LoadError::NoCondition { node: n }),
                 }
                 continue;
             }
@@ -98,6 +109,15 @@ impl Assembled {
                 Some(i) => f[i] += v,
                 None => return Err(LoadError::NoUnknown { node: n, comp: c.to_string() }),
             }
+        }
+        // A twin given no value imposes 0, as any condition: it must agree too.
+        let conflict = self
+            .twins
+            .iter()
+            .filter(|(node, t)| !agree(d[t.kept], twins.get(node).copied().unwrap_or(0.0), t.ratio))
+            .min_by_key(|(_, t)| t.origin);
+        if let Some((_, t)) = conflict {
+            return Err(LoadError::Conflicting { kept: self.origin(t.kept), twin: t.origin });
         }
         Ok(Load { f, d })
     }

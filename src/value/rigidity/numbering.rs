@@ -53,11 +53,19 @@ impl Rigidite {
         a
     }
 
-    /// [`Rigidite::number`], computed once per object and kept in its
-    /// solver cache.
+    /// [`Rigidite::number`] with twin equality rows merged (RESO accepts a
+    /// condition written twice), computed once per object and kept in its
+    /// solver cache. Its condition `k` is `self.conds[asm.origin(k)]`.
     pub fn numbered(&self) -> Rc<Assembled> {
         let mut cache = self.cache.borrow_mut();
-        cache.assembled.get_or_insert_with(|| Rc::new(self.number())).clone()
+        cache
+            .assembled
+            .get_or_insert_with(|| {
+                let mut a = self.number();
+                a.merge_twins();
+                Rc::new(a)
+            })
+            .clone()
     }
 }
 
