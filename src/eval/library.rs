@@ -260,7 +260,10 @@ pub(crate) fn file_procs(name: &str, bytes: &[u8], only: Option<&str>) -> Result
             if let Some(o) = only {
                 procs.retain(|p| p.name == o);
                 if procs.is_empty() {
-                    return Err(Error::runtime(format!("'{}' has no procedure {} ($$$$ {} then DEBPROC {})", name, o, o, o)));
+                    return Err(Error::runtime(format!(
+                        "'{}' has no procedure {} ($$$$ {} then DEBPROC {})",
+                        name, o, o, o
+                    )));
                 }
             }
         }

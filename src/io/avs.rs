@@ -9,10 +9,10 @@
 //! shortest form that reads back to the same f64.
 
 use super::{append_file, err, read_file, write_file, IoError, Result};
-use std::path::Path;
 use crate::fem::mesh::ElemType;
 use std::collections::HashMap;
 use std::fmt::Write;
+use std::path::Path;
 
 /// One UCD structure. Node and cell numbers are 0-based indices.
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -141,7 +141,10 @@ impl<'a> Lines<'a> {
             self.line += 1;
             let t = l.trim();
             if !t.is_empty() && !t.starts_with('#') {
-                return Ok((self.line, t.split(|c: char| c.is_whitespace() || c == ',').filter(|w| !w.is_empty()).collect()));
+                return Ok((
+                    self.line,
+                    t.split(|c: char| c.is_whitespace() || c == ',').filter(|w| !w.is_empty()).collect(),
+                ));
             }
         }
     }
@@ -175,7 +178,8 @@ pub fn parse_at(text: &str, pos: usize, line: usize) -> Result<Option<(Ucd, usiz
     let (l, w) = ls.next("the counts line")?;
     let count = |k: usize, what: &str| num::<usize>(w.get(k), l, what);
     let (nn, nc) = (count(0, "the number of nodes")?, count(1, "the number of cells")?);
-    let (nd, cd, md) = (count(2, "the node data count")?, count(3, "the cell data count")?, count(4, "the model data count")?);
+    let (nd, cd, md) =
+        (count(2, "the node data count")?, count(3, "the cell data count")?, count(4, "the model data count")?);
     let mut u = Ucd::default();
     let mut ids: HashMap<i64, usize> = HashMap::new();
     for _ in 0..nn {
@@ -198,7 +202,13 @@ pub fn parse_at(text: &str, pos: usize, line: usize) -> Result<Option<(Ucd, usiz
             .map(|(t, _)| *t)
             .ok_or_else(|| IoError(format!("line {}: expected a cell type (pt line tri quad tet prism hex)", l)))?;
         if w.len() != 3 + ty.nodes() {
-            return err(format!("line {}: a {} cell has {} nodes, found {}", l, TYPES.iter().find(|t| t.0 == ty).map_or("", |t| t.1), ty.nodes(), w.len().saturating_sub(3)));
+            return err(format!(
+                "line {}: a {} cell has {} nodes, found {}",
+                l,
+                TYPES.iter().find(|t| t.0 == ty).map_or("", |t| t.1),
+                ty.nodes(),
+                w.len().saturating_sub(3)
+            ));
         }
         let mut nodes = Vec::with_capacity(ty.nodes());
         for k in 3..w.len() {

@@ -42,9 +42,10 @@ pub fn parse_columns(bytes: &[u8], first: usize, sep: u8) -> Result<Vec<Vec<f64>
             return err(format!("line {}: {} fields where the first row read has {}", line, n, cols.len()));
         }
         for (k, field) in rec.iter().take(n).enumerate() {
-            let x = std::str::from_utf8(field).ok().and_then(|f| number(f, sep)).ok_or_else(|| {
-                IoError(format!("line {}, column {}: not a number", line, k + 1))
-            })?;
+            let x = std::str::from_utf8(field)
+                .ok()
+                .and_then(|f| number(f, sep))
+                .ok_or_else(|| IoError(format!("line {}, column {}: not a number", line, k + 1)))?;
             if !x.is_finite() {
                 return err(format!("line {}, column {}: not a finite number", line, k + 1));
             }

@@ -307,7 +307,7 @@ mod tests {
     #[test]
     fn three_layouts_and_short_exponents() {
         let text = "$ c\nBEGIN BULK\nGRID           1       0      1.      2.    3.-1\n\
-GRID*                  2               0            1.5E0           -2.0D0*\n*              4.\n\
+GRID*                  2               0           1.5E0          -2.0D0*\n*              4.\n\
 GRID,3,,0.,1.,0.\nCTRIA3         7       5       1       2       3\nSPC1           9  123456       1    THRU       3\n\
 FORCE          4       2       0      2.      1.      0.      0.\nENDDATA\n";
         let b = parse(text).unwrap();

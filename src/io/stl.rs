@@ -34,7 +34,8 @@ pub fn parse(bytes: &[u8]) -> Result<Triangles> {
         check_binary_size(bytes)?;
     }
     let mut cursor = std::io::Cursor::new(bytes);
-    let reader = stl_io::create_stl_reader(&mut cursor).map_err(|e| IoError(format!("not an STL file ({})", e.kind())))?;
+    let reader =
+        stl_io::create_stl_reader(&mut cursor).map_err(|e| IoError(format!("not an STL file ({})", e.kind())))?;
     let mut out = Triangles::default();
     let mut index = std::collections::HashMap::new();
     for (n, t) in reader.enumerate() {
@@ -126,7 +127,8 @@ mod tests {
 
     #[test]
     fn ascii_facets_share_vertices() {
-        let text = b"solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n\
+        let text =
+            b"solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n\
 facet normal 0 0 1\nouter loop\nvertex 1 0 0\nvertex 1 1 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid s\n";
         let t = parse(text).unwrap();
         assert_eq!(t.coords.len(), 4);

@@ -137,7 +137,8 @@ fn renumber(v: &mut Value, map: &mg::NodeMap, seen: &mut std::collections::HashS
         Value::Mesh(x) => *x = Rc::new(map.apply(x)),
         Value::Point(p) => *p = map.get(*p),
         Value::Chpo(c) if c.nodes.iter().any(|n| map.get(*n) != *n) => {
-            let entries: Vec<(usize, String, f64)> = c.entries().map(|(n, k, x)| (map.get(n), k.to_string(), x)).collect();
+            let entries: Vec<(usize, String, f64)> =
+                c.entries().map(|(n, k, x)| (map.get(n), k.to_string(), x)).collect();
             *c = Rc::new(Chpoint::from_entries(c.nature, entries.iter().map(|(n, k, x)| (*n, k.as_str(), *x))));
         }
         Value::Table(t) => {

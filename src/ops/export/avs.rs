@@ -27,7 +27,12 @@ pub(super) fn sort(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 Some(Value::Mesh(m)) if mesh.is_none() => mesh = Some(m),
                 Some(Value::Chpo(c)) if chpo.is_none() => chpo = Some(c),
                 Some(Value::Mchaml(c)) if chml.is_none() => chml = Some(c),
-                Some(v) => return Err(a.err(format!("cannot write a {} here (one MAILLAGE, CHPOINT and MCHAML at most)", v.type_name()))),
+                Some(v) => {
+                    return Err(a.err(format!(
+                        "cannot write a {} here (one MAILLAGE, CHPOINT and MCHAML at most)",
+                        v.type_name()
+                    )))
+                }
                 None => break,
             },
         }
@@ -94,7 +99,9 @@ fn cell_values(a: &Args, geo: &Mesh, c: &Mchaml) -> Result<Vec<(String, Vec<f64>
             }
         }
         if zone.values.iter().any(|pts| pts.len() != 1) {
-            return Err(a.err("AVS takes one value per element: change the MCHAML to its centres first (CHAN 'GRAVITE')"));
+            return Err(
+                a.err("AVS takes one value per element: change the MCHAML to its centres first (CHAN 'GRAVITE')")
+            );
         }
         let mut e = 0;
         for part in &zone.mesh.parts {
@@ -111,7 +118,9 @@ fn cell_values(a: &Args, geo: &Mesh, c: &Mchaml) -> Result<Vec<(String, Vec<f64>
         for el in part.elems() {
             let mut key = el.to_vec();
             key.sort_unstable();
-            let &(z, e) = at.get(&key).ok_or_else(|| a.err("the MCHAML's support does not hold every element of the MAILLAGE"))?;
+            let &(z, e) = at
+                .get(&key)
+                .ok_or_else(|| a.err("the MCHAML's support does not hold every element of the MAILLAGE"))?;
             let zone = &c.zones[z];
             for (k, name) in comps.iter().enumerate() {
                 let v = match zone.comps.iter().position(|n| n == name) {

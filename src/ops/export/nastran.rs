@@ -38,7 +38,9 @@ pub(super) fn lire(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             return Err(fail(format!("GRID {} is defined twice", id)));
         }
     }
-    let at = |g: i64, what: &str| node.get(&g).copied().ok_or_else(|| fail(format!("{} refers to GRID {}, which is not defined", what, g)));
+    let at = |g: i64, what: &str| {
+        node.get(&g).copied().ok_or_else(|| fail(format!("{} refers to GRID {}, which is not defined", what, g)))
+    };
     // Elements by property, parts by type in order of first appearance.
     let mut by_pid: BTreeMap<i64, Vec<Part>> = BTreeMap::new();
     for (pid, ty, grids) in &b.elements {

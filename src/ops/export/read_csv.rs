@@ -17,9 +17,10 @@ pub(super) fn lire(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     while let Some(k) = a.keyword(&["DEBU", "SEPA"]) {
         if k == "DEBU" {
             let n = a.req::<i64>()?;
-            first = usize::try_from(n).ok().filter(|&n| n >= 1).ok_or_else(|| {
-                a.err(format!("'DEBU' takes a line number from 1 on, found {}", n))
-            })?;
+            first = usize::try_from(n)
+                .ok()
+                .filter(|&n| n >= 1)
+                .ok_or_else(|| a.err(format!("'DEBU' takes a line number from 1 on, found {}", n)))?;
         } else {
             let s = a.req::<String>()?;
             sep = match s.as_bytes() {
