@@ -231,7 +231,7 @@ fn expand_tabs(s: &str) -> String {
     for ch in s.chars() {
         if ch == '\t' {
             out.push(' ');
-            while out.len() % 8 != 0 {
+            while !out.len().is_multiple_of(8) {
                 out.push(' ');
             }
         } else {

@@ -141,11 +141,9 @@ fn renumber(v: &mut Value, map: &mg::NodeMap, seen: &mut std::collections::HashS
                 c.entries().map(|(n, k, x)| (map.get(n), k.to_string(), x)).collect();
             *c = Rc::new(Chpoint::from_entries(c.nature, entries.iter().map(|(n, k, x)| (*n, k.as_str(), *x))));
         }
-        Value::Table(t) => {
-            if seen.insert(Rc::as_ptr(t) as usize) {
-                for x in t.borrow_mut().values_mut() {
-                    renumber(x, map, seen);
-                }
+        Value::Table(t) if seen.insert(Rc::as_ptr(t) as usize) => {
+            for x in t.borrow_mut().values_mut() {
+                renumber(x, map, seen);
             }
         }
         _ => {}

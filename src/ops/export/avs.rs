@@ -205,7 +205,7 @@ pub(super) fn lire(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         t.set(mot("LEMCHAML"), Value::Mchaml(Rc::new(Mchaml { subtype: String::new(), zones })));
     }
     for (label, v) in &u.model_data {
-        t.set(Key::Mot(label.chars().take(4).collect::<String>().into()), Value::Float(*v));
+        t.set(Key::Mot(label.chars().take(4).collect::<String>()), Value::Float(*v));
     }
     Ok(vec![Value::Table(Rc::new(RefCell::new(t)))])
 }
