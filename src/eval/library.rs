@@ -21,6 +21,7 @@ use crate::error::{Error, Result};
 use crate::source::{decode, Source};
 use crate::syntax::ast::{ProcDef, Stmt};
 use crate::syntax::Reader;
+use crate::value::Value;
 use rustc_hash::FxHashMap as HashMap;
 use std::path::{Path, PathBuf};
 use std::rc::Rc;
@@ -238,6 +239,71 @@ impl super::Interp {
             self.proc_sources.insert(super::proc::proc_key(&p), source);
             p
         }))
+    }
+}
+
+/// The procedures of a file read by LIRE 'PROC' (`name` as its user wrote
+/// it): in the `$$$$ NAME` format, every procedure (or only `only`);
+/// otherwise the DEBPROCs it holds, or, with none, the whole file as a
+/// procedure without arguments named `only`. Errors point into the file.
+pub(crate) fn file_procs(name: &str, bytes: &[u8], only: Option<&str>) -> Result<(Vec<Rc<ProcDef>>, Rc<Source>)> {
+    let source = Source::new(name.to_string(), decode(bytes));
+    let text = &source.text;
+    let mut procs = Vec::new();
+    match chunks(text) {
+        Some(list) => {
+            for (chunk, (start, end)) in list {
+                if only.is_none_or(|o| o == chunk) {
+                    procs.extend(parse_chunk(&source, start, end)?);
+                }
+            }
+            if let Some(o) = only {
+                procs.retain(|p| p.name == o);
+                if procs.is_empty() {
+                    return Err(Error::runtime(format!(
+                        "'{}' has no procedure {} ($$$$ {} then DEBPROC {})",
+                        name, o, o, o
+                    )));
+                }
+            }
+        }
+        None => {
+            procs = parse_chunk(&source, 0, text.len())?;
+            if procs.is_empty() {
+                let Some(o) = only else {
+                    return Err(Error::runtime(format!(
+                        "'{}' defines no procedure (DEBPROC): name the procedure its instructions make (LIRE 'PROC' file 'NAME')",
+                        name
+                    )));
+                };
+                let mut body = Vec::new();
+                for stmt in Reader::range(text, 0, text.len()) {
+                    body.push(stmt.map_err(|mut e| {
+                        e.source = Some(source.clone());
+                        e
+                    })?);
+                }
+                let span = crate::source::Span::new(0, 0);
+                let results = crate::syntax::ast::Instr { targets: vec![], items: vec![], span };
+                procs.push(Rc::new(ProcDef { name: o.to_string(), params: vec![], body, results, span }));
+            }
+        }
+    }
+    Ok((procs, source))
+}
+
+impl super::Interp {
+    /// Define the procedures LIRE 'PROC' read, as if the deck had them
+    /// (errors inside them point into their file). Returns their names.
+    pub(crate) fn define_file_procs(&mut self, procs: Vec<Rc<ProcDef>>, source: Rc<Source>) -> Vec<String> {
+        let mut names = Vec::new();
+        for p in procs {
+            self.proc_sources.insert(super::proc::proc_key(&p), source.clone());
+            let name = p.name.clone();
+            self.store.set(&name, Value::Proc(p));
+            names.push(name);
+        }
+        names
     }
 }
 

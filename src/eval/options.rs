@@ -69,6 +69,12 @@ pub struct Exports {
     pub pvd: Option<(String, Vec<(f64, String)>)>,
     /// Pictures drawn without an OPTI SORT name (`gibi_trac_N`).
     pub pictures: u64,
+    /// The AVS file SORT 'AVS' wrote in this run: 'SUIT' appends to it
+    /// (and only to it, never to a file left by an earlier run).
+    pub avs_written: Option<String>,
+    /// The AVS file LIRE 'AVS' reads (OPTI LECT) and where its next
+    /// structure starts (byte offset, line number): each LIRE reads one.
+    pub avs_read: Option<(String, usize, usize)>,
 }
 
 /// Cumulative time and call count per operator, for TEMP.

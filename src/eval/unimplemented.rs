@@ -18,7 +18,7 @@ use crate::error::Error;
 
 const STATICS: &str =
     "gibi solves linear statics: RIGI, BLOQ/RELA, RESO (UNIL for unilateral conditions), and PASAPAS on elastic structures with contact";
-const FILES: &str = "gibi writes results with SORT 'VTK' (ParaView) and reads meshes with LIRE 'GMSH'";
+const FILES: &str = "gibi writes with SORT 'VTK' (ParaView), 'AVS', 'NAS', 'STL', 'MAT' and reads with LIRE 'GMSH', 'AVS', 'NAS', 'STL', 'CSV', 'PROC'";
 const MESHING: &str = "gibi meshes with DROI, CERC, DALL, SURF, REGL, COUT, TRAN, ROTA, VOLU, SYME, PLUS, ELIM and ET";
 const POST: &str = "gibi post-processes with SIGM, EPSI, VMIS, PRIN, EXTR, EVOL, INTG, and draws with TRAC and DESS";
 const OTHER: &str = "`gibi --list-operators` lists what gibi implements";

@@ -4,16 +4,24 @@
 //!   time collections;
 //! - [`gmsh`]: Gmsh `.msh` meshes (formats 2.2 and 4.1, ASCII);
 //! - [`plot`]: meshes, fields and curves as SVG or PNG images;
-//! - [`mtx`]: MatrixMarket dumps of assembled matrices.
+//! - [`mtx`]: MatrixMarket dumps of assembled matrices;
+//! - [`avs`]: AVS UCD ASCII meshes with node, cell and model data;
+//! - [`nastran`]: Nastran bulk data (grids, elements, constraints, loads);
+//! - [`stl`]: STL triangle surfaces (ASCII or binary in, binary out);
+//! - [`csv_table`]: numeric columns of delimited text files.
 //!
 //! Like `solve`, this layer knows nothing of the language: it works on the
 //! FE core's plain data (`fem::mesh`) and on numbers and names. The Gibiane
 //! operators that call it live in `ops/export/`. It prints nothing; every
 //! failure is an [`IoError`] with a message a user can act on.
 
+pub mod avs;
+pub mod csv_table;
 pub mod gmsh;
 pub mod mtx;
+pub mod nastran;
 pub mod plot;
+pub mod stl;
 pub mod vtk;
 
 use std::fmt;
@@ -44,6 +52,17 @@ pub(crate) fn write_file(path: &Path, bytes: &[u8]) -> Result<()> {
     use std::io::Write;
     let mut o = std::fs::OpenOptions::new();
     o.write(true).create(true).truncate(true);
+    no_follow(&mut o);
+    let fail = |e: std::io::Error| IoError(format!("cannot write {}: {}", path.display(), link_error(e)));
+    o.open(path).map_err(fail)?.write_all(bytes).map_err(fail)
+}
+
+/// Add to the end of a file (created if need be), not following a
+/// symbolic link in the final component (see [`write_file`]).
+pub(crate) fn append_file(path: &Path, bytes: &[u8]) -> Result<()> {
+    use std::io::Write;
+    let mut o = std::fs::OpenOptions::new();
+    o.append(true).create(true);
     no_follow(&mut o);
     let fail = |e: std::io::Error| IoError(format!("cannot write {}: {}", path.display(), link_error(e)));
     o.open(path).map_err(fail)?.write_all(bytes).map_err(fail)

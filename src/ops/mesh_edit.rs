@@ -106,7 +106,8 @@ fn cont(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 /// ELIM works in place in Cast3M: every object holding a merged node sees
-/// the kept one. We rewrite every mesh and point in the store.
+/// the kept one. We rewrite every mesh, point and nodal field in the
+/// store, and those held in tables (a mesh read by LIRE sits in one).
 fn elim(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     // The tolerance may come before or after the mesh (`ELIM 1.e-3 s`,
     // `ELIM s 1.e-3`).
@@ -119,17 +120,34 @@ fn elim(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let tol = tol.or_else(|| a.opt_num()).unwrap_or(1e-6);
     let (merged, map) = mg::elim(&it.nodes, &m, tol)?;
     if !map.is_empty() {
+        let mut seen = std::collections::HashSet::new();
         for f in it.store.frames.iter_mut() {
             for v in f.vars.values_mut() {
-                match v {
-                    Value::Mesh(x) => *x = Rc::new(map.apply(x)),
-                    Value::Point(p) => *p = map.get(*p),
-                    _ => {}
-                }
+                renumber(v, &map, &mut seen);
             }
         }
     }
     Ok(mesh_val(merged))
+}
+
+/// `v` with merged nodes renumbered; a table is visited once (tables may
+/// hold themselves).
+fn renumber(v: &mut Value, map: &mg::NodeMap, seen: &mut std::collections::HashSet<usize>) {
+    match v {
+        Value::Mesh(x) => *x = Rc::new(map.apply(x)),
+        Value::Point(p) => *p = map.get(*p),
+        Value::Chpo(c) if c.nodes.iter().any(|n| map.get(*n) != *n) => {
+            let entries: Vec<(usize, String, f64)> =
+                c.entries().map(|(n, k, x)| (map.get(n), k.to_string(), x)).collect();
+            *c = Rc::new(Chpoint::from_entries(c.nature, entries.iter().map(|(n, k, x)| (*n, k.as_str(), *x))));
+        }
+        Value::Table(t) if seen.insert(Rc::as_ptr(t) as usize) => {
+            for x in t.borrow_mut().values_mut() {
+                renumber(x, map, seen);
+            }
+        }
+        _ => {}
+    }
 }
 
 fn inte(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {

@@ -13,12 +13,17 @@
 //! (MatrixMarket), [`read_gmsh`], [`pictures`] (TRAC, DESS, VECT) with
 //! [`trac_fields`] (the scalar a picture is coloured by).
 
+mod avs;
+mod nastran;
 mod pictures;
 pub(crate) use pictures::Vecteur;
+mod read_csv;
 mod read_gmsh;
+mod read_proc;
 mod sort_matrix;
 mod sort_pasapas;
 mod sort_vtk;
+mod stl;
 mod trac_fields;
 
 use super::{Args, OpDef};
@@ -31,7 +36,7 @@ use std::path::{Path, PathBuf};
 pub(crate) const OPS: &[OpDef] = &[
     OpDef {
         name: "SORT",
-        signature: "SORT 'VTK' MAILLAGE (CHPOINT|MCHAML ('NAME'))… ('CONTACT' RIGIDITE SOLUTION (LIMITS)) ('TEMPS' t) | SORT 'VTK' TABLE_PASAPAS (MAILLAGE) | SORT 'MAT' RIGIDITE 'file.mtx'",
+        signature: "SORT 'VTK' MAILLAGE (CHPOINT|MCHAML ('NAME'))… ('CONTACT' RIGIDITE SOLUTION (LIMITS)) ('TEMPS' t) | SORT 'VTK' TABLE_PASAPAS (MAILLAGE) | SORT 'MAT' RIGIDITE 'file.mtx' | SORT 'STL' MAILLAGE | SORT 'AVS' (MAILLAGE) (CHPOINT) (MCHAML) ('SUIT') ('TEMP' t) | SORT 'NAS' MAILLAGE",
         doc: "Write files for other tools. 'VTK': a ParaView .vtu named by OPTI SORT (default gibi.vtu) with \
               nodal fields (UX UY UZ → one 3-component vector, also in 2D) and element fields (MCHAML, averaged \
               per element); with 'TEMPS' t each call writes name_NNNN.vtu and rewrites name.pvd with every time \
@@ -39,19 +44,34 @@ pub(crate) const OPS: &[OpDef] = &[
               name.pvd with every saved step (DEPL, SIGMA, EPSI, contact_status, contact_pressure) on the mesh of \
               its model (or the mesh given). 'MAT': the assembled \
               matrix in MatrixMarket format plus file.mtx.dofs (row node component); conditions are extra LX \
-              rows with a single multiplier each.",
+              rows with a single multiplier each. 'STL': the surface elements of a mesh as a binary STL named \
+              by OPTI SORT (default gibi.stl), a QUA4 as two triangles. 'AVS': an AVS UCD ASCII file (OPTI SORT \
+              name, .inp added) with the mesh (else the MCHAML's support, else the CHPOINT's nodes), the nodal \
+              field (zero where it has no value), the element field (one value per element: CHAN 'GRAVITE') \
+              and the time; 'SUIT' appends a structure to the file this run wrote. 'NAS': Nastran bulk data \
+              (OPTI SORT name, .nas added): GRID (large fields) and element cards, one property id per sub-mesh.",
         example: "opti sort 'beam' ; sort 'VTK' s u 'DEPL' sig 'SIGMA' 'TEMPS' 1. ;",
         f: sort,
     },
     OpDef {
         name: "LIRE",
-        signature: "LIRE 'GMSH' 'file.msh'",
+        signature: "LIRE 'GMSH' 'file.msh' | LIRE 'STL' 'file.stl' | LIRE 'CSV' 'file' ('DEBU' line) ('SEPA' char) | LIRE 'AVS' | LIRE 'NAS' 'file' | LIRE 'PROC' 'file' ('NAME')",
         doc: "Read a Gmsh mesh (formats 2.2 and 4.1, ASCII; SEG2/3, TRI3/6, QUA4/8, TET4, PRI6, CUB8, POI1). \
               Returns a TABLE of MAILLAGE keyed by physical group name (by tag when unnamed), plus 'TOUT' for \
               every element. New nodes get coordinates in the current dimension (a non-zero z in DIME 2 is \
-              an error).",
-        example: "t = lire 'GMSH' 'plate.msh' ; s = t . 'PLATE' ; bas = t . 'BOTTOM' ;",
-        f: read_gmsh::lire,
+              an error). 'STL' (ASCII or binary): a MAILLAGE of TRI3, vertices with equal coordinates being one \
+              node (STL keeps single precision). 'CSV': a TABLE of LISTREEL indexed 1..N, one per column, read \
+              from line 'DEBU' on (default 1), fields separated by 'SEPA' (default ';'). 'AVS': the next AVS UCD \
+              structure of the OPTI LECT file as a TABLE: MAILSUPP (every node, POI1), LEMAILLA (sub-meshes by \
+              type and material), SOUMAILA (them, indexed 1..N), LECHPOIN (nodal data), LEMCHAML (element data) \
+              and each global value under its label cut to 4 characters ('time' for the 'TEMP' of SORT 'AVS'). 'NAS': Nastran bulk data (small, large or free fields) \
+              as a TABLE: MAILLAGES (a MAILLAGE per property id), BLOCAGES (POI1 per SPC/SPC1 set), FORCES, \
+              MOMENTS, TEMPERATURES (a CHPOINT per set), RBE2 (per element a TABLE whose MAILLAGE has the \
+              independent point first), SYSTEMES (empty: coordinate systems are not read). 'PROC' (a directive): \
+              defines the procedures of a file in the `$$$$ NAME` format (all, or only NAME), the DEBPROCs of a \
+              plain file, or, with none, the file's instructions as the procedure NAME.",
+        example: "t = lire 'GMSH' 'plate.msh' ; s = t . 'PLATE' ; c = lire 'CSV' 'data.csv' 'DEBU' 2 'SEPA' ',' ;",
+        f: lire,
     },
     OpDef {
         name: "TRAC",
@@ -132,8 +152,56 @@ fn out_path(it: &Interp, name: &str) -> Result<PathBuf> {
 }
 
 fn sort(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    match a.req_keyword(&["VTK", "MAT"])? {
+    match a.req_keyword(&["VTK", "MAT", "STL", "AVS", "NAS"])? {
         "VTK" => sort_vtk::sort_vtk(it, a),
+        "NAS" => nastran::sort(it, a),
+        "AVS" => avs::sort(it, a),
+        "STL" => stl::sort(it, a),
         _ => sort_matrix::sort_mat(it, a),
     }
+}
+
+fn lire(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    match a.req_keyword(&["GMSH", "STL", "CSV", "AVS", "NAS", "PROC"])? {
+        "GMSH" => read_gmsh::lire(it, a),
+        "PROC" => read_proc::lire(it, a),
+        "NAS" => nastran::lire(it, a),
+        "AVS" => avs::lire(it, a),
+        "STL" => stl::lire(it, a),
+        _ => read_csv::lire(it, a),
+    }
+}
+
+/// New nodes for coordinates read from `file`, in the current dimension:
+/// a coordinate the dimension drops must be zero. Returns the number of
+/// the first. `label` names a node as the file numbers it.
+fn add_nodes(
+    it: &mut Interp,
+    a: &Args,
+    file: &str,
+    coords: &[[f64; 3]],
+    label: impl Fn(usize) -> String,
+) -> Result<usize> {
+    let dime = it.opts.dime;
+    for (i, x) in coords.iter().enumerate() {
+        if let Some(k) = (dime.max(1)..3).find(|&k| dime > 0 && x[k].abs() > 1e-9 * (1.0 + x[0].abs() + x[1].abs())) {
+            return Err(a.err(format!(
+                "{}: {} has {} = {} but OPTI DIME is {}",
+                file,
+                label(i),
+                ["x", "y", "z"][k],
+                x[k],
+                dime
+            )));
+        }
+    }
+    let base = it.nodes.len();
+    for x in coords {
+        let mut p = *x;
+        if dime > 0 {
+            p[dime..].iter_mut().for_each(|c| *c = 0.0);
+        }
+        it.nodes.push(p, it.opts.dens);
+    }
+    Ok(base)
 }

@@ -11,31 +11,11 @@ use std::cell::RefCell;
 use std::rc::Rc;
 
 pub(super) fn lire(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    a.req_keyword(&["GMSH"])?;
     let file = a.req::<String>()?;
     let path = it.files.check_read(&file)?;
     let g = gmsh::read(&path).map_err(io_err)?;
-    let dime = it.opts.dime;
-    for (i, x) in g.coords.iter().enumerate() {
-        if let Some(k) = (dime.max(1)..3).find(|&k| dime > 0 && x[k].abs() > 1e-9 * (1.0 + x[0].abs() + x[1].abs())) {
-            return Err(a.err(format!(
-                "{}: node {} has {} = {} but OPTI DIME is {}",
-                file,
-                g.node_tags[i],
-                ["x", "y", "z"][k],
-                x[k],
-                dime
-            )));
-        }
-    }
-    let base = it.nodes.len();
-    for x in &g.coords {
-        let mut p = *x;
-        if dime > 0 {
-            p[dime..].iter_mut().for_each(|c| *c = 0.0);
-        }
-        it.nodes.push(p, it.opts.dens);
-    }
+    let tags = &g.node_tags;
+    let base = super::add_nodes(it, a, &file, &g.coords, |i| format!("node {}", tags[i]))?;
     let shift = |mut m: Mesh| {
         m.parts.iter_mut().for_each(|p| p.conn.iter_mut().for_each(|n| *n += base));
         Value::Mesh(Rc::new(m))
