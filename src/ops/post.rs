@@ -132,7 +132,20 @@ pub(crate) fn to_gauss(z: &MchamlZone, e: usize) -> GaussField {
 }
 
 pub(crate) fn zone_of<'a>(model: &'a Model, z: &MchamlZone) -> Option<&'a ModelZone> {
-    model.zones.iter().find(|m| m.mesh.parts.iter().any(|p| z.mesh.parts.first() == Some(p)) || m.mesh == z.mesh)
+    model
+        .zones
+        .iter()
+        .find(|m| m.mesh.parts.iter().any(|p| z.mesh.parts.first() == Some(p)) || m.mesh == z.mesh)
+        .or_else(|| {
+            // A field restricted to part of a zone (REDU MCHAML GEO, then
+            // `+`): the zone holding all its elements.
+            let first = z.mesh.parts.first()?;
+            model.zones.iter().find(|m| {
+                let own: std::collections::HashSet<&[usize]> =
+                    m.mesh.parts.iter().filter(|p| p.ty == first.ty).flat_map(|p| p.elems()).collect();
+                !own.is_empty() && first.elems().all(|e| own.contains(e))
+            })
+        })
 }
 
 fn vmis(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
