@@ -224,6 +224,13 @@ impl<'a> Args<'a> {
         Some(v)
     }
 
+    /// Give back a value read too early (a form told apart by what follows
+    /// it): it becomes the newest pushed operand, found first by the next
+    /// read of its type.
+    pub fn unread(&mut self, v: Value) {
+        self.st.left.push(v);
+    }
+
     /// Peek at the next right value without consuming it.
     pub fn peek_right(&self) -> Option<Value> {
         self.right_value()

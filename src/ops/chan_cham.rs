@@ -76,3 +76,60 @@ pub(super) fn from_chpoint(_it: &mut Interp, a: &mut Args, ch: &Chpoint) -> Resu
     let subtype = a.word_not_operator().map(|w| w.trim().to_uppercase()).unwrap_or_default();
     Ok(vec![Value::Mchaml(Rc::new(Mchaml { subtype, zones }))])
 }
+
+/// `CHAN (TYPE) GEO LISTENTI`: elements of TYPE (the OPTI ELEM type by
+/// default) whose nodes are the listed points of the POI1 mesh GEO, taken
+/// in groups of the element's node count. None when the arguments are not
+/// this form (nothing is consumed then).
+pub(super) fn connect(it: &mut Interp, a: &mut Args) -> Result<Option<Vec<Value>>> {
+    use crate::fem::mesh::ElemType;
+    // The types CHAN converts a whole mesh to keep that meaning.
+    const CONVERTED: &[&str] = &["POI1", "QUA8", "TRI6", "SEG3", "QUA4", "TRI3", "SEG2"];
+    let ty = match a.peek_right() {
+        Some(Value::Mesh(_)) => None,
+        Some(Value::Mot(w)) => match ElemType::from_name(w.trim().to_uppercase().as_str()) {
+            Some(t) if !CONVERTED.contains(&t.name()) => {
+                a.word();
+                Some(t)
+            }
+            _ => return Ok(None),
+        },
+        _ => return Ok(None),
+    };
+    let given = ty.is_some();
+    let ty = ty.unwrap_or_else(|| super::mesh::elem_type_opt(it));
+    let geo = a.req::<Rc<Mesh>>()?;
+    let Some(conn) = a.opt_right::<Rc<Vec<i64>>>() else {
+        if !given {
+            // `CHAN GEO 'TRI3'`: a mesh first, then one of the other forms.
+            a.unread(Value::Mesh(geo));
+            return Ok(None);
+        }
+        return Err(a.missing("LISTENTI (the connectivity)"));
+    };
+    let pts: Vec<usize> = geo.parts.iter().flat_map(|p| p.conn.iter().copied()).collect();
+    if geo.parts.iter().any(|p| p.ty != ElemType::Poi1) {
+        return Err(a.err("the mesh must be made of POI1 elements"));
+    }
+    let n = ty.nodes();
+    if conn.len() % n != 0 {
+        return Err(a.err(format!("{} numbers do not make {} elements of {} nodes", conn.len(), ty.name(), n)));
+    }
+    let mut nodes = Vec::with_capacity(conn.len());
+    for &k in conn.iter() {
+        let i = usize::try_from(k - 1)
+            .ok()
+            .filter(|&i| i < pts.len())
+            .ok_or_else(|| a.err(format!("point number {} is out of range (the mesh has {} points)", k, pts.len())))?;
+        nodes.push(pts[i]);
+    }
+    let elems: Vec<Mesh> = nodes
+        .chunks(n)
+        .map(|e| crate::fem::meshing::manu(&it.nodes, ty, e))
+        .collect::<std::result::Result<_, _>>()?;
+    let mut out = Mesh::default();
+    for m in elems {
+        out = out.union(&m);
+    }
+    Ok(Some(vec![Value::Mesh(Rc::new(out))]))
+}

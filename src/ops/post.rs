@@ -176,6 +176,10 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         "POI1", "QUA8", "TRI6", "SEG3", "QUA4", "TRI3", "SEG2", "CHPO", "NOEUD", "INCO", "ATTRIBUT", "COMP", "TYPE",
         "GRAVITE", "MAJU", "MINU", "QUAD", "LIGN", "CHAM",
     ];
+    // CHAN (TYPE) POI1_MESH LISTENTI: elements joining the mesh's points.
+    if let Some(r) = super::chan_cham::connect(it, a)? {
+        return Ok(r);
+    }
     // The field may come before the keyword (`CHAN CHPO1 'ATTRIBUT' …`).
     let early = match a.peek_right() {
         Some(Value::Chpo(_)) => a.opt_right::<Rc<Chpoint>>(),
