@@ -10,7 +10,7 @@ use crate::value::{Chpoint, Nature, Value};
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
-    OpDef { name: "NOEU", signature: "NOEUD n", doc: "The point (node) number n, as numbered by gibi (LIST shows node numbers).", example: "p = noeud 5 ;", f: noeu },
+    OpDef { name: "NOEU", signature: "NOEUD n | NOEUD POINT", doc: "The point (node) number n, as numbered by gibi (LIST shows node numbers), or the number of a point.", example: "p = noeud 5 ;", f: noeu },
     OpDef { name: "COOR", signature: "COOR POINT | COOR n POINT | COOR (n) MAILLAGE", doc: "Coordinates of a point (one result per dimension), one of them, or coordinate fields (SCAL) on a mesh: one per dimension, or the n-th.", example: "x y = coor p ;", f: coor },
     OpDef { name: "NBNO", signature: "NBNO MAILLAGE", doc: "Number of nodes of a mesh.", example: "n = nbno l ;", f: nbno },
     OpDef { name: "NBEL", signature: "NBEL MAILLAGE", doc: "Number of elements of a mesh.", example: "n = nbel s ;", f: nbel },
@@ -18,6 +18,10 @@ pub(crate) const OPS: &[OpDef] = &[
 ];
 
 fn noeu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    // NOEUD POINT: the other way, the point's node number.
+    if let Some(p) = a.opt::<PointId>() {
+        return Ok(vec![Value::Int(p.0 as i64 + 1)]);
+    }
     let n = a.req::<i64>()?;
     if n < 1 || n as usize > it.nodes.len() {
         return Err(a.err(format!("there is no node {} (nodes are numbered 1 to {})", n, it.nodes.len())));
