@@ -123,10 +123,8 @@ pub(super) fn connect(it: &mut Interp, a: &mut Args) -> Result<Option<Vec<Value>
             .ok_or_else(|| a.err(format!("point number {} is out of range (the mesh has {} points)", k, pts.len())))?;
         nodes.push(pts[i]);
     }
-    let elems: Vec<Mesh> = nodes
-        .chunks(n)
-        .map(|e| crate::fem::meshing::manu(&it.nodes, ty, e))
-        .collect::<std::result::Result<_, _>>()?;
+    let elems: Vec<Mesh> =
+        nodes.chunks(n).map(|e| crate::fem::meshing::manu(&it.nodes, ty, e)).collect::<std::result::Result<_, _>>()?;
     let mut out = Mesh::default();
     for m in elems {
         out = out.union(&m);

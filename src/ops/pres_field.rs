@@ -49,7 +49,9 @@ fn add_face(
     let t = if fields.is_empty() {
         1.0
     } else {
-        material_for(&model.zones[zone], fields).thickness(mode, ty.name()).map_err(|e| Error::runtime(e.to_string()))?
+        material_for(&model.zones[zone], fields)
+            .thickness(mode, ty.name())
+            .map_err(|e| Error::runtime(e.to_string()))?
     };
     let x: Vec<[f64; 3]> = face.iter().map(|n| it.nodes.get(*n)).collect();
     let pt: Vec<f64> = p.iter().map(|v| v * t).collect();
@@ -120,7 +122,9 @@ pub(super) fn from_mchaml(
             for (e, face) in part.elems().enumerate() {
                 let row = z.values.get(e).ok_or_else(|| a.err("the pressure field has fewer values than elements"))?;
                 if !z.at_nodes || row.len() != face.len() {
-                    return Err(a.err("the pressure field must be given at the nodes of the faces (CHAN 'CHAM' CHPO GEO)"));
+                    return Err(
+                        a.err("the pressure field must be given at the nodes of the faces (CHAN 'CHAM' CHPO GEO)")
+                    );
                 }
                 let p: Vec<f64> = row.iter().map(|r| r[ci]).collect();
                 add_face(it, a, model, fields, &mut out, part.ty, face, &p)?;

@@ -41,7 +41,9 @@ fn redu(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         Value::Mchaml(m) => match other {
             Value::Model(mo) => Value::Mchaml(Rc::new(mchaml_to_model(a, &m, &mo)?)),
             v @ (Value::Mesh(_) | Value::Point(_)) => Value::Mchaml(Rc::new(mchaml_to_mesh(&m, &geo(a, v)?))),
-            v => return Err(a.err(format!("restricts an MCHAML to an MMODEL or a MAILLAGE, not to a {}", v.type_name()))),
+            v => {
+                return Err(a.err(format!("restricts an MCHAML to an MMODEL or a MAILLAGE, not to a {}", v.type_name())))
+            }
         },
         Value::Rigi(r) => {
             let keep: HashSet<usize> = geo(a, other)?.node_list().into_iter().collect();

@@ -51,7 +51,9 @@ impl Mchaml {
                     let &(zi, ze) = at.get(&key(p.ty, el))?;
                     let s = &self.zones[zi];
                     match src {
-                        Some(k) if self.zones[k].comps != s.comps || self.zones[k].at_nodes != s.at_nodes => return None,
+                        Some(k) if self.zones[k].comps != s.comps || self.zones[k].at_nodes != s.at_nodes => {
+                            return None
+                        }
                         _ => src = Some(zi),
                     }
                     values.push(s.values.get(ze)?.clone());
