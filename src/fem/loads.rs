@@ -23,13 +23,25 @@ pub fn pressure_load(
     p: f64,
     inside: [f64; 3],
 ) -> Result<Vec<[f64; 3]>, FemError> {
+    pressure_load_nodal(face, mode, x, &vec![p; x.len()], inside)
+}
+
+/// As [`pressure_load`] for a pressure given at the face nodes and
+/// interpolated with the face's shape functions.
+pub fn pressure_load_nodal(
+    face: ElemType,
+    mode: Mode,
+    x: &[[f64; 3]],
+    p: &[f64],
+    inside: [f64; 3],
+) -> Result<Vec<[f64; 3]>, FemError> {
     let edge = matches!(face, ElemType::Seg2 | ElemType::Seg3);
     let surf = matches!(face, ElemType::Tri3 | ElemType::Tri6 | ElemType::Qua4 | ElemType::Qua8);
     if !((edge && mode != Mode::Trid) || (surf && mode == Mode::Trid)) {
         return Err(FemError::Unsupported { form: "pressure", elem: face.name(), mode: mode.name() });
     }
-    if x.len() != face.nodes() {
-        return Err(FemError::WrongNodeCount { elem: face.name(), expected: face.nodes(), got: x.len() });
+    if x.len() != face.nodes() || p.len() != x.len() {
+        return Err(FemError::WrongNodeCount { elem: face.name(), expected: face.nodes(), got: x.len().min(p.len()) });
     }
     // Exact for the polynomial integrands of straight/flat faces, including
     // the extra factor r in AXIS.
@@ -85,7 +97,8 @@ pub fn pressure_load(
     for (pt, w) in rule {
         let s = eval(face, pt);
         let n = normal(&s);
-        let mut wt = w * p * sign;
+        let pt_p: f64 = s.n.iter().zip(p).map(|(a, b)| a * b).sum();
+        let mut wt = w * pt_p * sign;
         if mode == Mode::Axis {
             let r: f64 = s.n.iter().zip(x).map(|(a, b)| a * b[0]).sum();
             if r < 0.0 {

@@ -11,7 +11,7 @@ use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[OpDef {
     name: "MANU",
-    signature: "MANU TYPE P1 P2 … | MANU 'SUPE' P1 P2 … | MANU 'CHPO' GEO (n) COMP1 V1 … ('NATURE' 'DIFFUS'|'DISCRET') | MANU 'RIGI' ('TYPE' 'RIGIDITE'|'MASSE') GEO LISTMOTS ('DUAL' LISTMOTS) ('ANTI'|'QUEL') LISTREEL | MANU 'RIGI' CHPOINT 'DIAG' | MANU 'CHML' MMODEL|GEO COMP1 V1 … ('TYPE' word) (support word)",
+    signature: "MANU TYPE P1 P2 … | MANU 'SUPE' P1 P2 … | MANU 'CHPO' GEO (n) COMP1 V1 … ('NATURE' 'DIFFUS'|'DISCRET') | MANU 'RIGI' ('TYPE' 'RIGIDITE'|'MASSE') GEO LISTMOTS ('DUAL' LISTMOTS) ('ANTI'|'QUEL') LISTREEL | MANU 'RIGI' CHPOINT 'DIAG' | MANU 'CHML' MMODEL|GEO COMP1 V1 … ('TYPE' word) (support word) | MANU 'CHAM' MMODEL ('TYPE' word) ('POSI' support) COMP ELEM POINT (ZONE) VALUE",
     doc: "Build a mesh from points, a field from values, a constant field by element on every zone of a model \
           (at the points SIGM uses, or the element nodes with 'NOEUD'; subtype from 'TYPE', default SCALAIRE; \
           other support words such as 'STRESSES' change nothing for a constant), or a matrix from a list of values.",
@@ -20,15 +20,24 @@ pub(crate) const OPS: &[OpDef] = &[OpDef {
 }];
 
 fn manu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    // The support may be written before the keyword (`MANU GEO 'CHPO' …`):
+    // it is then pushed back as the first operand of that form.
+    let early_geo = match a.peek_right() {
+        Some(Value::Mesh(_)) => a.opt_right::<Rc<Mesh>>(),
+        _ => None,
+    };
     let what = a.word().ok_or_else(|| a.missing("an element type, 'SUPE', 'CHPO' or 'RIGI'"))?.to_uppercase();
     if super::args::keyword_matches(&what, "CHPO") {
-        return chpo(it, a);
+        return chpo(it, a, early_geo);
     }
     if super::args::keyword_matches(&what, "RIGIDITE") {
         return rigi(it, a);
     }
+    if super::args::keyword_matches(&what, "CHAM") {
+        return cham(a);
+    }
     if super::args::keyword_matches(&what, "CHML") {
-        return chml(a);
+        return chml(a, early_geo);
     }
     let mut pts = Vec::new();
     while let Some(p) = a.opt::<PointId>() {
@@ -50,18 +59,22 @@ fn manu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 /// element. Built with the points SIGM gives (or the element nodes with
 /// 'NOEUD'), so that VMIS, CHAN, INTG and arithmetic treat it like a
 /// computed field; another support word changes nothing for a constant.
-fn chml(a: &mut Args) -> Result<Vec<Value>> {
+fn chml(a: &mut Args, early: Option<Rc<Mesh>>) -> Result<Vec<Value>> {
     use crate::value::model::{Mchaml, MchamlZone};
     // On a mesh (no model) the values sit at the element nodes, as Cast3M
     // gives them (a gap field on contact elements: MANU 'CHML' mc 'JEU' j).
-    let (model, mesh) = match a.opt::<Rc<crate::value::Model>>() {
-        Some(m) => (Some(m), None),
-        None => (None, Some(a.opt::<Rc<Mesh>>().ok_or_else(|| a.missing("MMODEL or MAILLAGE"))?)),
+    let (model, mesh) = match (early, a.opt::<Rc<crate::value::Model>>()) {
+        (Some(g), _) => (None, Some(g)),
+        (None, Some(m)) => (Some(m), None),
+        (None, None) => (None, Some(a.opt::<Rc<Mesh>>().ok_or_else(|| a.missing("MMODEL or MAILLAGE"))?)),
     };
     let mut comps: Vec<String> = Vec::new();
-    let mut vals: Vec<f64> = Vec::new();
+    // A value is a constant, or with 'REPA' a list spread one value per
+    // element over every zone in turn (restarting when it runs out).
+    let mut vals: Vec<Result<f64, Rc<Vec<f64>>>> = Vec::new();
     let mut subtype = "SCALAIRE".to_string();
     let mut at_nodes = false;
+    let mut spread = false;
     const SUPPORTS: &[&str] = &["STRESSES", "GRAVITE", "RIGIDITE", "MASSE", "DEFORMATIONS"];
     loop {
         // TYPE unquoted is also an operator name: read as the keyword here.
@@ -73,12 +86,25 @@ fn chml(a: &mut Args) -> Result<Vec<Value>> {
         let w = w.trim().to_uppercase();
         if super::args::keyword_matches(&w, "TYPE") {
             subtype = a.req::<String>()?.trim().to_uppercase();
+        } else if super::args::keyword_matches(&w, "CONSTITUANT") {
+            // gibi matches element fields to model zones by mesh, so the
+            // constituent name is read and not kept.
+            a.req::<String>()?;
+        } else if super::args::keyword_matches(&w, "REPA") {
+            spread = true;
         } else if super::args::keyword_matches(&w, "NOEUD") {
             at_nodes = true;
         } else if SUPPORTS.iter().any(|k| super::args::keyword_matches(&w, k)) {
             continue;
         } else {
-            let v = a.opt_num().ok_or_else(|| a.err(format!("component {} needs a value", w)))?;
+            let v = match a.opt_num_right() {
+                Some(v) => Ok(v),
+                None => match a.opt_right::<Rc<Vec<f64>>>() {
+                    Some(l) if spread && !l.is_empty() => Err(l),
+                    Some(_) => return Err(a.err(format!("component {}: a LISTREEL value needs 'REPA' before it", w))),
+                    None => return Err(a.err(format!("component {} needs a value", w))),
+                },
+            };
             match comps.iter().position(|c| *c == w) {
                 Some(i) => vals[i] = v,
                 None => {
@@ -91,13 +117,29 @@ fn chml(a: &mut Args) -> Result<Vec<Value>> {
     if comps.is_empty() {
         return Err(a.missing("a component name and its value"));
     }
+    let mut counter = 0usize;
+    let mut values_for = |n_elems: usize, npts: usize| -> Vec<Vec<Vec<f64>>> {
+        (0..n_elems)
+            .map(|_| {
+                let row: Vec<f64> = vals
+                    .iter()
+                    .map(|v| match v {
+                        Ok(x) => *x,
+                        Err(l) => l[counter % l.len()],
+                    })
+                    .collect();
+                counter += 1;
+                vec![row; npts]
+            })
+            .collect()
+    };
     let mut zones = Vec::new();
     for part in mesh.iter().flat_map(|m| m.parts.iter()) {
         zones.push(MchamlZone {
             mesh: Mesh::single(part.clone()),
             element: part.ty.name().to_string(),
             comps: comps.clone(),
-            values: vec![vec![vals.clone(); part.ty.nodes()]; part.elems().count()],
+            values: values_for(part.elems().count(), part.ty.nodes()),
             at_nodes: true,
             ..Default::default()
         });
@@ -110,7 +152,7 @@ fn chml(a: &mut Args) -> Result<Vec<Value>> {
                 mesh: Mesh::single(part.clone()),
                 element: z.element.clone(),
                 comps: comps.clone(),
-                values: vec![vec![vals.clone(); npts]; part.elems().count()],
+                values: values_for(part.elems().count(), npts),
                 at_nodes,
                 ..Default::default()
             });
@@ -119,36 +161,144 @@ fn chml(a: &mut Args) -> Result<Vec<Value>> {
     Ok(vec![Value::Mchaml(Rc::new(Mchaml { subtype, zones }))])
 }
 
-fn chpo(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let geo = super::mesh::req_geo(a)?;
-    let _count = a.opt::<i64>();
-    let nodes = geo.node_list();
-    let mut nature = Nature::Diffus;
-    let mut c = Chpoint::new(nature);
+/// MANU 'CHPO' GEO ((n) C1 V1 … | LISTMOTS LISTREEL) ('NATURE' w) ('TITRE' t):
+/// the count and the values are read right after what they follow, so that
+/// an ENTIER value is not taken for the count (`'SCAL' 1`).
+/// MANU 'CHAM' MODL ('TYPE' w) ('POSI' support) COMP ELEM POINT (ZONE) VAL:
+/// a field on one zone of the model (the first by default), zero but at
+/// one point of one element.
+fn cham(a: &mut Args) -> Result<Vec<Value>> {
+    use crate::value::model::{Mchaml, MchamlZone};
+    let model = a.req::<Rc<crate::value::Model>>()?;
+    let mut subtype = "SCALAIRE".to_string();
+    let mut at_nodes = true;
     loop {
+        if a.keyword(&["TYPE"]).is_some() {
+            subtype = a.req::<String>()?.trim().to_uppercase();
+        } else if a.keyword(&["POSI"]).is_some() {
+            let w = a.req_keyword(&["NOEUD", "GRAVITE", "RIGIDITE", "MASSE", "STRESSES"])?;
+            at_nodes = w == "NOEUD";
+        } else {
+            break;
+        }
+    }
+    let comp = a.word_not_operator().ok_or_else(|| a.missing("a component name"))?.trim().to_uppercase();
+    let elem = a.opt_right::<i64>().ok_or_else(|| a.missing("ENTIER (element number)"))?;
+    let point = a.opt_right::<i64>().ok_or_else(|| a.missing("ENTIER (point number)"))?;
+    let third = a.opt_right::<i64>();
+    let (zone, val) = match (third, a.opt_num_right()) {
+        (Some(z), Some(v)) => (z, v),
+        (Some(v), None) => (1, v as f64),
+        (None, Some(v)) => (1, v),
+        (None, None) => return Err(a.missing("FLOTTANT")),
+    };
+    let z = usize::try_from(zone - 1)
+        .ok()
+        .and_then(|i| model.zones.get(i))
+        .ok_or_else(|| a.err(format!("zone {} is out of range (the model has {} zones)", zone, model.zones.len())))?;
+    let form = super::model::formulation(z);
+    let mut zones = Vec::new();
+    let mut first = 0usize;
+    for part in &z.mesh.parts {
+        let npts = if at_nodes { part.ty.nodes() } else { crate::fem::element::gauss_points(form, part.ty).len() };
+        let n = part.elems().count();
+        let mut values = vec![vec![vec![0.0]; npts]; n];
+        if elem >= 1 && (elem as usize) > first && (elem as usize) <= first + n {
+            let row = &mut values[elem as usize - 1 - first];
+            let p = usize::try_from(point - 1)
+                .ok()
+                .filter(|&p| p < npts)
+                .ok_or_else(|| a.err(format!("point {} is out of range (the element has {} points)", point, npts)))?;
+            row[p][0] = val;
+        }
+        first += n;
+        zones.push(MchamlZone {
+            mesh: Mesh::single(part.clone()),
+            element: z.element.clone(),
+            comps: vec![comp.clone()],
+            values,
+            at_nodes,
+            ..Default::default()
+        });
+    }
+    if elem < 1 || elem as usize > first {
+        return Err(a.err(format!("element number {} is out of range (the zone has {} elements)", elem, first)));
+    }
+    Ok(vec![Value::Mchaml(Rc::new(Mchaml { subtype, zones }))])
+}
+
+fn chpo(it: &mut Interp, a: &mut Args, early: Option<Rc<Mesh>>) -> Result<Vec<Value>> {
+    let mut nature = Nature::Diffus;
+    let read_attr = |a: &mut Args, nature: &mut Nature| -> Result<bool> {
         if a.keyword(&["NATURE"]).is_some() {
-            nature = match a.req_keyword(&["DIFFUS", "DISCRET", "INDETER"])? {
+            *nature = match a.req_keyword(&["DIFFUS", "DISCRET", "INDETERMINE"])? {
                 "DIFFUS" => Nature::Diffus,
                 "DISCRET" => Nature::Discret,
                 _ => Nature::Indeter,
             };
-            continue;
+            return Ok(true);
         }
-        let Some(comp) = a.word_not_operator() else { break };
-        if let Some(l) = a.opt_right::<Rc<Vec<f64>>>() {
-            if l.len() != nodes.len() {
-                return Err(a.err(format!("{} values for {} nodes", l.len(), nodes.len())));
-            }
-            for (n, v) in nodes.iter().zip(l.iter()) {
-                c.add(*n, &comp, *v, false);
-            }
-        } else {
-            let v = a.req_num()?;
+        if a.keyword(&["TITRE"]).is_some() {
+            a.req::<String>()?;
+            return Ok(true);
+        }
+        Ok(false)
+    };
+    while read_attr(a, &mut nature)? {}
+    let geo = match early {
+        Some(m) => (*m).clone(),
+        None => super::mesh::req_geo(a)?,
+    };
+    let nodes = geo.node_list();
+    let mut c = Chpoint::new(nature);
+    // Syntax 1: component names and one value each (missing ones are 0).
+    if let Some(names) = a.opt_right::<Rc<Vec<String>>>() {
+        let vals = a.opt_right::<Rc<Vec<f64>>>().ok_or_else(|| a.missing("LISTREEL"))?;
+        if vals.len() > names.len() {
+            return Err(a.err(format!("{} values for {} components", vals.len(), names.len())));
+        }
+        for (i, comp) in names.iter().enumerate() {
+            let v = vals.get(i).copied().unwrap_or(0.0);
             for n in &nodes {
-                c.add(*n, &comp, v, false);
+                c.add(*n, comp, v, false);
+            }
+        }
+    } else {
+        let count = a.opt_right::<i64>();
+        let mut read = 0i64;
+        loop {
+            if count.is_none_or(|n| read < n) {
+                if read_attr(a, &mut nature)? {
+                    continue;
+                }
+            } else {
+                break;
+            }
+            let Some(comp) = a.word_not_operator() else { break };
+            read += 1;
+            if let Some(l) = a.opt_right::<Rc<Vec<f64>>>() {
+                // One value per element of a POI1 mesh (duplicates summed
+                // for a DISCRET field), else one per distinct node.
+                let per_elem: Vec<usize> = geo.parts.iter().flat_map(|p| p.elems().flat_map(|e| e.to_vec())).collect();
+                let (targets, sum) = if l.len() == nodes.len() {
+                    (nodes.clone(), false)
+                } else if geo.parts.iter().all(|p| p.ty.nodes() == 1) && l.len() == per_elem.len() {
+                    (per_elem, nature == Nature::Discret)
+                } else {
+                    return Err(a.err(format!("{} values for {} nodes", l.len(), nodes.len())));
+                };
+                for (n, v) in targets.iter().zip(l.iter()) {
+                    c.add(*n, &comp, *v, sum);
+                }
+            } else {
+                let v = a.opt_num_right().ok_or_else(|| a.missing("FLOTTANT"))?;
+                for n in &nodes {
+                    c.add(*n, &comp, v, false);
+                }
             }
         }
     }
+    while read_attr(a, &mut nature)? {}
     c.nature = nature;
     let _ = it;
     Ok(vec![Value::Chpo(Rc::new(c))])

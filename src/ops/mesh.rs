@@ -16,7 +16,7 @@ use crate::value::{Chpoint, Value};
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
-    OpDef { name: "DROI", signature: "DROI (n) P1|LINE P2 ('DINI' d1) ('DFIN' d2)", doc: "A straight line of n elements (SEG2 or SEG3 per OPTI ELEM).", example: "l = droi 10 p1 p2 ;", f: droi },
+    OpDef { name: "DROI", signature: "DROI (n) P1|LINE P2 ('DINI' d1) ('DFIN' d2) ('COULEUR' colour)", doc: "A straight line of n elements (SEG2 or SEG3 per OPTI ELEM).", example: "l = droi 10 p1 p2 ;", f: droi },
     // D and C are Cast3M's own abbreviations of DROI and CERC (`p1 d 10 p2`).
     OpDef { name: "D", signature: "D (n) P1|LINE P2 ('DINI' d1) ('DFIN' d2)", doc: "Abbreviation of DROI.", example: "l = p1 d 10 p2 ;", f: droi },
     OpDef { name: "DALL", signature: "DALL LINE1 LINE2 LINE3 LINE4 ('PLAN')", doc: "A structured surface (OPTI ELEM QUA4, TRI3, QUA8, TRI6) from four sides forming a closed contour.", example: "s = dall bas dro hau gau ;", f: dall },
@@ -106,6 +106,12 @@ pub(crate) fn elem_type_opt(it: &Interp) -> ElemType {
 
 fn droi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let mut sp = spacing(a)?;
+    // ('COULEUR' colour), read where it stands: once DINI and DFIN have
+    // brought it to the front, the points come after it.
+    let mut colour = match a.keyword(&["COULEUR"]) {
+        Some(_) => Some(super::colour::colour_word(a)?),
+        None => None,
+    };
     let ty = elem_type_opt(it);
     if let Some(line) = a.opt::<Rc<Mesh>>() {
         let p2 = a.req::<PointId>()?;
@@ -115,7 +121,14 @@ fn droi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let p1 = a.req::<PointId>()?;
     let p2 = a.req::<PointId>()?;
     more_spacing(a, &mut sp)?;
-    Ok(mesh_val(mg::droi(&mut it.nodes, p1.0, p2.0, &sp, ty)?))
+    let m = mg::droi(&mut it.nodes, p1.0, p2.0, &sp, ty)?;
+    if colour.is_none() && a.keyword(&["COULEUR"]).is_some() {
+        colour = Some(super::colour::colour_word(a)?);
+    }
+    Ok(mesh_val(match colour {
+        Some(c) => m.coloured(c),
+        None => m,
+    }))
 }
 
 fn merge(s: &mut mg::Spacing, more: mg::Spacing) {

@@ -14,7 +14,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "COOR", signature: "COOR POINT | COOR n POINT | COOR (n) MAILLAGE", doc: "Coordinates of a point (one result per dimension), one of them, or coordinate fields (SCAL) on a mesh: one per dimension, or the n-th.", example: "x y = coor p ;", f: coor },
     OpDef { name: "NBNO", signature: "NBNO MAILLAGE", doc: "Number of nodes of a mesh.", example: "n = nbno l ;", f: nbno },
     OpDef { name: "NBEL", signature: "NBEL MAILLAGE", doc: "Number of elements of a mesh.", example: "n = nbel s ;", f: nbel },
-    OpDef { name: "POIN", signature: "POIN x (y) (z) | MAILLAGE POIN n | MAILLAGE POIN ('INIT'|'FINAL') | MAILLAGE POIN 'PROC' POINT | MAILLAGE POIN ('DROIT' P1 P2 | 'PLAN' P1 P2 P3) (crit) | CHPOINT POIN 'MAXI'|'MINI' ('ABS') | CHPOINT POIN 'SUPE'|'INFE'|'EGSU'|'EGIN'|'EGAL' v", doc: "A point, or nodes of a mesh, or the nodes where a field meets a test (a POI1 mesh).", example: "p = l poin 'FINAL' ;", f: poin },
+    OpDef { name: "POIN", signature: "POIN x (y) (z) | POIN LISTREEL (LISTREEL) (LISTREEL) | MAILLAGE POIN n | MAILLAGE POIN ('INIT'|'FINAL') | MAILLAGE POIN 'PROC' POINT | MAILLAGE POIN ('DROIT' P1 P2 | 'PLAN' P1 P2 P3) (crit) | CHPOINT POIN 'MAXI'|'MINI' ('ABS') | CHPOINT POIN 'SUPE'|'INFE'|'EGSU'|'EGIN'|'EGAL' v", doc: "A point, or nodes of a mesh, or the nodes where a field meets a test (a POI1 mesh).", example: "p = l poin 'FINAL' ;", f: poin },
 ];
 
 fn noeu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
@@ -104,6 +104,31 @@ fn poin(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         }
         let n = a.req::<i64>()?;
         return Ok(vec![Value::Point(mg::poin_nth(&m, n)?)]);
+    }
+    // POIN LX (LY) (LZ): a POI1 mesh of new points, one per abscissa.
+    if let Some(lx) = a.opt::<Rc<Vec<f64>>>() {
+        let mut lists = vec![lx];
+        while lists.len() < it.opts.dime.max(1) {
+            match a.opt::<Rc<Vec<f64>>>() {
+                Some(l) => lists.push(l),
+                None => break,
+            }
+        }
+        let n = lists[0].len();
+        if lists.iter().any(|l| l.len() != n) {
+            return Err(a.err("the coordinate lists do not have the same length"));
+        }
+        let d = it.opts.dens;
+        let pts: Vec<usize> = (0..n)
+            .map(|i| {
+                let mut x = [0.0; 3];
+                for (k, l) in lists.iter().enumerate() {
+                    x[k] = l[i];
+                }
+                it.nodes.push(x, d)
+            })
+            .collect();
+        return Ok(mesh_val(Mesh::points(&pts)));
     }
     // POIN x (y) (z): a point from numbers (the only way in DIME 1).
     let mut x = [0.0; 3];

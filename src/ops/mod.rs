@@ -7,6 +7,7 @@ mod assemble;
 mod bc;
 #[cfg(test)]
 mod catalogue_tests;
+mod chan_cham;
 mod chargement;
 mod colour;
 mod config;
@@ -46,6 +47,7 @@ mod pasapas_fields;
 mod pasapas_model;
 mod pointwise;
 mod post;
+mod pres_field;
 mod principal;
 mod products;
 mod reso;

@@ -17,7 +17,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "EPSI", signature: "EPSI ('LINE') MMODEL (MCHAML) CHPOINT", doc: "Strains (EPXX … GAXY; generalised strains for bars and beams; EPSS EPTT GAST RTSS RTTT RTST for shells).", example: "eps = epsi mo ma u ;", f: epsi },
     OpDef { name: "GRAD", signature: "GRAD MMODEL CHPOINT (MCHAML)", doc: "Gradient of the displacements of a massive model at its stress points (UX,X UX,Y UY,X UY,Y …; UR,R UR,Z UZ,R UZ,Z UT,T in AXIS).", example: "g = grad mo u ;", f: grad },
     OpDef { name: "VMIS", signature: "VMIS MMODEL MCHAML_STRESS (MCHAML)", doc: "Von Mises equivalent stress (the beam formula for bars and beams).", example: "vm = vmis mo sig ma ;", f: vmis },
-    OpDef { name: "CHAN", signature: "CHAN 'POI1'|QUA8|TRI6|SEG3|QUA4|TRI3|SEG2 GEO | CHAN 'CHPO'|'NOEUD'|'GRAVITE' MMODEL MCHAML | CHAN 'INCO' RIGIDITE LISTMOTS LISTMOTS | CHAN 'ATTRIBUT' CHPOINT 'NATURE' word | CHAN 'TYPE' MCHAML word | CHAN 'MAJU'|'MINU' MOT", doc: "Change the type or attributes of an object.", example: "pts = chan 'POI1' l ;", f: chan },
+    OpDef { name: "CHAN", signature: "CHAN 'POI1'|QUA8|TRI6|SEG3|QUA4|TRI3|SEG2 GEO | CHAN 'CHPO'|'NOEUD'|'GRAVITE' MMODEL MCHAML | CHAN 'INCO' RIGIDITE LISTMOTS LISTMOTS | CHAN 'ATTRIBUT' CHPOINT 'NATURE' word | CHAN 'CHAM' CHPOINT GEO|MMODEL ('NOEUD'|'GRAVITE'|'RIGIDITE'|'MASSE'|'STRESSES') (subtype) | CHAN 'TYPE' MCHAML word | CHAN 'MAJU'|'MINU' MOT", doc: "Change the type or attributes of an object.", example: "pts = chan 'POI1' l ;", f: chan },
     OpDef { name: "PRES", signature: "PRES 'MASS' MMODEL (MCHAML) VALUE GEO | PRES 'COQU' MMODEL VALUE ('NORM')", doc: "Nodal forces equivalent to a pressure on edges/faces of a massive model (positive towards the solid; in plane stress for the DIM3 thickness of the characteristics MCHAML when given, else per unit thickness), or on every element of a shell model (positive along the element normal).", example: "f = pres 'MASS' mo 10. haut ;", f: pres },
     OpDef { name: "MASS", signature: "MASS MMODEL MCHAML (MCHAML) ('LUMP')", doc: "Mass matrix (consistent, or lumped with 'LUMP').", example: "m = mass mo ma ;", f: mass },
 ];
@@ -141,7 +141,20 @@ pub(crate) fn to_gauss(z: &MchamlZone, e: usize) -> GaussField {
 }
 
 pub(crate) fn zone_of<'a>(model: &'a Model, z: &MchamlZone) -> Option<&'a ModelZone> {
-    model.zones.iter().find(|m| m.mesh.parts.iter().any(|p| z.mesh.parts.first() == Some(p)) || m.mesh == z.mesh)
+    model
+        .zones
+        .iter()
+        .find(|m| m.mesh.parts.iter().any(|p| z.mesh.parts.first() == Some(p)) || m.mesh == z.mesh)
+        .or_else(|| {
+            // A field restricted to part of a zone (REDU MCHAML GEO, then
+            // `+`): the zone holding all its elements.
+            let first = z.mesh.parts.first()?;
+            model.zones.iter().find(|m| {
+                let own: std::collections::HashSet<&[usize]> =
+                    m.mesh.parts.iter().filter(|p| p.ty == first.ty).flat_map(|p| p.elems()).collect();
+                !own.is_empty() && first.elems().all(|e| own.contains(e))
+            })
+        })
 }
 
 fn vmis(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
@@ -170,8 +183,17 @@ fn vmis(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     const KW: &[&str] = &[
         "POI1", "QUA8", "TRI6", "SEG3", "QUA4", "TRI3", "SEG2", "CHPO", "NOEUD", "INCO", "ATTRIBUT", "COMP", "TYPE",
-        "GRAVITE", "MAJU", "MINU", "QUAD", "LIGN",
+        "GRAVITE", "MAJU", "MINU", "QUAD", "LIGN", "CHAM",
     ];
+    // CHAN (TYPE) POI1_MESH LISTENTI: elements joining the mesh's points.
+    if let Some(r) = super::chan_cham::connect(it, a)? {
+        return Ok(r);
+    }
+    // The field may come before the keyword (`CHAN CHPO1 'ATTRIBUT' …`).
+    let early = match a.peek_right() {
+        Some(Value::Chpo(_)) => a.opt_right::<Rc<Chpoint>>(),
+        _ => None,
+    };
     let k = a.req_keyword(KW)?;
     match k {
         "MAJU" => Ok(vec![Value::mot(a.req::<String>()?.to_uppercase())]),
@@ -219,7 +241,10 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             Ok(vec![Value::Rigi(Rc::new(out))])
         }
         "ATTRIBUT" => {
-            let ch = a.req::<Rc<Chpoint>>()?;
+            let ch = match early {
+                Some(c) => c,
+                None => a.req::<Rc<Chpoint>>()?,
+            };
             a.keyword(&["NATURE"]);
             let mut c = (*ch).clone();
             c.nature = match a.req_keyword(&["DIFFUS", "DISCRET", "INDETER"])? {
@@ -228,6 +253,13 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 _ => Nature::Indeter,
             };
             Ok(vec![Value::Chpo(Rc::new(c))])
+        }
+        "CHAM" if early.is_some() || matches!(a.peek_right(), Some(Value::Chpo(_))) => {
+            let ch = match early {
+                Some(c) => c,
+                None => a.req::<Rc<Chpoint>>()?,
+            };
+            super::chan_cham::from_chpoint(it, a, &ch)
         }
         "COMP" => Err(a.err("CHAN 'COMP' is not supported; use NOMC to rename components")),
         "TYPE" => {
@@ -245,6 +277,12 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             // the elements for CHPO), or to each element's centre.
             let model = a.req::<Rc<Model>>()?;
             let m = a.req::<Rc<Mchaml>>()?;
+            // CHAN 'CHAM' of an element field: to the support named after
+            // it, the nodes by default.
+            let k = match k {
+                "CHAM" => a.keyword(&["NOEUD", "GRAVITE"]).unwrap_or("NOEUD"),
+                _ => k,
+            };
             let mut sum = Chpoint::new(Nature::Diffus);
             let mut count = std::collections::HashMap::<(usize, String), f64>::new();
             let mut out_m = Mchaml { subtype: m.subtype.clone(), zones: vec![] };
@@ -324,6 +362,15 @@ fn pres(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     while let Some(f) = a.opt::<Rc<Mchaml>>() {
         fields.push(f);
     }
+    // A pressure given as a field: at the nodes of the model's faces, or
+    // at the nodes of the face elements of an element field.
+    if let Some(ch) = a.opt::<Rc<Chpoint>>() {
+        return super::pres_field::from_chpoint(it, a, &model, &ch, &fields);
+    }
+    if let Some(i) = fields.iter().position(|f| super::pres_field::on_faces(&model, f)) {
+        let f = fields.remove(i);
+        return super::pres_field::from_mchaml(it, a, &model, &f, &fields);
+    }
     let p = a.req_num()?;
     let geo = super::mesh::req_geo(a)?;
     while let Some(f) = a.opt::<Rc<Mchaml>>() {
@@ -392,7 +439,7 @@ fn pres_shell(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 
 /// The zone and the centroid of a model element holding every node of
 /// `face`.
-fn inside_point(it: &Interp, model: &Model, face: &[usize]) -> Option<(usize, [f64; 3])> {
+pub(super) fn inside_point(it: &Interp, model: &Model, face: &[usize]) -> Option<(usize, [f64; 3])> {
     for (zi, z) in model.zones.iter().enumerate() {
         for p in &z.mesh.parts {
             for e in p.elems() {

@@ -13,7 +13,7 @@ use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[OpDef {
     name: "REDU",
-    signature: "REDU CHPOINT GEO | REDU MCHAML MMODEL | REDU RIGIDITE GEO | REDU MMODEL GEO",
+    signature: "REDU CHPOINT GEO | REDU MCHAML MMODEL|GEO | REDU RIGIDITE GEO | REDU MMODEL GEO",
     doc: "Restrict a node field to the nodes of a mesh or point, an element field (material, stresses) to the elements of a model, a rigidity or a model to the elements lying on a mesh.",
     example: "u2 = redu u l ;",
     f: redu,
@@ -40,7 +40,10 @@ fn redu(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         }
         Value::Mchaml(m) => match other {
             Value::Model(mo) => Value::Mchaml(Rc::new(mchaml_to_model(a, &m, &mo)?)),
-            v => return Err(a.err(format!("restricts an MCHAML to an MMODEL, not to a {}", v.type_name()))),
+            v @ (Value::Mesh(_) | Value::Point(_)) => Value::Mchaml(Rc::new(mchaml_to_mesh(&m, &geo(a, v)?))),
+            v => {
+                return Err(a.err(format!("restricts an MCHAML to an MMODEL or a MAILLAGE, not to a {}", v.type_name())))
+            }
         },
         Value::Rigi(r) => {
             let keep: HashSet<usize> = geo(a, other)?.node_list().into_iter().collect();
@@ -95,6 +98,47 @@ fn rigidity_on(r: &Rigidite, keep: &HashSet<usize>) -> Rigidite {
         }
     }
     out.conds = r.conds.iter().filter(|c| c.terms.iter().all(|(n, _, _)| keep.contains(n))).cloned().collect();
+    out
+}
+
+/// `REDU MCHAML GEO`: the field on those of its elements that are elements
+/// of the mesh (or, for a mesh of points, whose nodes all lie in it).
+fn mchaml_to_mesh(m: &Mchaml, geo: &Mesh) -> Mchaml {
+    let own: HashSet<(ElemType, Vec<usize>)> =
+        geo.parts.iter().flat_map(|p| p.elems().map(move |e| key(p.ty, e))).collect();
+    let points = geo.parts.iter().all(|p| p.ty == ElemType::Poi1);
+    let nodes: HashSet<usize> = geo.node_list().into_iter().collect();
+    let keep = |ty: ElemType, e: &[usize]| {
+        if points {
+            e.iter().all(|n| nodes.contains(n))
+        } else {
+            own.contains(&key(ty, e))
+        }
+    };
+    let mut out = Mchaml { subtype: m.subtype.clone(), zones: Vec::new() };
+    for z in &m.zones {
+        let mut parts = Vec::new();
+        let mut values = Vec::new();
+        let mut e = 0;
+        for p in &z.mesh.parts {
+            let mut conn = Vec::new();
+            for el in p.elems() {
+                if keep(p.ty, el) {
+                    conn.extend_from_slice(el);
+                    if let Some(v) = z.values.get(e) {
+                        values.push(v.clone());
+                    }
+                }
+                e += 1;
+            }
+            if !conn.is_empty() {
+                parts.push(crate::fem::mesh::Part { conn, ..p.clone() });
+            }
+        }
+        if !parts.is_empty() {
+            out.zones.push(MchamlZone { mesh: Mesh { parts }, values, ..z.clone() });
+        }
+    }
     out
 }
 

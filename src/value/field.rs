@@ -20,7 +20,7 @@ impl Nature {
         match self {
             Nature::Diffus => "DIFFUS",
             Nature::Discret => "DISCRET",
-            Nature::Indeter => "INDETER",
+            Nature::Indeter => "INDETERMINE",
         }
     }
 }
@@ -167,7 +167,14 @@ impl Chpoint {
     pub fn product(&self, y: &Chpoint, div: bool) -> Chpoint {
         let op = |p: f64, q: f64| if div { p / q } else { p * q };
         let scal = |c: &Chpoint| c.components() == ["SCAL"];
-        let mut out = Chpoint::new(self.nature);
+        // An undetermined side makes the product undetermined, else a
+        // DISCRET side makes it DISCRET (a force times a diffuse factor).
+        let nature = match (self.nature, y.nature) {
+            (Nature::Indeter, _) | (_, Nature::Indeter) => Nature::Indeter,
+            (Nature::Discret, _) | (_, Nature::Discret) => Nature::Discret,
+            _ => Nature::Diffus,
+        };
+        let mut out = Chpoint::new(nature);
         if scal(y) && !scal(self) {
             for (n, c, v) in self.entries() {
                 if let Some(s) = y.get(n, "SCAL") {

@@ -10,6 +10,7 @@ mod display;
 pub mod field;
 pub mod finite;
 pub mod model;
+mod model_union;
 pub mod rigidity;
 pub mod table;
 

@@ -176,7 +176,22 @@ fn sampled(_: &mut Interp, a: &Args, op: Bin, x: &Value, y: &Value) -> Result<Op
     let f = |p: f64, q: f64| float_op(op, p, q);
     Ok(Some(match (x, y) {
         (Value::Evol(e), Value::Evol(g)) => Value::Evol(Rc::new(e.combine(g, f).map_err(|m| a.err(m))?)),
-        (Value::Mchaml(m), Value::Mchaml(n)) => Value::Mchaml(Rc::new(m.combine(n, f).map_err(|e| a.err(e))?)),
+        (Value::Mchaml(m), Value::Mchaml(n)) => {
+            let fill = matches!(op, Bin::Add | Bin::Sub);
+            // Realigned only onto a layout of as many elements: a sum must
+            // not drop the elements one side has alone.
+            let count = |x: &crate::value::Mchaml| x.zones.iter().map(|z| z.values.len()).sum::<usize>();
+            let same = count(m) == count(n);
+            let r = m.combine(n, f).or_else(|e| match n.realign(m).filter(|_| same || !fill) {
+                Some(n2) => m.combine_union(&n2, f, fill),
+                None => match m.realign(n) {
+                    Some(m2) if !fill => m2.combine_union(n, f, fill),
+                    _ if fill => m.combine_union(n, f, fill),
+                    _ => Err(e),
+                },
+            });
+            Value::Mchaml(Rc::new(r.map_err(|e| a.err(e))?))
+        }
         (v, s) if s.is_number() => return Ok(map(v, &|p| f(p, scalar(s)))),
         (s, v) => return Ok(map(v, &|q| f(scalar(s), q))),
     }))
