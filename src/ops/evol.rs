@@ -22,7 +22,7 @@ pub(crate) const OPS: &[OpDef] = &[OpDef {
 }];
 
 /// Cast3M's colour words (only meaningful for drawing).
-const COLOURS: &[&str] = &[
+pub(crate) const COLOURS: &[&str] = &[
     "DEFA", "NOIR", "BLEU", "ROUG", "ROSE", "VERT", "TURQ", "JAUN", "BLAN", "AZUR", "ORAN", "VIOL", "OCEA", "CYAN",
     "OLIV", "GRIS",
 ];

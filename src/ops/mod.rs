@@ -35,6 +35,7 @@ mod mesh_repair;
 mod mesh_ruled;
 mod mesh_select;
 mod model;
+mod noise;
 mod objects;
 mod opti;
 mod opti_own;
@@ -72,6 +73,7 @@ impl Registry {
             arith::OPS,
             math::OPS,
             lists::OPS,
+            noise::OPS,
             extract::OPS,
             objects::OPS,
             io::OPS,

@@ -11,6 +11,7 @@ pub mod field;
 pub mod finite;
 pub mod model;
 pub mod rigidity;
+pub mod signal;
 pub mod table;
 
 pub use chargement::Chargement;
