@@ -17,7 +17,9 @@ mod evol_temps;
 mod export;
 mod extract;
 mod fields;
+mod fit;
 mod format;
+mod fourier;
 mod integrate;
 mod io;
 mod limits;
@@ -74,6 +76,8 @@ impl Registry {
             math::OPS,
             lists::OPS,
             noise::OPS,
+            fourier::OPS,
+            fit::OPS,
             extract::OPS,
             objects::OPS,
             io::OPS,
