@@ -33,7 +33,8 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "NOMC",
-        signature: "NOMC NEWNAME CHPOINT | NOMC LISTMOTS_OLD LISTMOTS_NEW CHPOINT ('NATU' 'INDETER'|'DIFFUS'|'DISCRET')",
+        signature:
+            "NOMC NEWNAME CHPOINT | NOMC LISTMOTS_OLD LISTMOTS_NEW CHPOINT ('NATU' 'INDETER'|'DIFFUS'|'DISCRET')",
         doc: "Rename components (and set the field's nature after 'NATU').",
         example: "c = nomc 'UX' (coor 1 l) ;",
         f: nomc,

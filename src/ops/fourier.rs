@@ -48,7 +48,7 @@ fn tfr(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         return Err(a.err("the signal needs at least two samples (the time step is their distance)"));
     }
     let dt = c.x[1] - c.x[0];
-    if !(dt > 0.0) {
+    if dt.is_nan() || dt <= 0.0 {
         return Err(a.err(format!("the times must increase (first step {})", dt)));
     }
     let df = 1.0 / (dt * n as f64);
@@ -61,13 +61,12 @@ fn tfr(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let s = fourier::forward(&c.y, dt, n, first, last);
     let (y1, y2, names) = if moph {
         let modu: Vec<f64> = s.re.iter().zip(&s.im).map(|(r, i)| r.hypot(*i)).collect();
-        let phase = s
-            .re
-            .iter()
-            .zip(&s.im)
-            .zip(&modu)
-            .map(|((r, i), m)| if *m > 1e-20 { i.atan2(*r).to_degrees() } else { 0.0 })
-            .collect();
+        let phase =
+            s.re.iter()
+                .zip(&s.im)
+                .zip(&modu)
+                .map(|((r, i), m)| if *m > 1e-20 { i.atan2(*r).to_degrees() } else { 0.0 })
+                .collect();
         (modu, phase, ["MODU", "PHAS", "Amp", "Phase"])
     } else {
         (s.re, s.im, ["PREE", "PIMA", "Re", "Im"])
@@ -98,9 +97,9 @@ fn tfri(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         [c1, c2] if c1.y_name == "PREE" && c2.y_name == "PIMA" => false,
         [c1, c2] if c1.y_name == "MODU" && c2.y_name == "PHAS" => true,
         _ => {
-            return Err(a.err(
-                "the EVOLUTIO must be a transform as TFR gives it: two curves PREE and PIMA, or MODU and PHAS",
-            ))
+            return Err(
+                a.err("the EVOLUTIO must be a transform as TFR gives it: two curves PREE and PIMA, or MODU and PHAS")
+            )
         }
     };
     let (c1, c2) = (&ev.curves[0], &ev.curves[1]);
@@ -112,7 +111,7 @@ fn tfri(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         return Err(a.err(format!("the first frequency must be 0, found {}", f[0])));
     }
     let df = f[1] - f[0];
-    if !(df > 0.0) {
+    if df.is_nan() || df <= 0.0 {
         return Err(a.err(format!("the frequencies must increase (first step {})", df)));
     }
     let (re, im): (Vec<f64>, Vec<f64>) = if moph {

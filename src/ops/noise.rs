@@ -43,7 +43,7 @@ fn brui(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     }
     let mean = a.req_num()?;
     let spread = a.req_num()?;
-    if !(spread > 0.0) || !spread.is_finite() || !mean.is_finite() {
+    if !spread.is_finite() || !mean.is_finite() || spread <= 0.0 {
         return Err(a.err(format!(
             "the {} must be a positive number, found {}",
             if kind == "UNIF" { "amplitude" } else { "standard deviation" },
