@@ -79,6 +79,8 @@ pub struct Interp {
     /// planned), so a host can show a progress bar; the library itself
     /// prints nothing for it.
     pub progress: Option<Box<dyn FnMut(usize, usize)>>,
+    /// BRUI's random generator: seeded the same at every start.
+    pub noise: crate::value::signal::noise::Noise,
 }
 
 /// How deep blocks, parenthesised groups and procedure calls may run
@@ -147,6 +149,7 @@ impl Interp {
             library: Default::default(),
             in_library: 0,
             progress: None,
+            noise: Default::default(),
         }
     }
 

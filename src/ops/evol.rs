@@ -21,10 +21,13 @@ pub(crate) const OPS: &[OpDef] = &[OpDef {
     f: evol,
 }];
 
-/// Cast3M's colour words (only meaningful for drawing).
-const COLOURS: &[&str] = &[
+/// Cast3M's colour words (only meaningful for drawing), the extended
+/// palette of coul.notice included (TFR and BRUI read them too). OR is
+/// left out: as a short choice it would take any word beginning OR.
+pub(crate) const COLOURS: &[&str] = &[
     "DEFA", "NOIR", "BLEU", "ROUG", "ROSE", "VERT", "TURQ", "JAUN", "BLAN", "AZUR", "ORAN", "VIOL", "OCEA", "CYAN",
-    "OLIV", "GRIS",
+    "OLIV", "GRIS", "POUR", "BRUN", "BRIQ", "CORA", "BEIG", "MARI", "BOUT", "LIME", "LAVA", "BRON", "KAKI", "PEAU",
+    "CARA", "INDI",
 ];
 
 fn evol(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {

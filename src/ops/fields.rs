@@ -34,8 +34,9 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "NOMC",
-        signature: "NOMC NEWNAME CHPOINT | NOMC LISTMOTS_OLD LISTMOTS_NEW CHPOINT",
-        doc: "Rename components.",
+        signature:
+            "NOMC NEWNAME CHPOINT | NOMC LISTMOTS_OLD LISTMOTS_NEW CHPOINT ('NATU' 'INDETER'|'DIFFUS'|'DISCRET')",
+        doc: "Rename components (and set the field's nature after 'NATU').",
         example: "c = nomc 'UX' (coor 1 l) ;",
         f: nomc,
     },
@@ -189,19 +190,35 @@ fn exco(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 fn nomc(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let ch = a.req_find::<Rc<Chpoint>>()?;
     let first = comp_list(a).ok_or_else(|| a.missing("new component names"))?;
-    let (old, new) = match comp_list(a) {
+    let mut nature = nature_word(a)?;
+    let (old, new) = match comp_list(a).filter(|_| nature.is_none()) {
         Some(second) => (first, second),
         None => (ch.components(), first),
     };
+    nature = nature.or(nature_word(a)?);
+    // Component names are 4 characters, trailing blanks dropped ('H2  ').
+    let new: Vec<String> = new.iter().map(|c| c.trim_end().to_string()).collect();
     if old.len() != new.len() {
         return Err(a.err(format!("{} component(s) to rename with {} name(s)", old.len(), new.len())));
     }
-    let mut out = Chpoint::new(ch.nature);
+    let mut out = Chpoint::new(nature.unwrap_or(ch.nature));
     for (n, c, v) in ch.entries() {
         let name = old.iter().position(|x| x == c).map_or(c, |i| new[i].as_str());
         out.add(n, name, v, false);
     }
     Ok(vec![Value::Chpo(Rc::new(out))])
+}
+
+/// NOMC's `'NATU' 'INDETER'|'DIFFUS'|'DISCRET'`, if written.
+fn nature_word(a: &mut Args) -> Result<Option<Nature>> {
+    if a.keyword(&["NATU"]).is_none() {
+        return Ok(None);
+    }
+    Ok(Some(match a.req_keyword(&["INDETER", "DIFFUS", "DISCRET"])? {
+        "DIFFUS" => Nature::Diffus,
+        "DISCRET" => Nature::Discret,
+        _ => Nature::Indeter,
+    }))
 }
 
 /// `ENLE CHPOINT COMP|LISTMOTS`: the field without those components.

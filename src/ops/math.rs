@@ -73,8 +73,8 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "ENTI",
-        signature: "ENTI NUM|LISTREEL|LISTENTI|MOT ('INFE'|'SUPE'|'PROC')",
-        doc: "Integer part (truncation; INFE floor, SUPE ceiling, PROC nearest); a LISTREEL gives a LISTENTI, a MOT holding a number its value.",
+        signature: "ENTI ('TRON'|'INFE'|'SUPE'|'PROC') NUM|LISTREEL|LISTENTI|CHPOINT|MOT",
+        doc: "Integer part (TRON truncation, the default; INFE floor, SUPE ceiling, PROC nearest); a LISTREEL gives a LISTENTI, a CHPOINT a CHPOINT of whole values, a MOT holding a number its value.",
         example: "i = enti 3.7 ;",
         f: enti,
     },
@@ -254,7 +254,10 @@ struct NumericOrMot(Value);
 impl FromArg for NumericOrMot {
     const EXPECT: &'static str = "a number, a list or a word holding a number";
     fn from_value(v: &Value) -> Option<Self> {
-        let ok = matches!(v, Value::Int(_) | Value::Float(_) | Value::ListReel(_) | Value::ListEnti(_) | Value::Mot(_));
+        let ok = matches!(
+            v,
+            Value::Int(_) | Value::Float(_) | Value::ListReel(_) | Value::ListEnti(_) | Value::Mot(_) | Value::Chpo(_)
+        );
         ok.then(|| NumericOrMot(v.clone()))
     }
 }
@@ -273,14 +276,14 @@ fn word_number(a: &Args, s: &str) -> Result<f64> {
 fn enti(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     // The rounding word may come before the value (`ENTI 'PROC' 2.5`):
     // read it first there, or the MOT would be taken for the value.
-    const ROUNDING: &[&str] = &["INFE", "SUPE", "PROC"];
+    const ROUNDING: &[&str] = &["TRON", "INFE", "SUPE", "PROC"];
     let before = a.keyword_next(ROUNDING);
     let v = numeric_or_mot(a)?;
     let round: fn(f64) -> f64 = match before.or_else(|| a.keyword(ROUNDING)) {
         Some("INFE") => f64::floor,
         Some("SUPE") => f64::ceil,
-        Some(_) => f64::round,
-        None => f64::trunc,
+        Some("PROC") => f64::round,
+        _ => f64::trunc,
     };
     let to_int = |x: f64| -> Result<i64> {
         let r = round(x);
@@ -295,6 +298,8 @@ fn enti(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         Value::Mot(s) => Value::Int(to_int(word_number(a, &s)?)?),
         Value::ListEnti(l) => Value::ListEnti(l),
         Value::ListReel(l) => Value::ListEnti(Rc::new(l.iter().map(|x| to_int(*x)).collect::<Result<_>>()?)),
+        // A field keeps FLOTTANT values, rounded as asked.
+        Value::Chpo(c) => Value::Chpo(Rc::new(c.map(round))),
         other => return Err(a.err(format!("no integer part of a {}", other.type_name()))),
     }])
 }

@@ -20,7 +20,9 @@ mod evol_temps;
 mod export;
 mod extract;
 mod fields;
+mod fit;
 mod format;
+mod fourier;
 mod fracture;
 mod integrate;
 mod io;
@@ -39,6 +41,7 @@ mod mesh_repair;
 mod mesh_ruled;
 mod mesh_select;
 mod model;
+mod noise;
 mod objects;
 mod opti;
 mod opti_own;
@@ -80,6 +83,9 @@ impl Registry {
             arith::OPS,
             math::OPS,
             lists::OPS,
+            noise::OPS,
+            fourier::OPS,
+            fit::OPS,
             extract::OPS,
             objects::OPS,
             io::OPS,

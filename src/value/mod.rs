@@ -12,6 +12,7 @@ pub mod finite;
 pub mod model;
 mod model_union;
 pub mod rigidity;
+pub mod signal;
 pub mod table;
 
 pub use chargement::Chargement;

@@ -1,0 +1,8 @@
+//! Numerics on sampled signals and random values: the generator behind
+//! BRUI, Fourier transforms of curves (TFR), and what is built on them.
+//! Plain numbers in, plain numbers out; the operators (`ops/noise.rs`, `ops/fourier.rs`)
+//! read the arguments and wrap the results.
+
+pub mod fit;
+pub mod fourier;
+pub mod noise;
