@@ -22,6 +22,7 @@ mod integrate;
 mod io;
 mod limits;
 mod lists;
+mod lists_search;
 mod manu;
 mod masq;
 mod math;
@@ -72,6 +73,7 @@ impl Registry {
             arith::OPS,
             math::OPS,
             lists::OPS,
+            lists_search::OPS,
             extract::OPS,
             objects::OPS,
             io::OPS,
