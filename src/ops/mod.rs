@@ -12,6 +12,7 @@ mod colour;
 mod contact;
 mod curves;
 mod dofs;
+mod empty;
 mod evol;
 mod evol_temps;
 mod export;
@@ -74,6 +75,7 @@ impl Registry {
             math::OPS,
             lists::OPS,
             lists_search::OPS,
+            empty::OPS,
             extract::OPS,
             objects::OPS,
             io::OPS,
