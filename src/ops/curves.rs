@@ -16,14 +16,17 @@ use std::rc::Rc;
 pub(crate) const OPS: &[OpDef] = &[
     OpDef {
         name: "IPOL",
-        signature: "IPOL X EVOLUTIO | IPOL X LISTREEL_X LISTREEL_Y ('SPLI' ('DGAU' D1) ('DDRO' D2))   (X: NUM|LISTREEL|CHPOINT|MCHAML)",
-        doc: "Interpolation of a curve at X (value by value for lists and fields): linear (monotonic abscissae; a repeated abscissa is a jump), or a cubic spline with 'SPLI' (natural ends, or the slopes DGAU at the smallest abscissa and DDRO at the largest). Outside the abscissae the end values hold.",
+        signature: "IPOL X EVOLUTIO | IPOL X LISTREEL_X LISTREEL_Y ('SPLI' ('DGAU' D1) ('DDRO' D2))   (X: NUM|LISTREEL|CHPOINT|MCHAML) | IPOL NUAGE FIELD ('GAUS'|'RATI'|'PID' (P)|'GRIL')",
+        doc: "Interpolation of a curve at X (value by value for lists and fields): linear (monotonic abscissae; a repeated abscissa is a jump), or a cubic spline with 'SPLI' (natural ends, or the slopes DGAU at the smallest abscissa and DDRO at the largest). Outside the abscissae the end values hold. With a NUAGE, a function of the field's components (the NUAGE's components the field names) giving the others: a first-order fit weighted around each point ('GAUS', the default, or 'RATI'), inverse distance weighting ('PID', power P, 1 by default), or multilinear on a grid ('GRIL': one tuple of a LISTREEL per axis and the values, first axis fastest).",
         example: "y = ipol 1.5 (prog 0. 1. 2.) (prog 0. 10. 40.) ;",
         f: ipol,
     },
 ];
 
 fn ipol(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    if let Some(nu) = a.opt_with(|v| if let Value::Nuage(n) = v { Some(n.clone()) } else { None }) {
+        return super::nuage::ipol(a, &nu);
+    }
     // Up to three operands, in the order written: X then the curve (one
     // EVOLUTIO, or the abscissae and ordinates lists).
     let mut vals: Vec<Value> = Vec::new();

@@ -37,6 +37,7 @@ mod mesh_repair;
 mod mesh_ruled;
 mod mesh_select;
 mod model;
+mod nuage;
 mod objects;
 mod opti;
 mod opti_own;
@@ -109,6 +110,7 @@ impl Registry {
             export::OPS,
             evol::OPS,
             curves::OPS,
+            nuage::OPS,
             tables::OPS,
             variable::OPS,
             pasapas::OPS,
