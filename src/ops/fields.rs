@@ -33,8 +33,8 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "NOMC",
-        signature: "NOMC NEWNAME CHPOINT | NOMC LISTMOTS_OLD LISTMOTS_NEW CHPOINT",
-        doc: "Rename components.",
+        signature: "NOMC NEWNAME CHPOINT | NOMC LISTMOTS_OLD LISTMOTS_NEW CHPOINT ('NATU' DIFFUS|DISCRET)",
+        doc: "Rename components; 'NATU' sets the nature of the result.",
         example: "c = nomc 'UX' (coor 1 l) ;",
         f: nomc,
     },
@@ -187,20 +187,37 @@ fn exco(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 
 fn nomc(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let ch = a.req_find::<Rc<Chpoint>>()?;
+    let mut nature = nomc_nature(a)?;
     let first = comp_list(a).ok_or_else(|| a.missing("new component names"))?;
+    nature = nature.or(nomc_nature(a)?);
     let (old, new) = match comp_list(a) {
         Some(second) => (first, second),
         None => (ch.components(), first),
     };
+    nature = nature.or(nomc_nature(a)?);
     if old.len() != new.len() {
         return Err(a.err(format!("{} component(s) to rename with {} name(s)", old.len(), new.len())));
     }
-    let mut out = Chpoint::new(ch.nature);
+    let mut out = Chpoint::new(nature.unwrap_or(ch.nature));
     for (n, c, v) in ch.entries() {
         let name = old.iter().position(|x| x == c).map_or(c, |i| new[i].as_str());
         out.add(n, name, v, false);
     }
     Ok(vec![Value::Chpo(Rc::new(out))])
+}
+
+/// NOMC's `'NATU' DIFFUS|DISCRET`: the nature of the renamed field.
+fn nomc_nature(a: &mut Args) -> Result<Option<Nature>> {
+    if a.keyword(&["NATU"]).is_none() {
+        return Ok(None);
+    }
+    let w = a.word().ok_or_else(|| a.missing("DIFFUS or DISCRET after 'NATU'"))?;
+    match w.to_uppercase().get(..4) {
+        Some("DIFF") => Ok(Some(Nature::Diffus)),
+        Some("DISC") => Ok(Some(Nature::Discret)),
+        Some("INDE") => Ok(Some(Nature::Indeter)),
+        _ => Err(a.err(format!("{} is not a nature (DIFFUS or DISCRET)", w))),
+    }
 }
 
 /// `ENLE CHPOINT COMP|LISTMOTS`: the field without those components.

@@ -5,6 +5,7 @@
 mod arith;
 mod assemble;
 mod bc;
+mod chan_cham;
 #[cfg(test)]
 mod catalogue_tests;
 mod chargement;

@@ -16,7 +16,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "SIGM", signature: "SIGM ('LINE') MMODEL MCHAML (MCHAML) CHPOINT", doc: "Elastic stresses (SMXX … for massive elements, EFFX … MOMZ resultants for bars and beams, N11 N22 N12 M11 M22 M12 V1 V2 for shells) at the element points.", example: "sig = sigm mo ma u ;", f: sigm },
     OpDef { name: "EPSI", signature: "EPSI ('LINE') MMODEL (MCHAML) CHPOINT", doc: "Strains (EPXX … GAXY; generalised strains for bars and beams; EPSS EPTT GAST RTSS RTTT RTST for shells).", example: "eps = epsi mo ma u ;", f: epsi },
     OpDef { name: "VMIS", signature: "VMIS MMODEL MCHAML_STRESS (MCHAML)", doc: "Von Mises equivalent stress (the beam formula for bars and beams).", example: "vm = vmis mo sig ma ;", f: vmis },
-    OpDef { name: "CHAN", signature: "CHAN 'POI1'|QUA8|TRI6|SEG3|QUA4|TRI3|SEG2 GEO | CHAN 'CHPO'|'NOEUD'|'GRAVITE' MMODEL MCHAML | CHAN 'INCO' RIGIDITE LISTMOTS LISTMOTS | CHAN 'ATTRIBUT' CHPOINT 'NATURE' word | CHAN 'TYPE' MCHAML word | CHAN 'MAJU'|'MINU' MOT", doc: "Change the type or attributes of an object.", example: "pts = chan 'POI1' l ;", f: chan },
+    OpDef { name: "CHAN", signature: "CHAN 'POI1'|QUA8|TRI6|SEG3|QUA4|TRI3|SEG2 GEO | CHAN 'CHPO'|'NOEUD'|'GRAVITE' MMODEL MCHAML | CHAN 'INCO' RIGIDITE LISTMOTS LISTMOTS | CHAN 'ATTRIBUT' CHPOINT 'NATURE' word | CHAN 'TYPE' MCHAML word | CHAN 'MAJU'|'MINU' MOT | CHAN 'CHAM' MMODEL CHPOINT ('STRESSES')", doc: "Change the type or attributes of an object ('CHAM': a node field as a field by element, at the nodes or at the stress points).", example: "pts = chan 'POI1' l ;", f: chan },
     OpDef { name: "PRES", signature: "PRES 'MASS' MMODEL (MCHAML) VALUE GEO | PRES 'COQU' MMODEL VALUE ('NORM')", doc: "Nodal forces equivalent to a pressure on edges/faces of a massive model (positive towards the solid; in plane stress for the DIM3 thickness of the characteristics MCHAML when given, else per unit thickness), or on every element of a shell model (positive along the element normal).", example: "f = pres 'MASS' mo 10. haut ;", f: pres },
     OpDef { name: "MASS", signature: "MASS MMODEL MCHAML (MCHAML) ('LUMP')", doc: "Mass matrix (consistent, or lumped with 'LUMP').", example: "m = mass mo ma ;", f: mass },
 ];
@@ -161,10 +161,11 @@ fn vmis(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     const KW: &[&str] = &[
         "POI1", "QUA8", "TRI6", "SEG3", "QUA4", "TRI3", "SEG2", "CHPO", "NOEUD", "INCO", "ATTRIBUT", "COMP", "TYPE",
-        "GRAVITE", "MAJU", "MINU", "QUAD", "LIGN",
+        "GRAVITE", "MAJU", "MINU", "QUAD", "LIGN", "CHAM",
     ];
     let k = a.req_keyword(KW)?;
     match k {
+        "CHAM" => super::chan_cham::chan_cham(a),
         "MAJU" => Ok(vec![Value::mot(a.req::<String>()?.to_uppercase())]),
         "MINU" => Ok(vec![Value::mot(a.req::<String>()?.to_lowercase())]),
         "POI1" => Ok(vec![Value::Mesh(Rc::new(mg::change_to_poi1(&super::mesh::req_geo(a)?)))]),
