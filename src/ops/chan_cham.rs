@@ -1,18 +1,40 @@
 //! CHAN 'CHAM': a node field made a field by element of a model, at the
 //! elements' nodes, or at the points where they give their stresses
 //! (subtype 'STRESSES' / 'CONTRAINTES'), interpolated by the shape
-//! functions.
+//! functions. On a mesh instead of a model, at the nodes of each of its
+//! elements.
 
 use super::model::formulation;
 use super::Args;
 use crate::error::Result;
 use crate::fem::{element, shape};
-use crate::value::model::MchamlZone;
+use crate::fem::mesh::Mesh;
+use crate::value::model::{MchamlZone, ModelZone};
 use crate::value::{Chpoint, Mchaml, Model, Value};
 use std::rc::Rc;
 
 pub(crate) fn chan_cham(a: &mut Args) -> Result<Vec<Value>> {
-    let model = a.req_find::<Rc<Model>>()?;
+    let model = a
+        .opt_with(|v| match v {
+            Value::Model(m) => Some(m.clone()),
+            // A mesh: a zone per part, named by its element type.
+            Value::Mesh(g) => Some(Rc::new(Model {
+                zones: g
+                    .parts
+                    .iter()
+                    .filter(|p| !p.is_empty())
+                    .map(|p| ModelZone {
+                        mesh: Mesh::single(p.clone()),
+                        formulation: String::new(),
+                        behaviour: Vec::new(),
+                        element: p.ty.name().to_string(),
+                        mode: String::new(),
+                    })
+                    .collect(),
+            })),
+            _ => None,
+        })
+        .ok_or_else(|| a.missing("MMODEL or MAILLAGE"))?;
     let field = a.req_find::<Rc<Chpoint>>()?;
     let at_stress_points = match a.keyword(&["NOEUD", "STRESSES", "CONTRAINTES"]) {
         Some("STRESSES") | Some("CONTRAINTES") => true,
