@@ -254,3 +254,49 @@ fn on_mchaml(a: &Args, f: &Function, m: &Mchaml) -> Result<Mchaml> {
     }
     Ok(Mchaml { subtype: m.subtype.clone(), zones })
 }
+
+/// EXTR on a NUAGE: 'COMP' (the component names); the object of a
+/// component of a one-tuple NUAGE; the tuple where a component is the
+/// greatest, the least ('MAXI', 'MINI'), the nearest below or above a
+/// value ('INFE', 'SUPE'); the tuples where it lies between two values
+/// ('ENTR').
+pub(crate) fn extr(a: &mut Args, nu: &Nuage) -> Result<Vec<Value>> {
+    if a.keyword_next(&["COMP"]).is_some() {
+        return Ok(vec![Value::ListMots(Rc::new(nu.comps.iter().map(|c| c.0.clone()).collect()))]);
+    }
+    let select = a.keyword(&["MAXI", "MINI", "INFE", "SUPE", "ENTR"]);
+    let name = a.word().ok_or_else(|| a.missing("a component of the NUAGE"))?;
+    let col = nu.column(&name).ok_or_else(|| {
+        let names: Vec<&str> = nu.comps.iter().map(|c| c.0.as_str()).collect();
+        a.err(format!("the NUAGE has no component {} (it has {})", name, names.join(" ")))
+    })?;
+    let Some(k) = select else {
+        return match col {
+            [v] => Ok(vec![v.clone()]),
+            _ => Err(a.err(format!("the NUAGE has {} tuples: EXTR of a component needs one", col.len()))),
+        };
+    };
+    let xs = nu.numbers(&name).ok_or_else(|| a.err(format!("the component {} holds objects that are not numbers", name)))?;
+    let by = |better: &dyn Fn(f64, f64) -> bool, ok: &dyn Fn(f64) -> bool| {
+        (0..xs.len()).filter(|&i| ok(xs[i])).fold(None, |best: Option<usize>, i| match best {
+            Some(b) if !better(xs[i], xs[b]) => Some(b),
+            _ => Some(i),
+        })
+    };
+    let keep: Vec<usize> = match k {
+        "MAXI" => by(&|x, y| x > y, &|_| true).into_iter().collect(),
+        "MINI" => by(&|x, y| x < y, &|_| true).into_iter().collect(),
+        "INFE" | "SUPE" => {
+            let t = a.req_num()?;
+            let found = if k == "INFE" { by(&|x, y| x > y, &|x| x <= t) } else { by(&|x, y| x < y, &|x| x >= t) };
+            found.into_iter().collect()
+        }
+        _ => {
+            let (lo, hi) = (a.req_num()?, a.req_num()?);
+            let (lo, hi) = (lo.min(hi), lo.max(hi));
+            (0..xs.len()).filter(|&i| (lo..=hi).contains(&xs[i])).collect()
+        }
+    };
+    let comps = nu.comps.iter().map(|(n, c)| (n.clone(), keep.iter().map(|&i| c[i].clone()).collect())).collect();
+    Ok(vec![Value::Nuage(Rc::new(Nuage { comps }))])
+}
