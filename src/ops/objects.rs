@@ -38,6 +38,13 @@ pub(crate) const OPS: &[OpDef] = &[
         f: detr,
     },
     OpDef {
+        name: "MENA",
+        signature: "MENAGE ('OBLI') (N)",
+        doc: "Free unreachable objects (memory is managed by gibi: no effect).",
+        example: "menage ;",
+        f: detr,
+    },
+    OpDef {
         name: "MOT",
         signature: "MOT WORD",
         doc: "A word as a MOT object (also an operator name kept for later).",
