@@ -7,8 +7,8 @@
 use super::model::formulation;
 use super::Args;
 use crate::error::Result;
-use crate::fem::{element, shape};
 use crate::fem::mesh::Mesh;
+use crate::fem::{element, shape};
 use crate::value::model::{MchamlZone, ModelZone};
 use crate::value::{Chpoint, Mchaml, Model, Value};
 use std::rc::Rc;
@@ -36,10 +36,7 @@ pub(crate) fn chan_cham(a: &mut Args) -> Result<Vec<Value>> {
         })
         .ok_or_else(|| a.missing("MMODEL or MAILLAGE"))?;
     let field = a.req_find::<Rc<Chpoint>>()?;
-    let at_stress_points = match a.keyword(&["NOEUD", "STRESSES", "CONTRAINTES"]) {
-        Some("STRESSES") | Some("CONTRAINTES") => true,
-        _ => false,
-    };
+    let at_stress_points = matches!(a.keyword(&["NOEUD", "STRESSES", "CONTRAINTES"]), Some("STRESSES" | "CONTRAINTES"));
     let comps = field.components();
     let mut zones = Vec::new();
     for mz in &model.zones {
@@ -53,7 +50,9 @@ pub(crate) fn chan_cham(a: &mut Args) -> Result<Vec<Value>> {
                         comps
                             .iter()
                             .map(|c| {
-                                field.get(n, c).ok_or_else(|| a.err(format!("the CHPOINT has no {} at node {}", c, n + 1)))
+                                field
+                                    .get(n, c)
+                                    .ok_or_else(|| a.err(format!("the CHPOINT has no {} at node {}", c, n + 1)))
                             })
                             .collect::<Result<Vec<f64>>>()
                     })

@@ -22,14 +22,12 @@ pub(crate) const OPS: &[OpDef] = &[OpDef {
 fn vide(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let tabular = a.keyword(&["TABU"]).is_some();
     let keys: Vec<Key> = if tabular {
-        match a.opt_with(|v| match v {
+        a.opt_with(|v| match v {
             Value::ListEnti(l) => Some(l.iter().map(|i| Key::Int(*i)).collect()),
             Value::ListReel(_) | Value::ListMots(_) => Some(list_keys(v)),
             _ => None,
-        }) {
-            Some(k) => k,
-            None => Vec::new(),
-        }
+        })
+        .unwrap_or_default()
     } else {
         Vec::new()
     };

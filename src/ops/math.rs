@@ -217,7 +217,10 @@ fn atan2_elements(a: &Args, y: &Mchaml, x: &Mchaml) -> Result<Mchaml> {
     let mut out = y.clone();
     for (zo, zx) in out.zones.iter_mut().zip(&x.zones) {
         for (k, v) in zo.constants.iter_mut() {
-            let w = zx.constants.get(k).or_else(|| (zx.constants.len() == 1).then(|| zx.constants.values().next()).flatten());
+            let w = zx
+                .constants
+                .get(k)
+                .or_else(|| (zx.constants.len() == 1).then(|| zx.constants.values().next()).flatten());
             *v = v.atan2(*w.ok_or_else(mismatch)?).to_degrees();
         }
         if zo.values.len() != zx.values.len() {

@@ -5,9 +5,9 @@
 mod arith;
 mod assemble;
 mod bc;
-mod chan_cham;
 #[cfg(test)]
 mod catalogue_tests;
+mod chan_cham;
 mod chargement;
 mod colour;
 mod contact;

@@ -66,12 +66,25 @@ fn nuag(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 let v = match a.right_any() {
                     Some(v) => v,
                     None if k == 0 => break 'tuples,
-                    None => return Err(a.missing(&format!("the {} of {} to complete the last tuple", ty.name(), comps[k].0))),
+                    None => {
+                        return Err(a.missing(&format!(
+                            "the {} of {} to complete the last tuple",
+                            ty.name(),
+                            comps[k].0
+                        )))
+                    }
                 };
                 let v = match (ty, v) {
                     (Ty::Flottant, Value::Int(i)) => Value::Float(i as f64),
                     (ty, v) if v.ty() == *ty => v,
-                    (ty, v) => return Err(a.err(format!("{} holds {} objects, not a {}", comps[k].0, ty.name(), v.type_name()))),
+                    (ty, v) => {
+                        return Err(a.err(format!(
+                            "{} holds {} objects, not a {}",
+                            comps[k].0,
+                            ty.name(),
+                            v.type_name()
+                        )))
+                    }
                 };
                 comps[k].1.push(v);
             }
@@ -148,7 +161,11 @@ impl Function {
                     _ => Err(a.err(format!("'GRILL' needs one LISTREEL per component; {} is not one", name))),
                 })
                 .collect::<Result<_>>()?;
-            let n = lists.len().checked_sub(1).filter(|n| *n > 0).ok_or_else(|| a.err("'GRILL' needs at least two components"))?;
+            let n = lists
+                .len()
+                .checked_sub(1)
+                .filter(|n| *n > 0)
+                .ok_or_else(|| a.err("'GRILL' needs at least two components"))?;
             let axes = lists[..n].to_vec();
             if let Some(ax) = axes.iter().find(|ax| ax.is_empty() || ax.windows(2).any(|w| w[1] <= w[0])) {
                 return Err(a.err(format!("a grid's coordinates must be strictly increasing ({} of them)", ax.len())));
@@ -171,9 +188,9 @@ impl Function {
             .comps
             .iter()
             .map(|(name, _)| {
-                nu.numbers(name)
-                    .map(|v| (name.clone(), v))
-                    .ok_or_else(|| a.err(format!("the component {} of the NUAGE holds objects that are not numbers", name)))
+                nu.numbers(name).map(|v| (name.clone(), v)).ok_or_else(|| {
+                    a.err(format!("the component {} of the NUAGE holds objects that are not numbers", name))
+                })
             })
             .collect::<Result<_>>()?;
         let (ins, outs): (Vec<_>, Vec<_>) = columns.into_iter().partition(|(name, _)| has(name));
@@ -231,7 +248,8 @@ fn on_mchaml(a: &Args, f: &Function, m: &Mchaml) -> Result<Mchaml> {
         if !f.inputs.iter().all(|c| z.comps.contains(c) || z.constants.contains_key(c)) {
             continue;
         }
-        let mut zone = MchamlZone { mesh: z.mesh.clone(), element: z.element.clone(), at_nodes: z.at_nodes, ..Default::default() };
+        let mut zone =
+            MchamlZone { mesh: z.mesh.clone(), element: z.element.clone(), at_nodes: z.at_nodes, ..Default::default() };
         if z.values.is_empty() {
             // Constant inputs: constant outputs.
             let x: Vec<f64> = f.inputs.iter().filter_map(|c| z.constants.get(c).copied()).collect();
@@ -276,7 +294,8 @@ pub(crate) fn extr(a: &mut Args, nu: &Nuage) -> Result<Vec<Value>> {
             _ => Err(a.err(format!("the NUAGE has {} tuples: EXTR of a component needs one", col.len()))),
         };
     };
-    let xs = nu.numbers(&name).ok_or_else(|| a.err(format!("the component {} holds objects that are not numbers", name)))?;
+    let xs =
+        nu.numbers(&name).ok_or_else(|| a.err(format!("the component {} holds objects that are not numbers", name)))?;
     let by = |better: &dyn Fn(f64, f64) -> bool, ok: &dyn Fn(f64) -> bool| {
         (0..xs.len()).filter(|&i| ok(xs[i])).fold(None, |best: Option<usize>, i| match best {
             Some(b) if !better(xs[i], xs[b]) => Some(b),
