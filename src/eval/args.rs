@@ -153,6 +153,17 @@ impl<'a> Args<'a> {
         Some(t)
     }
 
+    /// Whether an argument of type T is there, pushed or on the right,
+    /// without taking it (an operator whose form depends on which types
+    /// are present, in any order).
+    pub fn has_any<T: FromArg>(&self) -> bool {
+        self.st.left.iter().any(|v| T::from_value(v).is_some())
+            || self.st.right.iter().any(|t| match &t.kind {
+                TokKind::Val(v) | TokKind::Nullary { value: v, .. } => T::from_value(v).is_some(),
+                _ => false,
+            })
+    }
+
     /// An optional argument of type T: pushed operands first, then right.
     pub fn opt<T: FromArg>(&mut self) -> Option<T> {
         self.take_with(T::from_value)

@@ -63,6 +63,9 @@ fn extr(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         let i = a.req_index(l.len())?;
         return Ok(vec![Value::Chpo(l[i].clone())]);
     }
+    if let Some(nu) = a.opt_with(|v| if let Value::Nuage(n) = v { Some(n.clone()) } else { None }) {
+        return super::nuage::extr(a, &nu);
+    }
     if let Some(m) = a.opt::<String>() {
         return lists::extr_word(a, &m);
     }

@@ -321,9 +321,13 @@ pub(crate) fn extremum(a: &mut Args, max: bool, use_abs: bool) -> Result<Option<
     r.map(|v| Some(Value::Float(v))).ok_or_else(|| a.err("the field is empty"))
 }
 
-/// EXTR on an element field: `'COMP'` (the component names), or one value
-/// `COMP (zone (element (point)))`.
+/// EXTR on an element field: `'COMP'` (the component names), `'MAIL'`
+/// (the mesh it lies on), or one value `COMP (zone (element (point)))`.
 pub(crate) fn extr_mchaml(a: &mut Args, m: &Mchaml) -> Result<Vec<Value>> {
+    if a.keyword_next(&["MAIL"]).is_some() {
+        let mesh = m.zones.iter().fold(Mesh::default(), |acc, z| acc.union(&z.mesh));
+        return Ok(vec![Value::Mesh(Rc::new(mesh))]);
+    }
     if a.keyword_next(&["COMP"]).is_some() {
         // The component names, every zone's, each once.
         let mut names: Vec<String> = Vec::new();

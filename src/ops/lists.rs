@@ -1,4 +1,5 @@
-//! Lists: PROG, LECT, MOTS, SUIT (LISTCHPO), ORDO, DIME, SOMM, POSI, and
+//! Lists: PROG, LECT, MOTS, SUIT (LISTCHPO), ORDO, DIME, SOMM (POSI and
+//! UNIQ are in `lists_search.rs`), and
 //! what EXTR and ENLE do with a list or a word (`extract.rs` dispatches).
 
 use super::{limits, Args, FromArg, OpDef};
@@ -56,13 +57,6 @@ pub(crate) const OPS: &[OpDef] = &[
         doc: "Sum of the items of a list (FLOTTANT for a LISTREEL, ENTIER for a LISTENTI).",
         example: "s = somm (prog 1. 2. 3.) ;",
         f: somm,
-    },
-    OpDef {
-        name: "POSI",
-        signature: "POSI OBJ LISTMOTS|LISTENTI|LISTREEL",
-        doc: "Place (from 1) of the first item of the list equal to OBJ, 0 when it is absent.",
-        example: "i = posi 'UY' (mots 'UX' 'UY') ;",
-        f: posi,
     },
 ];
 
@@ -319,21 +313,6 @@ fn somm(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 
 /// POSI: the object is the first operand written (`POSI 'UY' LM`), read
 /// before the list so that a MOT list never stands for the object.
-fn posi(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    if let Some(l) = a.opt::<Rc<Vec<String>>>() {
-        let w = a.req::<String>()?;
-        let w = short(&w);
-        return Ok(vec![Value::Int(l.iter().position(|x| *x == w).map_or(0, |i| i as i64 + 1))]);
-    }
-    if let Some(l) = a.opt::<Rc<Vec<i64>>>() {
-        let x = a.req::<i64>()?;
-        return Ok(vec![Value::Int(l.iter().position(|y| *y == x).map_or(0, |i| i as i64 + 1))]);
-    }
-    let l = a.req::<Rc<Vec<f64>>>()?;
-    let x = a.req_num()?;
-    Ok(vec![Value::Int(l.iter().position(|y| *y == x).map_or(0, |i| i as i64 + 1))])
-}
-
 fn dime(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let v = a.req::<Value>()?;
     let n = match &v {

@@ -4,7 +4,7 @@
 use super::{pointwise, Args, FromArg, OpDef};
 use crate::error::Result;
 use crate::eval::Interp;
-use crate::value::{fmt_float, Chpoint, Value};
+use crate::value::{fmt_float, Chpoint, Mchaml, Value};
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
@@ -52,8 +52,8 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "ATG",
-        signature: "ATG NUM (NUM2) | ATG LISTREEL (LISTREEL2) | ATG CHPOINT (CHPOINT2) | ATG MCHAML|EVOLUTIO",
-        doc: "Arc tangent in degrees; with two numbers, lists or fields, atan2(NUM, NUM2).",
+        signature: "ATG NUM (NUM2) | ATG LISTREEL (LISTREEL2) | ATG CHPOINT (CHPOINT2) | ATG MCHAML (MCHAML2) | ATG EVOLUTIO",
+        doc: "Arc tangent in degrees; with two numbers, lists or node fields, atan2(Y, X) item by item (a field X of one component pairs with every component of Y).",
         example: "a = atg 1. ;",
         f: atg,
     },
@@ -228,12 +228,66 @@ fn atg(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             Some(m) => Err(a.err(format!("lists of different lengths ({} and {})", l.len(), m.len()))),
             None => Ok(vec![pointwise::map(&y, &|x| x.atan().to_degrees()).unwrap_or(y)]),
         },
-        Value::Chpo(_) => match a.opt_right::<Rc<Chpoint>>() {
-            Some(x) => Ok(vec![value_by_value(a, &y, &Value::Chpo(x), |p, q| p.atan2(q).to_degrees())?]),
+        Value::Chpo(c) => match a.opt_right::<Rc<Chpoint>>() {
+            Some(x) => Ok(vec![Value::Chpo(Rc::new(atan2_fields(a, c, &x)?))]),
+            None => Ok(vec![pointwise::map(&y, &|x| x.atan().to_degrees()).unwrap_or(y)]),
+        },
+        Value::Mchaml(m) => match a.opt_right::<Rc<Mchaml>>() {
+            Some(x) => Ok(vec![Value::Mchaml(Rc::new(atan2_elements(a, m, &x)?))]),
             None => Ok(vec![pointwise::map(&y, &|x| x.atan().to_degrees()).unwrap_or(y)]),
         },
         _ => Ok(vec![pointwise::map(&y, &|x| x.atan().to_degrees()).unwrap_or(y)]),
     }
+}
+
+/// atan2(y, x) value by value of two element fields of one layout.
+fn atan2_elements(a: &Args, y: &Mchaml, x: &Mchaml) -> Result<Mchaml> {
+    let mismatch = || a.err("the two MCHAMLs must have the same zones, elements and points");
+    if y.zones.len() != x.zones.len() {
+        return Err(mismatch());
+    }
+    let mut out = y.clone();
+    for (zo, zx) in out.zones.iter_mut().zip(&x.zones) {
+        for (k, v) in zo.constants.iter_mut() {
+            let w = zx
+                .constants
+                .get(k)
+                .or_else(|| (zx.constants.len() == 1).then(|| zx.constants.values().next()).flatten());
+            *v = v.atan2(*w.ok_or_else(mismatch)?).to_degrees();
+        }
+        if zo.values.len() != zx.values.len() {
+            return Err(mismatch());
+        }
+        for (ey, ex) in zo.values.iter_mut().zip(&zx.values) {
+            if ey.len() != ex.len() {
+                return Err(mismatch());
+            }
+            for (py, px) in ey.iter_mut().zip(ex) {
+                if py.len() != px.len() {
+                    return Err(mismatch());
+                }
+                for (v, w) in py.iter_mut().zip(px) {
+                    *v = v.atan2(*w).to_degrees();
+                }
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// atan2(y, x) node by node: the same component of `x`, or its only one
+/// (`ATG y x` of the fields COOR gives, named Y and X).
+fn atan2_fields(a: &Args, y: &Chpoint, x: &Chpoint) -> Result<Chpoint> {
+    let only = (x.comps.len() == 1).then(|| x.comps[0].as_str());
+    let mut out = Vec::new();
+    for (n, c, yv) in y.entries() {
+        let xv = x
+            .get(n, c)
+            .or_else(|| only.and_then(|o| x.get(n, o)))
+            .ok_or_else(|| a.err(format!("the second field has no value for {} at node {}", c, n + 1)))?;
+        out.push((n, c, yv.atan2(xv).to_degrees()));
+    }
+    Ok(Chpoint::from_entries(y.nature, out))
 }
 fn exp(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     unary(a, f64::exp)

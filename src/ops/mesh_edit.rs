@@ -156,10 +156,16 @@ fn inte(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     Ok(mesh_val(mg::inte(&x, &y)))
 }
 
-fn diff(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+fn diff(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let x = req_geo(a)?;
     let y = req_geo(a)?;
-    Ok(mesh_val(mg::diff(&x, &y)))
+    let d = mg::diff(&x, &y);
+    // Nothing left: an empty mesh of the current element type, as Cast3M
+    // gives (ELEM 'TYPE' names it).
+    match ElemType::from_name(&it.opts.elem.to_uppercase()) {
+        Some(ty) if d.n_elements() == 0 => Ok(mesh_val(Mesh::single(crate::fem::mesh::Part::new(ty)))),
+        _ => Ok(mesh_val(d)),
+    }
 }
 
 fn translate(it: &mut Interp, a: &mut Args, sign: f64) -> Result<Vec<Value>> {

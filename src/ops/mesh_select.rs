@@ -69,7 +69,9 @@ pub(crate) fn towards(it: &Interp, a: &mut Args) -> Result<Option<Towards>> {
 pub(crate) fn elem_keyword(it: &mut Interp, a: &mut Args, m: &Mesh, k: &str) -> Result<Vec<Value>> {
     if k == "TYPE" {
         let mut names: Vec<String> = Vec::new();
-        for p in m.parts.iter().filter(|p| !p.is_empty()) {
+        // An empty mesh (VIDE, DIFF) still has the type it was made with.
+        let empty = m.n_elements() == 0;
+        for p in m.parts.iter().filter(|p| empty || !p.is_empty()) {
             if !names.iter().any(|n| n == p.ty.name()) {
                 names.push(p.ty.name().to_string());
             }

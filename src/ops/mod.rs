@@ -14,6 +14,7 @@ mod config;
 mod contact;
 mod curves;
 mod dofs;
+mod empty;
 mod evol;
 mod evol_extr;
 mod evol_temps;
@@ -28,6 +29,7 @@ mod integrate;
 mod io;
 mod limits;
 mod lists;
+mod lists_search;
 mod manu;
 mod masq;
 mod math;
@@ -42,6 +44,7 @@ mod mesh_ruled;
 mod mesh_select;
 mod model;
 mod noise;
+mod nuage;
 mod objects;
 mod opti;
 mod opti_own;
@@ -86,6 +89,8 @@ impl Registry {
             noise::OPS,
             fourier::OPS,
             fit::OPS,
+            lists_search::OPS,
+            empty::OPS,
             extract::OPS,
             objects::OPS,
             io::OPS,
@@ -124,6 +129,7 @@ impl Registry {
             export::OPS,
             evol::OPS,
             curves::OPS,
+            nuage::OPS,
             tables::OPS,
             variable::OPS,
             pasapas::OPS,

@@ -272,6 +272,7 @@ pub(super) fn pointer(v: &Value) -> i64 {
         Value::Mchaml(r) => addr(r),
         Value::Evol(r) => addr(r),
         Value::Charge(r) => addr(r),
+        Value::Nuage(r) => addr(r),
         Value::Host(r) => addr(r),
     }
 }

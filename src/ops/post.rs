@@ -254,7 +254,9 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             };
             Ok(vec![Value::Chpo(Rc::new(c))])
         }
-        "CHAM" if early.is_some() || matches!(a.peek_right(), Some(Value::Chpo(_))) => {
+        // From a node field, whether it comes before or after the model
+        // or mesh (`CHAN 'CHAM' ch mo`, `CHAN 'CHAM' mo ch`).
+        "CHAM" if early.is_some() || a.has_any::<Rc<Chpoint>>() => {
             let ch = match early {
                 Some(c) => c,
                 None => a.req::<Rc<Chpoint>>()?,

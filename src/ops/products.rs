@@ -1,6 +1,7 @@
 //! Products and combinations: PSCA (scalar product of two vectors, two
 //! node fields or two element fields) and XTY (of two node fields), each
-//! over paired component lists; PVEC (vector product of two vectors); COLI
+//! over paired component lists; PVEC (vector product of two vectors); NORM
+//! (Euclidean length of a vector); COLI
 //! (linear combination of fields).
 
 use super::arith;
@@ -35,6 +36,13 @@ pub(crate) const OPS: &[OpDef] = &[
         f: pvec,
     },
     OpDef {
+        name: "NORM",
+        signature: "NORM POINT",
+        doc: "Euclidean norm of a vector (a POINT read as its coordinates).",
+        example: "l = norm (3. 4.) ;",
+        f: norm,
+    },
+    OpDef {
         name: "DIST",
         signature: "DIST POINT POINT",
         doc: "Distance between two points.",
@@ -49,6 +57,11 @@ pub(crate) const OPS: &[OpDef] = &[
         f: coli,
     },
 ];
+
+fn norm(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let p = a.req::<PointId>()?;
+    Ok(vec![Value::Float(it.nodes.get(p.0).iter().map(|x| x * x).sum::<f64>().sqrt())])
+}
 
 fn pvec(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let p = a.req::<PointId>()?;

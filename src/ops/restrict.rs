@@ -57,9 +57,8 @@ fn redu(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 .map(|z| ModelZone { mesh: elements_on(&z.mesh, &keep), ..z.clone() })
                 .filter(|z| z.mesh.n_elements() > 0)
                 .collect();
-            if zones.is_empty() {
-                return Err(a.err("no element of the model lies on the mesh"));
-            }
+            // No element on the mesh: an empty model, as Cast3M gives
+            // (its integrals are zero).
             Value::Model(Rc::new(Model { zones }))
         }
         v => return Err(a.missing(&format!("CHPOINT, MCHAML, RIGIDITE or MMODEL (found a {})", v.type_name()))),

@@ -102,6 +102,20 @@ pub fn describe(v: &Value) -> String {
             s
         }
         Value::Charge(c) => chargement(c),
+        Value::Nuage(n) => {
+            let mut s = format!("{} tuple(s) of {} component(s)", n.len(), n.comps.len());
+            for (name, col) in &n.comps {
+                let ty = col.first().map_or("FLOTTANT".to_string(), Value::type_name);
+                s.push_str(&format!("\n  {} ({}):", name, ty));
+                for v in col.iter().take(MAX_LINES) {
+                    s.push_str(&format!(" {}", v.as_f64().map_or_else(|| v.type_name(), fmt_float)));
+                }
+                if col.len() > MAX_LINES {
+                    s.push_str(" ...");
+                }
+            }
+            s
+        }
         other => other.type_name(),
     }
 }

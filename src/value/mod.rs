@@ -11,6 +11,7 @@ pub mod field;
 pub mod finite;
 pub mod model;
 mod model_union;
+pub mod nuage;
 pub mod rigidity;
 pub mod signal;
 pub mod table;
@@ -19,6 +20,7 @@ pub use chargement::Chargement;
 pub use display::{fmt_float, list_value, list_value_short};
 pub use field::{Chpoint, Nature};
 pub use model::{Evolution, Mchaml, Model};
+pub use nuage::Nuage;
 pub use rigidity::Rigidite;
 pub use table::{Key, Table};
 
@@ -66,6 +68,8 @@ pub enum Value {
     Evol(Rc<Evolution>),
     /// CHARGEMENT: loads in space and time (CHAR).
     Charge(Rc<Chargement>),
+    /// NUAGE: tuples of named components (NUAG).
+    Nuage(Rc<Nuage>),
     Host(Rc<dyn HostObject>),
 }
 
@@ -91,6 +95,7 @@ pub enum Ty {
     Mchaml,
     Evolutio,
     Chargeme,
+    Nuage,
     Host,
 }
 
@@ -116,6 +121,7 @@ impl Ty {
             Ty::Mchaml => "MCHAML",
             Ty::Evolutio => "EVOLUTIO",
             Ty::Chargeme => "CHARGEME",
+            Ty::Nuage => "NUAGE",
             Ty::Host => "HOST",
         }
     }
@@ -143,6 +149,7 @@ impl Ty {
             Ty::Mchaml,
             Ty::Evolutio,
             Ty::Chargeme,
+            Ty::Nuage,
         ]
         .into_iter()
         .find(|t| t.name() == s)
@@ -171,6 +178,7 @@ impl Value {
             Value::Mchaml(_) => Ty::Mchaml,
             Value::Evol(_) => Ty::Evolutio,
             Value::Charge(_) => Ty::Chargeme,
+            Value::Nuage(_) => Ty::Nuage,
             Value::Host(_) => Ty::Host,
         }
     }

@@ -68,6 +68,7 @@ fn identity(v: &Value) -> usize {
         Value::Mchaml(r) => Rc::as_ptr(r) as *const u8 as usize,
         Value::Evol(r) => Rc::as_ptr(r) as *const u8 as usize,
         Value::Charge(r) => Rc::as_ptr(r) as *const u8 as usize,
+        Value::Nuage(r) => Rc::as_ptr(r) as *const u8 as usize,
         Value::Host(r) => Rc::as_ptr(r) as *const u8 as usize,
         _ => 0,
     }
