@@ -14,7 +14,7 @@
 //!   is per unit thickness.
 
 use super::mesh::ElemType;
-use super::{bar, beam, shell, solid};
+use super::{bar, beam, coq2, shell, solid};
 use thiserror::Error;
 
 pub use super::material::Material;
@@ -52,6 +52,9 @@ pub enum Formulation {
     Coq3,
     Dkt,
     Coq4,
+    /// Thin conical (AXIS) or cylindrical (plane modes) shell on SEG2
+    /// (see [`coq2`]).
+    Coq2,
 }
 
 impl Formulation {
@@ -65,12 +68,13 @@ impl Formulation {
             Formulation::Coq3 => "COQ3",
             Formulation::Dkt => "DKT",
             Formulation::Coq4 => "COQ4",
+            Formulation::Coq2 => "COQ2",
         }
     }
 
-    /// COQ3, DKT or COQ4.
+    /// COQ3, DKT, COQ4 or COQ2.
     pub fn is_shell(self) -> bool {
-        matches!(self, Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4)
+        matches!(self, Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 | Formulation::Coq2)
     }
 }
 
@@ -126,6 +130,7 @@ pub fn node_dofs(f: Formulation, mode: Mode) -> Result<&'static [&'static str], 
         Formulation::Pout | Formulation::Timo => beam::dofs(mode),
         Formulation::Solid | Formulation::Q4ri => Ok(solid::dofs(mode)),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::dofs(f, mode),
+        Formulation::Coq2 => coq2::dofs(mode),
     }
 }
 
@@ -133,6 +138,7 @@ pub fn node_dofs(f: Formulation, mode: Mode) -> Result<&'static [&'static str], 
 pub fn node_duals(f: Formulation, mode: Mode) -> Result<&'static [&'static str], FemError> {
     let d = node_dofs(f, mode)?;
     Ok(match d.len() {
+        _ if d[0] == "UR" && d.len() == 3 => &["FR", "FZ", "MT"],
         _ if d[0] == "UR" => &["FR", "FZ"],
         2 => &["FX", "FY"],
         3 if d[2] == "RZ" => &["FX", "FY", "MZ"],
@@ -151,6 +157,7 @@ pub fn dual_of(dof: &str) -> Option<&'static str> {
         "RX" => "MX",
         "RY" => "MY",
         "RZ" => "MZ",
+        "RT" => "MT",
         _ => return None,
     })
 }
@@ -158,7 +165,7 @@ pub fn dual_of(dof: &str) -> Option<&'static str> {
 /// Pairs the element library does not produce: multipliers, thermal and
 /// Fourier unknowns.
 pub const OTHER_DUALS: &[(&str, &str)] =
-    &[("UT", "FT"), ("RT", "MT"), ("LX", "FLX"), ("T", "Q"), ("TH", "QH"), ("P", "FP"), ("PI", "FPI")];
+    &[("UT", "FT"), ("LX", "FLX"), ("T", "Q"), ("TH", "QH"), ("P", "FP"), ("PI", "FPI")];
 
 /// The dual (force) name of any unknown: the element pairs of [`dual_of`],
 /// the other known pairs, else `F` before the name.
@@ -176,6 +183,7 @@ fn check(f: Formulation, ty: ElemType, mode: Mode) -> Result<(), FemError> {
         Formulation::Q4ri => ty == ElemType::Qua4,
         Formulation::Solid => ty.dim() >= 2,
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => ty == shell::geometry(f),
+        Formulation::Coq2 => ty == ElemType::Seg2,
     };
     if ok {
         Ok(())
@@ -198,6 +206,7 @@ pub fn stiffness(
         Formulation::Timo => beam::stiffness(true, mode, x, m),
         Formulation::Solid | Formulation::Q4ri => solid::stiffness(f, ty, mode, x, m),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::stiffness(f, mode, x, m),
+        Formulation::Coq2 => coq2::stiffness(mode, x, m),
     }
 }
 
@@ -217,6 +226,7 @@ pub fn mass(
         Formulation::Timo => beam::mass(true, mode, x, m, lumped),
         Formulation::Solid | Formulation::Q4ri => solid::mass(ty, mode, x, m, lumped),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::mass(f, mode, x, m, lumped),
+        Formulation::Coq2 => coq2::mass(mode, x, m, lumped),
     }
 }
 
@@ -237,6 +247,7 @@ pub fn stress(
         Formulation::Timo => beam::stress(true, mode, x, m, u),
         Formulation::Solid | Formulation::Q4ri => solid::field(f, ty, mode, x, m, u, true),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::stress(f, mode, x, m, u),
+        Formulation::Coq2 => coq2::stress(mode, x, m, u),
     }
 }
 
@@ -258,6 +269,7 @@ pub fn strain(
         Formulation::Timo => beam::strain(true, mode, x, m, u),
         Formulation::Solid | Formulation::Q4ri => solid::field(f, ty, mode, x, m, u, false),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::strain(f, mode, x, u),
+        Formulation::Coq2 => coq2::strain(mode, x, u),
     }
 }
 
@@ -278,6 +290,7 @@ pub fn internal_forces(
         Formulation::Pout | Formulation::Timo => beam::internal_forces(f == Formulation::Timo, mode, x, m, sig),
         Formulation::Solid | Formulation::Q4ri => solid::internal_forces(f, ty, mode, x, m, sig),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::internal_forces(f, mode, x, sig),
+        Formulation::Coq2 => coq2::internal_forces(mode, x, m, sig),
     }
 }
 
@@ -291,6 +304,7 @@ pub fn gauss_points(f: Formulation, ty: ElemType) -> Vec<([f64; 3], f64)> {
         }
         Formulation::Solid | Formulation::Q4ri => solid::rule(f, ty),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::rule(ty),
+        Formulation::Coq2 => coq2::rule(),
     }
 }
 

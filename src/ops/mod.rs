@@ -5,6 +5,7 @@
 mod arith;
 mod assemble;
 mod bc;
+mod calp;
 #[cfg(test)]
 mod catalogue_tests;
 mod chargement;
@@ -43,6 +44,7 @@ mod pasapas_fields;
 mod pasapas_model;
 mod pointwise;
 mod post;
+mod pres_model;
 mod principal;
 mod products;
 mod reso;
@@ -88,6 +90,7 @@ impl Registry {
             transform::OPS,
             colour::OPS,
             bc::OPS,
+            calp::OPS,
             contact::OPS,
             chargement::OPS,
             model::OPS,

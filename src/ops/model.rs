@@ -21,7 +21,7 @@ pub(crate) const OPS: &[OpDef] = &[
 ];
 
 const FORMS: &[&str] = &[
-    "BARR", "POUT", "TIMO", "Q4RI", "COQ3", "DKT", "COQ4", "TRI3", "TRI6", "QUA4", "QUA8", "CUB8", "TET4", "PRI6",
+    "BARR", "POUT", "TIMO", "Q4RI", "COQ3", "DKT", "COQ4", "COQ2", "TRI3", "TRI6", "QUA4", "QUA8", "CUB8", "TET4", "PRI6",
     "SEG2",
 ];
 
@@ -37,6 +37,9 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     };
     if formulation.starts_with("CONT") {
         return contact_model(it, a, &geo);
+    }
+    if formulation.starts_with("CHAR") {
+        return super::pres_model::model(it, a, &geo);
     }
     if !formulation.starts_with("MECA") {
         return Err(a.err(format!("only the MECANIQUE formulation is available, not {}", formulation)));
@@ -75,13 +78,19 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                     ty.name(),
                     p.ty.name()
                 ))
-                .note(if ty == ElemType::Tri3 {
+                .note(if ty == ElemType::Seg2 {
+                    "COQ2 is the axisymmetric (AXIS) or plane shell on lines: mesh a line with OPTI ELEM SEG2"
+                } else if ty == ElemType::Tri3 {
                     "mesh the surface with triangles (OPTI ELEM TRI3, or CHAN 'TRI3'), or use COQ4 on QUA4"
                 } else {
                     "mesh the surface with quadrangles (OPTI ELEM QUA4), or use COQ3/DKT on TRI3"
                 }));
         }
-        if mode != "TRID" {
+        if ty == ElemType::Seg2 {
+            if mode == "TRID" {
+                return Err(a.err("COQ2 shells need OPTI DIME 2 and mode AXIS, PLAN CONT or PLAN DEFO, not TRID"));
+            }
+        } else if mode != "TRID" {
             return Err(a.err(format!("{} shells need OPTI DIME 3 MODE TRID, not mode {}", element, mode)));
         }
     }
@@ -265,6 +274,7 @@ fn shell_geometry(element: &str) -> Option<ElemType> {
     match element {
         "COQ3" | "DKT" => Some(ElemType::Tri3),
         "COQ4" => Some(ElemType::Qua4),
+        "COQ2" => Some(ElemType::Seg2),
         _ => None,
     }
 }
@@ -274,6 +284,7 @@ pub(crate) fn formulation(zone: &ModelZone) -> Formulation {
         "COQ3" => Formulation::Coq3,
         "DKT" => Formulation::Dkt,
         "COQ4" => Formulation::Coq4,
+        "COQ2" => Formulation::Coq2,
         "BARR" => Formulation::Barr,
         "POUT" => Formulation::Pout,
         "TIMO" => Formulation::Timo,
@@ -305,7 +316,7 @@ fn rigi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         fields.push(f);
     }
     let mut rig = Rigidite::new(Subtype::Rigidite);
-    for zone in &model.zones {
+    for zone in model.zones.iter().filter(|z| z.formulation != super::pres_model::FORMULATION) {
         let form = formulation(zone);
         let mode = zone_mode(zone)?;
         let mat = material_for(zone, &fields);

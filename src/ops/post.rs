@@ -54,7 +54,7 @@ fn gauss_field(it: &Interp, a: &mut Args, subtype: &str, f: PointFn) -> Result<V
     let u = u.ok_or_else(|| a.missing("CHPOINT (the displacements)"))?;
     let mut out = Mchaml { subtype: subtype.into(), zones: vec![] };
     let have = u.components();
-    for zone in &model.zones {
+    for zone in model.zones.iter().filter(|z| z.formulation != super::pres_model::FORMULATION) {
         let form = formulation(zone);
         let mode = zone_mode(zone)?;
         let mat = material_for(zone, &fields);
@@ -264,6 +264,8 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                             comps: to_gauss(z, e).comps,
                             values: vec![v[0].clone(); part.ty.nodes()],
                         },
+                        // Already at the nodes (CHAN 'NOEUD' done before).
+                        Some(v) if z.at_nodes && v.len() == part.ty.nodes() => to_gauss(z, e),
                         _ => crate::fem::stress::to_nodes(form, part.ty, &to_gauss(z, e)).map_err(fem_err)?,
                     };
                     for (k, n) in nodes.iter().enumerate() {
@@ -302,6 +304,12 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 fn pres(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    if let Some(m) = a.opt::<Rc<Model>>() {
+        if super::pres_model::is_pressure_model(&m) {
+            return super::pres_model::field(a, &m);
+        }
+        return Err(a.err("PRES on a model needs a pressure model (MODE geo 'CHARGEMENT' 'PRESSION'); else write PRES 'MASS' or 'COQU'"));
+    }
     if a.req_keyword(&["MASS", "COQU"])? == "COQU" {
         return pres_shell(it, a);
     }
@@ -363,6 +371,19 @@ fn pres_shell(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         for part in &zone.mesh.parts {
             for (e, nodes) in part.elems().enumerate() {
                 let x: Vec<[f64; 3]> = nodes.iter().map(|n| it.nodes.get(*n)).collect();
+                if form == crate::fem::element::Formulation::Coq2 {
+                    // Along the left normal of the line, for the whole ring in AXIS.
+                    let mode = zone_mode(zone)?;
+                    let f = crate::fem::coq2::pressure_load(mode, &x, [p, p], 1.0, true)
+                        .map_err(|err| a.err(format!("element {}: {}", e + 1, err)))?;
+                    let names = if mode == crate::fem::element::Mode::Axis { ["FR", "FZ"] } else { ["FX", "FY"] };
+                    for (k, n) in nodes.iter().enumerate() {
+                        for (d, c) in names.iter().enumerate() {
+                            out.add(*n, c, f[3 * k + d], true);
+                        }
+                    }
+                    continue;
+                }
                 let f = crate::fem::shell::pressure_load(form, &x, p)
                     .map_err(|err| a.err(format!("element {}: {}", e + 1, err)))?;
                 for (n, v) in nodes.iter().zip(f) {
@@ -374,7 +395,7 @@ fn pres_shell(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         }
     }
     if !any {
-        return Err(a.err("PRES 'COQU' needs a shell model (COQ3, DKT, COQ4); use PRES 'MASS' for massive ones"));
+        return Err(a.err("PRES 'COQU' needs a shell model (COQ2, COQ3, DKT, COQ4); use PRES 'MASS' for massive ones"));
     }
     Ok(vec![Value::Chpo(Rc::new(out))])
 }
@@ -405,7 +426,7 @@ fn mass(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let (model, fields, _) = model_args(a)?;
     let lumped = a.keyword(&["LUMP", "DIAG"]).is_some();
     let mut rig = Rigidite::new(Subtype::Masse);
-    for zone in &model.zones {
+    for zone in model.zones.iter().filter(|z| z.formulation != super::pres_model::FORMULATION) {
         let (form, mode) = (formulation(zone), zone_mode(zone)?);
         let mat = material_for(zone, &fields);
         for part in &zone.mesh.parts {
