@@ -94,8 +94,7 @@ fn points(mode: Mode, g: &Geom, width: f64) -> Result<Vec<Point>, FemError> {
 
 fn points_on(mode: Mode, g: &Geom, width: f64, rule: Vec<QPoint>) -> Result<Vec<Point>, FemError> {
     let axis = mode == Mode::Axis;
-    rule
-        .into_iter()
+    rule.into_iter()
         .map(|(p, wq)| {
             let xi = p[0];
             let r = radius(g, xi);
@@ -156,7 +155,8 @@ fn hermite(l: f64, xi: f64) -> ([f64; 4], [f64; 4], [f64; 4]) {
         0.75 * (1.0 - xi * xi) * j,
         l / 8.0 * (3.0 * xi * xi + 2.0 * xi - 1.0) * j,
     ];
-    let d2h = [1.5 * xi * j * j, l / 8.0 * (6.0 * xi - 2.0) * j * j, -1.5 * xi * j * j, l / 8.0 * (6.0 * xi + 2.0) * j * j];
+    let d2h =
+        [1.5 * xi * j * j, l / 8.0 * (6.0 * xi - 2.0) * j * j, -1.5 * xi * j * j, l / 8.0 * (6.0 * xi + 2.0) * j * j];
     (h, dh, d2h)
 }
 
@@ -334,7 +334,8 @@ pub fn mass(mode: Mode, x: &[[f64; 3]], m: &Material, lumped: bool) -> Result<El
         return Ok(ElemMatrix { dofs, k });
     }
     // The mass integrand r·(cubic)² is of degree 7: 4 Gauss points.
-    let pts = [(-0.861_136_311_594_052_6, 0.347_854_845_137_453_9), (-0.339_981_043_584_856_3, 0.652_145_154_862_546_1)];
+    let pts =
+        [(-0.861_136_311_594_052_6, 0.347_854_845_137_453_9), (-0.339_981_043_584_856_3, 0.652_145_154_862_546_1)];
     let l = g.len;
     for (xi, wq) in pts.iter().flat_map(|&(a, w)| [(a, w), (-a, w)]) {
         let r = 0.5 * (1.0 - xi) * g.x[0][0] + 0.5 * (1.0 + xi) * g.x[1][0];

@@ -9,9 +9,9 @@ pub mod bar;
 pub mod beam;
 pub mod colour;
 pub mod constitutive;
-pub mod coq2;
 pub mod contact;
 pub mod contact_weak;
+pub mod coq2;
 pub mod element;
 pub mod integrate;
 pub mod loads;
@@ -30,6 +30,8 @@ pub mod vec3;
 mod test_support;
 #[cfg(test)]
 mod tests_beam;
+#[cfg(test)]
+mod tests_coq2;
 #[cfg(test)]
 mod tests_integrate;
 #[cfg(test)]

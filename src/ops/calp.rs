@@ -35,7 +35,8 @@ fn calp(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         .enumerate()
         .find(|(_, f)| f.subtype == "CONTRAINTES" || f.subtype == "DEFORMATIONS")
         .ok_or_else(|| a.missing("MCHAML of stresses or strains (SIGM, EPSI)"))?;
-    let others: Vec<Rc<Mchaml>> = fields.iter().enumerate().filter(|(i, _)| *i != pos).map(|(_, f)| f.clone()).collect();
+    let others: Vec<Rc<Mchaml>> =
+        fields.iter().enumerate().filter(|(i, _)| *i != pos).map(|(_, f)| f.clone()).collect();
     let mut out = Mchaml { subtype: field.subtype.clone(), zones: vec![] };
     for z in &field.zones {
         let mz = zone_of(&model, z).ok_or_else(|| a.err("the field does not belong to this model"))?;

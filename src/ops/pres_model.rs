@@ -71,7 +71,17 @@ pub(crate) fn field(a: &mut Args, model: &Model) -> Result<Vec<Value>> {
         mz.at_nodes = true;
         for part in &z.mesh.parts {
             for nodes in part.elems() {
-                let vals = nodes.iter().map(|n| vec![p.unwrap_or_else(|| chpo.as_ref().and_then(|c| c.get(*n, "P")).or_else(|| chpo.as_ref().and_then(|c| c.get(*n, "PRES"))).unwrap_or(0.0))]).collect();
+                let vals = nodes
+                    .iter()
+                    .map(|n| {
+                        vec![p.unwrap_or_else(|| {
+                            chpo.as_ref()
+                                .and_then(|c| c.get(*n, "P"))
+                                .or_else(|| chpo.as_ref().and_then(|c| c.get(*n, "PRES")))
+                                .unwrap_or(0.0)
+                        })]
+                    })
+                    .collect();
                 mz.values.push(vals);
             }
         }
@@ -89,7 +99,8 @@ pub(crate) fn forces(it: &Interp, a: &Args, model: &Model, fields: &[Rc<Mchaml>]
     let mut out = Chpoint::new(Nature::Discret);
     for z in &pres.zones {
         let c = z.comps.iter().position(|c| c == "PRES").unwrap_or(0);
-        let mz = super::post::zone_of(model, z).ok_or_else(|| a.err("the pressure field does not belong to this model"))?;
+        let mz =
+            super::post::zone_of(model, z).ok_or_else(|| a.err("the pressure field does not belong to this model"))?;
         let mode = zone_mode(mz)?;
         let width = material_for(mz, fields).dim3.unwrap_or(1.0);
         let names: [&str; 2] = if mode == crate::fem::element::Mode::Axis { ["FR", "FZ"] } else { ["FX", "FY"] };
@@ -102,8 +113,10 @@ pub(crate) fn forces(it: &Interp, a: &Args, model: &Model, fields: &[Rc<Mchaml>]
                 )));
             }
             for nodes in part.elems() {
-                let v = z.values.get(e).ok_or_else(|| a.err(format!("the field has no values on element {}", e + 1)))?;
-                let at = |k: usize| v.get(if z.at_nodes { k } else { 0 }).and_then(|r| r.get(c)).copied().unwrap_or(0.0);
+                let v =
+                    z.values.get(e).ok_or_else(|| a.err(format!("the field has no values on element {}", e + 1)))?;
+                let at =
+                    |k: usize| v.get(if z.at_nodes { k } else { 0 }).and_then(|r| r.get(c)).copied().unwrap_or(0.0);
                 let x: Vec<[f64; 3]> = nodes.iter().map(|n| it.nodes.get(*n)).collect();
                 let f = coq2::pressure_load(mode, &x, [at(0), at(1)], width, mz.element == "COQ2")
                     .map_err(|err| a.err(format!("element {}: {}", e + 1, err)))?;
