@@ -225,12 +225,11 @@ pub fn stiffness(mode: Mode, x: &[[f64; 3]], m: &Material) -> Result<ElemMatrix,
     for p in points_on(mode, &g, sec.width, seg(STIFF))? {
         for i in 0..6 {
             for j in 0..6 {
-                let mut v = 0.0;
-                for a in 0..4 {
-                    for b in 0..4 {
-                        v += p.b[a][i] * d[a][b] * p.b[b][j];
-                    }
-                }
+                let v: f64 = d
+                    .iter()
+                    .enumerate()
+                    .map(|(a, row)| (0..4).map(|b| p.b[a][i] * row[b] * p.b[b][j]).sum::<f64>())
+                    .sum();
                 k[i * 6 + j] += p.w * v;
             }
         }

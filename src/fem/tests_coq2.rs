@@ -62,10 +62,8 @@ fn thin_cylinder_under_internal_pressure() {
         }
     }
     // Hold UZ of the first node: zero the row and column, unit diagonal.
-    for i in 0..nd {
-        k[1][i] = 0.0;
-        k[i][1] = 0.0;
-    }
+    k[1].iter_mut().for_each(|v| *v = 0.0);
+    k.iter_mut().for_each(|row| row[1] = 0.0);
     k[1][1] = 1.0;
     f[1] = 0.0;
     let u = dense_solve(&mut k, &mut f);
