@@ -13,7 +13,7 @@ use crate::value::{Evolution, Mchaml, Model, Rigidite, Value};
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
-    OpDef { name: "MODE", signature: "MODE GEO 'MECANIQUE' ('ELASTIQUE' ('ISOTROPE')) (BARR|POUT|TIMO|Q4RI|COQ3|DKT|COQ4|…) | MODE CONTACT_MESH 'CONTACT' ('UNILATERAL')", doc: "A model: a mesh tied to a formulation, a behaviour and an element type (COQ3, DKT on TRI3 and COQ4 on QUA4 are thin shells, in TRID). 'CONTACT' on the elements of IMPO 'MAIL' makes a contact model for PASAPAS.", example: "mo = mode l mecanique elastique pout ;", f: mode },
+    OpDef { name: "MODE", signature: "MODE GEO 'MECANIQUE' ('ELASTIQUE' ('ISOTROPE')) (BARR|POUT|TIMO|Q4RI|COQ2|COQ3|DKT|COQ4|…) | MODE GEO 'CHARGEMENT' 'PRESSION' (COQ2) | MODE CONTACT_MESH 'CONTACT' ('UNILATERAL')", doc: "A model: a mesh tied to a formulation, a behaviour and an element type (COQ3, DKT on TRI3 and COQ4 on QUA4 are thin shells, in TRID; COQ2 on SEG2 the thin shell of AXIS and the plane modes). MODE GEO 'CHARGEMENT' 'PRESSION' makes a pressure model for PRES and BSIG. 'CONTACT' on the elements of IMPO 'MAIL' makes a contact model for PASAPAS.", example: "mo = mode l mecanique elastique pout ;", f: mode },
     OpDef { name: "MATE", signature: "MATE MMODEL 'YOUN' E 'NU' nu ('RHO' r) ('ALPH' a ('TREF' t)) (SECT INRY INRZ TORS SECY SECZ EPAI DIM3 …); a value may be an EVOLUTIO of a parameter | MATE MMODEL_CONTACT ('JEU' j|MCHAML) ('ADHE' a|MCHAML)", doc: "Material (and section) data of a model. A property given as an EVOLUTIO depends on the parameter its abscissa names (VARI 'NUAG' evaluates it against a field). For a contact model, the distance the bodies keep ('JEU') and the tension the contact holds before it opens ('ADHE', per unit length or area).", example: "ma = mate mo youn 2.e11 nu 0.3 ;", f: mate },
     OpDef { name: "CARA", signature: "CARA MMODEL ('SECT' s) ('INRY' i) ('INRZ' i) ('TORS' j) ('SECY' a) ('SECZ' a) ('EPAI' e) ('DIM3' e) ('VECT' P)", doc: "Geometric characteristics of a model (merge with MATE using ET).", example: "ca = cara mo sect 1. inrz 1. ;", f: cara },
     OpDef { name: "RIGI", signature: "RIGI MMODEL MCHAML (MCHAML) | RIGI ('DEPL') ('ROTA') (comps) VALUE GEO", doc: "Stiffness of a model, or springs to ground.", example: "k = rigi mo ma ;", f: rigi },
@@ -62,7 +62,7 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             behaviour.push(w);
         } else {
             return Err(a.err(format!(
-                "{} is not supported (elastic isotropic BARR, POUT, TIMO, COQ3, DKT, COQ4 and massive elements are)",
+                "{} is not supported (elastic isotropic BARR, POUT, TIMO, COQ2, COQ3, DKT, COQ4 and massive elements are)",
                 w
             )));
         }
