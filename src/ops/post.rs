@@ -304,13 +304,16 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 fn pres(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    if let Some(m) = a.opt::<Rc<Model>>() {
-        if super::pres_model::is_pressure_model(&m) {
-            return super::pres_model::field(a, &m);
+    let kw = a.keyword(&["MASS", "COQU"]);
+    if kw.is_none() {
+        if let Some(m) = a.opt::<Rc<Model>>() {
+            if super::pres_model::is_pressure_model(&m) {
+                return super::pres_model::field(a, &m);
+            }
         }
-        return Err(a.err("PRES on a model needs a pressure model (MODE geo 'CHARGEMENT' 'PRESSION'); else write PRES 'MASS' or 'COQU'"));
+        a.req_keyword(&["MASS", "COQU"])?;
     }
-    if a.req_keyword(&["MASS", "COQU"])? == "COQU" {
+    if kw == Some("COQU") {
         return pres_shell(it, a);
     }
     let model = a.req::<Rc<Model>>()?;
