@@ -28,7 +28,6 @@ const OTHER: &str = "`gibi --list-operators` lists what gibi implements";
 pub(crate) const HINTS: &[(&str, &str)] = &[
     ("ACQU", "read data with LIRE"),
     ("AMOR", STATICS),
-    ("CALP", "SIGM gives the beam resultants EFFX … MOMZ"),
     ("CAPA", STATICS),
     ("COND", STATICS),
     ("DYNAMIC", STATICS),

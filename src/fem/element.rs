@@ -14,7 +14,7 @@
 //!   is per unit thickness.
 
 use super::mesh::ElemType;
-use super::{bar, beam, shell, solid};
+use super::{bar, beam, coq2, shell, solid};
 use thiserror::Error;
 
 pub use super::material::Material;
@@ -54,6 +54,9 @@ pub enum Formulation {
     Coq3,
     Dkt,
     Coq4,
+    /// Thin conical (AXIS) or cylindrical (plane modes) shell on SEG2
+    /// (see [`coq2`]).
+    Coq2,
 }
 
 impl Formulation {
@@ -68,12 +71,13 @@ impl Formulation {
             Formulation::Coq3 => "COQ3",
             Formulation::Dkt => "DKT",
             Formulation::Coq4 => "COQ4",
+            Formulation::Coq2 => "COQ2",
         }
     }
 
-    /// COQ3, DKT or COQ4.
+    /// COQ3, DKT, COQ4 or COQ2.
     pub fn is_shell(self) -> bool {
-        matches!(self, Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4)
+        matches!(self, Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 | Formulation::Coq2)
     }
 }
 
@@ -129,6 +133,7 @@ pub fn node_dofs(f: Formulation, mode: Mode) -> Result<&'static [&'static str], 
         Formulation::Pout | Formulation::Timo => beam::dofs(mode),
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => Ok(solid::dofs(mode)),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::dofs(f, mode),
+        Formulation::Coq2 => coq2::dofs(mode),
     }
 }
 
@@ -136,6 +141,7 @@ pub fn node_dofs(f: Formulation, mode: Mode) -> Result<&'static [&'static str], 
 pub fn node_duals(f: Formulation, mode: Mode) -> Result<&'static [&'static str], FemError> {
     let d = node_dofs(f, mode)?;
     Ok(match d.len() {
+        _ if d[0] == "UR" && d.len() == 3 => &["FR", "FZ", "MT"],
         _ if d[0] == "UR" => &["FR", "FZ"],
         2 => &["FX", "FY"],
         3 if d[2] == "RZ" => &["FX", "FY", "MZ"],
@@ -154,6 +160,7 @@ pub fn dual_of(dof: &str) -> Option<&'static str> {
         "RX" => "MX",
         "RY" => "MY",
         "RZ" => "MZ",
+        "RT" => "MT",
         _ => return None,
     })
 }
@@ -161,7 +168,7 @@ pub fn dual_of(dof: &str) -> Option<&'static str> {
 /// Pairs the element library does not produce: multipliers, thermal and
 /// Fourier unknowns.
 pub const OTHER_DUALS: &[(&str, &str)] =
-    &[("UT", "FT"), ("RT", "MT"), ("LX", "FLX"), ("T", "Q"), ("TH", "QH"), ("P", "FP"), ("PI", "FPI")];
+    &[("UT", "FT"), ("LX", "FLX"), ("T", "Q"), ("TH", "QH"), ("P", "FP"), ("PI", "FPI")];
 
 /// The dual (force) name of any unknown: the element pairs of [`dual_of`],
 /// the other known pairs, else `F` before the name.
@@ -180,6 +187,7 @@ fn check(f: Formulation, ty: ElemType, mode: Mode) -> Result<(), FemError> {
         Formulation::Q8ri => ty == ElemType::Qua8,
         Formulation::Solid => ty.dim() >= 2,
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => ty == shell::geometry(f),
+        Formulation::Coq2 => ty == ElemType::Seg2,
     };
     if ok {
         Ok(())
@@ -202,6 +210,7 @@ pub fn stiffness(
         Formulation::Timo => beam::stiffness(true, mode, x, m),
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::stiffness(f, ty, mode, x, m),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::stiffness(f, mode, x, m),
+        Formulation::Coq2 => coq2::stiffness(mode, x, m),
     }
 }
 
@@ -221,6 +230,7 @@ pub fn mass(
         Formulation::Timo => beam::mass(true, mode, x, m, lumped),
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::mass(ty, mode, x, m, lumped),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::mass(f, mode, x, m, lumped),
+        Formulation::Coq2 => coq2::mass(mode, x, m, lumped),
     }
 }
 
@@ -241,6 +251,7 @@ pub fn stress(
         Formulation::Timo => beam::stress(true, mode, x, m, u),
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::field(f, ty, mode, x, m, u, true),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::stress(f, mode, x, m, u),
+        Formulation::Coq2 => coq2::stress(mode, x, m, u),
     }
 }
 
@@ -279,6 +290,7 @@ pub fn strain(
         Formulation::Timo => beam::strain(true, mode, x, m, u),
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::field(f, ty, mode, x, m, u, false),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::strain(f, mode, x, u),
+        Formulation::Coq2 => coq2::strain(mode, x, u),
     }
 }
 
@@ -299,6 +311,7 @@ pub fn internal_forces(
         Formulation::Pout | Formulation::Timo => beam::internal_forces(f == Formulation::Timo, mode, x, m, sig),
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::internal_forces(f, ty, mode, x, m, sig),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::internal_forces(f, mode, x, sig),
+        Formulation::Coq2 => coq2::internal_forces(mode, x, m, sig),
     }
 }
 
@@ -312,6 +325,7 @@ pub fn gauss_points(f: Formulation, ty: ElemType) -> Vec<([f64; 3], f64)> {
         }
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::rule(f, ty),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::rule(ty),
+        Formulation::Coq2 => coq2::rule(),
     }
 }
 

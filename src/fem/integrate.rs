@@ -83,6 +83,7 @@ pub fn point_weights(
         Formulation::Barr | Formulation::Pout | Formulation::Timo => line_weights(x),
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::point_weights(f, ty, mode, x, m),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => super::shell::point_weights(f, x),
+        Formulation::Coq2 => super::coq2::point_weights(mode, x),
     }
 }
 
@@ -99,6 +100,7 @@ pub fn node_weights(
         Formulation::Barr | Formulation::Pout | Formulation::Timo => line_weights(x),
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::node_weights(ty, mode, x, m),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => super::shell::node_weights(f, x),
+        Formulation::Coq2 => super::coq2::node_weights(mode, x),
     }
 }
 

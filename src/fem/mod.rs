@@ -11,6 +11,7 @@ pub mod colour;
 pub mod constitutive;
 pub mod contact;
 pub mod contact_weak;
+pub mod coq2;
 pub mod element;
 pub mod integrate;
 pub mod loads;
@@ -20,6 +21,7 @@ pub mod principal;
 pub mod quadrature;
 pub mod shape;
 pub mod shell;
+pub mod skin;
 pub mod solid;
 pub mod stress;
 pub mod vec3;
@@ -28,6 +30,8 @@ pub mod vec3;
 mod test_support;
 #[cfg(test)]
 mod tests_beam;
+#[cfg(test)]
+mod tests_coq2;
 #[cfg(test)]
 mod tests_integrate;
 #[cfg(test)]

@@ -228,6 +228,9 @@ fn bsig(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     while let Some(f) = a.opt::<Rc<Mchaml>>() {
         fields.push(f);
     }
+    if super::pres_model::is_pressure_model(&model) {
+        return super::pres_model::forces(it, a, &model, &fields);
+    }
     let sig = fields
         .iter()
         .find(|f| f.zones.iter().any(|z| !z.values.is_empty()))

@@ -5,6 +5,7 @@
 mod arith;
 mod assemble;
 mod bc;
+mod calp;
 #[cfg(test)]
 mod catalogue_tests;
 mod chan_cham;
@@ -54,6 +55,7 @@ mod pasapas_model;
 mod pointwise;
 mod post;
 mod pres_field;
+mod pres_model;
 mod principal;
 mod products;
 mod reso;
@@ -111,6 +113,7 @@ impl Registry {
             bc::OPS,
             symmetry::OPS,
             special::OPS,
+            calp::OPS,
             contact::OPS,
             chargement::OPS,
             model::OPS,

@@ -13,7 +13,7 @@ use crate::value::{Evolution, Mchaml, Model, Rigidite, Value};
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
-    OpDef { name: "MODE", signature: "MODE GEO 'MECANIQUE' ('ELASTIQUE' ('ISOTROPE')) (BARR|POUT|TIMO|Q4RI|COQ3|DKT|COQ4|…) | MODE CONTACT_MESH 'CONTACT' ('UNILATERAL')", doc: "A model: a mesh tied to a formulation, a behaviour and an element type (COQ3, DKT on TRI3 and COQ4 on QUA4 are thin shells, in TRID). 'CONTACT' on the elements of IMPO 'MAIL' makes a contact model for PASAPAS.", example: "mo = mode l mecanique elastique pout ;", f: mode },
+    OpDef { name: "MODE", signature: "MODE GEO 'MECANIQUE' ('ELASTIQUE' ('ISOTROPE')) (BARR|POUT|TIMO|Q4RI|COQ2|COQ3|DKT|COQ4|…) | MODE GEO 'CHARGEMENT' 'PRESSION' (COQ2) | MODE CONTACT_MESH 'CONTACT' ('UNILATERAL')", doc: "A model: a mesh tied to a formulation, a behaviour and an element type (COQ3, DKT on TRI3 and COQ4 on QUA4 are thin shells, in TRID; COQ2 on SEG2 the thin shell of AXIS and the plane modes). MODE GEO 'CHARGEMENT' 'PRESSION' makes a pressure model for PRES and BSIG. 'CONTACT' on the elements of IMPO 'MAIL' makes a contact model for PASAPAS.", example: "mo = mode l mecanique elastique pout ;", f: mode },
     OpDef { name: "MATE", signature: "MATE MMODEL 'YOUN' E 'NU' nu ('RHO' r) ('ALPH' a ('TREF' t)) (SECT INRY INRZ TORS SECY SECZ EPAI DIM3 …); a value may be an EVOLUTIO of a parameter | MATE MMODEL_CONTACT ('JEU' j|MCHAML) ('ADHE' a|MCHAML)", doc: "Material (and section) data of a model. A property given as an EVOLUTIO depends on the parameter its abscissa names (VARI 'NUAG' evaluates it against a field). For a contact model, the distance the bodies keep ('JEU') and the tension the contact holds before it opens ('ADHE', per unit length or area).", example: "ma = mate mo youn 2.e11 nu 0.3 ;", f: mate },
     OpDef { name: "CARA", signature: "CARA MMODEL ('SECT' s) ('INRY' i) ('INRZ' i) ('TORS' j) ('SECY' a) ('SECZ' a) ('EPAI' e) ('DIM3' e) ('VECT' P)", doc: "Geometric characteristics of a model (merge with MATE using ET).", example: "ca = cara mo sect 1. inrz 1. ;", f: cara },
     OpDef { name: "RIGI", signature: "RIGI MMODEL MCHAML (MCHAML) | RIGI ('DEPL') ('ROTA') (comps) VALUE GEO", doc: "Stiffness of a model, or springs to ground.", example: "k = rigi mo ma ;", f: rigi },
@@ -21,7 +21,7 @@ pub(crate) const OPS: &[OpDef] = &[
 ];
 
 const FORMS: &[&str] = &[
-    "BARR", "POUT", "TIMO", "Q4RI", "Q8RI", "COQ3", "DKT", "COQ4", "TRI3", "TRI6", "QUA4", "QUA8", "CUB8", "TET4",
+    "BARR", "POUT", "TIMO", "Q4RI", "Q8RI", "COQ3", "DKT", "COQ4", "COQ2", "TRI3", "TRI6", "QUA4", "QUA8", "CUB8", "TET4",
     "PRI6", "SEG2",
 ];
 
@@ -37,6 +37,9 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     };
     if formulation.starts_with("CONT") {
         return contact_model(it, a, &geo);
+    }
+    if formulation.starts_with("CHAR") {
+        return super::pres_model::model(it, a, &geo);
     }
     if !formulation.starts_with("MECA") {
         return Err(a.err(format!("only the MECANIQUE formulation is available, not {}", formulation)));
@@ -59,7 +62,7 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             behaviour.push(w);
         } else {
             return Err(a.err(format!(
-                "{} is not supported (elastic isotropic BARR, POUT, TIMO, COQ3, DKT, COQ4 and massive elements are)",
+                "{} is not supported (elastic isotropic BARR, POUT, TIMO, COQ2, COQ3, DKT, COQ4 and massive elements are)",
                 w
             )));
         }
@@ -75,13 +78,19 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                     ty.name(),
                     p.ty.name()
                 ))
-                .note(if ty == ElemType::Tri3 {
+                .note(if ty == ElemType::Seg2 {
+                    "COQ2 is the axisymmetric (AXIS) or plane shell on lines: mesh a line with OPTI ELEM SEG2"
+                } else if ty == ElemType::Tri3 {
                     "mesh the surface with triangles (OPTI ELEM TRI3, or CHAN 'TRI3'), or use COQ4 on QUA4"
                 } else {
                     "mesh the surface with quadrangles (OPTI ELEM QUA4), or use COQ3/DKT on TRI3"
                 }));
         }
-        if mode != "TRID" {
+        if ty == ElemType::Seg2 {
+            if mode == "TRID" {
+                return Err(a.err("COQ2 shells need OPTI DIME 2 and mode AXIS, PLAN CONT or PLAN DEFO, not TRID"));
+            }
+        } else if mode != "TRID" {
             return Err(a.err(format!("{} shells need OPTI DIME 3 MODE TRID, not mode {}", element, mode)));
         }
     }
@@ -265,6 +274,7 @@ fn shell_geometry(element: &str) -> Option<ElemType> {
     match element {
         "COQ3" | "DKT" => Some(ElemType::Tri3),
         "COQ4" => Some(ElemType::Qua4),
+        "COQ2" => Some(ElemType::Seg2),
         _ => None,
     }
 }
@@ -274,6 +284,7 @@ pub(crate) fn formulation(zone: &ModelZone) -> Formulation {
         "COQ3" => Formulation::Coq3,
         "DKT" => Formulation::Dkt,
         "COQ4" => Formulation::Coq4,
+        "COQ2" => Formulation::Coq2,
         "BARR" => Formulation::Barr,
         "POUT" => Formulation::Pout,
         "TIMO" => Formulation::Timo,
@@ -306,7 +317,7 @@ fn rigi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         fields.push(f);
     }
     let mut rig = Rigidite::new(Subtype::Rigidite);
-    for zone in &model.zones {
+    for zone in model.zones.iter().filter(|z| z.formulation != super::pres_model::FORMULATION) {
         let form = formulation(zone);
         let mode = zone_mode(zone)?;
         let mat = material_for(zone, &fields);

@@ -18,7 +18,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "GRAD", signature: "GRAD MMODEL CHPOINT (MCHAML)", doc: "Gradient of the displacements of a massive model at its stress points (UX,X UX,Y UY,X UY,Y …; UR,R UR,Z UZ,R UZ,Z UT,T in AXIS).", example: "g = grad mo u ;", f: grad },
     OpDef { name: "VMIS", signature: "VMIS MMODEL MCHAML_STRESS (MCHAML)", doc: "Von Mises equivalent stress (the beam formula for bars and beams).", example: "vm = vmis mo sig ma ;", f: vmis },
     OpDef { name: "CHAN", signature: "CHAN 'POI1'|QUA8|TRI6|SEG3|QUA4|TRI3|SEG2 GEO | CHAN 'CHPO'|'NOEUD'|'GRAVITE' MMODEL MCHAML | CHAN 'INCO' RIGIDITE LISTMOTS LISTMOTS | CHAN 'ATTRIBUT' CHPOINT 'NATURE' word | CHAN 'CHAM' CHPOINT GEO|MMODEL ('NOEUD'|'GRAVITE'|'RIGIDITE'|'MASSE'|'STRESSES') (subtype) | CHAN 'TYPE' MCHAML word | CHAN 'MAJU'|'MINU' MOT", doc: "Change the type or attributes of an object.", example: "pts = chan 'POI1' l ;", f: chan },
-    OpDef { name: "PRES", signature: "PRES 'MASS' MMODEL (MCHAML) VALUE GEO | PRES 'COQU' MMODEL VALUE ('NORM')", doc: "Nodal forces equivalent to a pressure on edges/faces of a massive model (positive towards the solid; in plane stress for the DIM3 thickness of the characteristics MCHAML when given, else per unit thickness), or on every element of a shell model (positive along the element normal).", example: "f = pres 'MASS' mo 10. haut ;", f: pres },
+    OpDef { name: "PRES", signature: "PRES 'MASS' MMODEL (MCHAML) VALUE GEO | PRES 'COQU' MMODEL VALUE ('NORM') | PRES MMODEL_PRESSION 'PRES' VALUE|CHPOINT", doc: "Of a pressure model (MODE … 'CHARGEMENT' 'PRESSION'): the pressure at the element nodes, an MCHAML for BSIG (positive along the left normal of each oriented line). Otherwise: Nodal forces equivalent to a pressure on edges/faces of a massive model (positive towards the solid; in plane stress for the DIM3 thickness of the characteristics MCHAML when given, else per unit thickness), or on every element of a shell model (positive along the element normal).", example: "f = pres 'MASS' mo 10. haut ;", f: pres },
     OpDef { name: "MASS", signature: "MASS MMODEL MCHAML (MCHAML) ('LUMP')", doc: "Mass matrix (consistent, or lumped with 'LUMP').", example: "m = mass mo ma ;", f: mass },
 ];
 
@@ -59,7 +59,7 @@ fn gauss_field(it: &Interp, a: &mut Args, subtype: &str, f: PointFn) -> Result<V
     let u = u.ok_or_else(|| a.missing("CHPOINT (the displacements)"))?;
     let mut out = Mchaml { subtype: subtype.into(), zones: vec![] };
     let have = u.components();
-    for zone in &model.zones {
+    for zone in model.zones.iter().filter(|z| z.formulation != super::pres_model::FORMULATION) {
         let form = formulation(zone);
         let mode = zone_mode(zone)?;
         let mat = material_for(zone, &fields);
@@ -353,7 +353,16 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 fn pres(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    if a.req_keyword(&["MASS", "COQU"])? == "COQU" {
+    let kw = a.keyword(&["MASS", "COQU"]);
+    if kw.is_none() {
+        if let Some(m) = a.opt::<Rc<Model>>() {
+            if super::pres_model::is_pressure_model(&m) {
+                return super::pres_model::field(a, &m);
+            }
+        }
+        a.req_keyword(&["MASS", "COQU"])?;
+    }
+    if kw == Some("COQU") {
         return pres_shell(it, a);
     }
     let model = a.req::<Rc<Model>>()?;
@@ -423,6 +432,19 @@ fn pres_shell(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         for part in &zone.mesh.parts {
             for (e, nodes) in part.elems().enumerate() {
                 let x: Vec<[f64; 3]> = nodes.iter().map(|n| it.nodes.get(*n)).collect();
+                if form == crate::fem::element::Formulation::Coq2 {
+                    // Along the left normal of the line, for the whole ring in AXIS.
+                    let mode = zone_mode(zone)?;
+                    let f = crate::fem::coq2::pressure_load(mode, &x, [p, p], 1.0, true)
+                        .map_err(|err| a.err(format!("element {}: {}", e + 1, err)))?;
+                    let names = if mode == crate::fem::element::Mode::Axis { ["FR", "FZ"] } else { ["FX", "FY"] };
+                    for (k, n) in nodes.iter().enumerate() {
+                        for (d, c) in names.iter().enumerate() {
+                            out.add(*n, c, f[3 * k + d], true);
+                        }
+                    }
+                    continue;
+                }
                 let f = crate::fem::shell::pressure_load(form, &x, p)
                     .map_err(|err| a.err(format!("element {}: {}", e + 1, err)))?;
                 for (n, v) in nodes.iter().zip(f) {
@@ -434,7 +456,7 @@ fn pres_shell(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         }
     }
     if !any {
-        return Err(a.err("PRES 'COQU' needs a shell model (COQ3, DKT, COQ4); use PRES 'MASS' for massive ones"));
+        return Err(a.err("PRES 'COQU' needs a shell model (COQ2, COQ3, DKT, COQ4); use PRES 'MASS' for massive ones"));
     }
     Ok(vec![Value::Chpo(Rc::new(out))])
 }
@@ -465,7 +487,7 @@ fn mass(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let (model, fields, _) = model_args(a)?;
     let lumped = a.keyword(&["LUMP", "DIAG"]).is_some();
     let mut rig = Rigidite::new(Subtype::Masse);
-    for zone in &model.zones {
+    for zone in model.zones.iter().filter(|z| z.formulation != super::pres_model::FORMULATION) {
         let (form, mode) = (formulation(zone), zone_mode(zone)?);
         let mat = material_for(zone, &fields);
         for part in &zone.mesh.parts {
