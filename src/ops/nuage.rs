@@ -61,7 +61,8 @@ fn nuag(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 break;
             }
         }
-        'tuples: loop {
+        // No NAME*TYPE read: no tuple to read either (an empty loop would spin).
+        'tuples: while !types.is_empty() {
             for (k, ty) in types.iter().enumerate() {
                 let v = match a.right_any() {
                     Some(v) => v,
