@@ -5,6 +5,7 @@
 mod arith;
 mod assemble;
 mod bc;
+mod born;
 mod calp;
 #[cfg(test)]
 mod catalogue_tests;
@@ -121,6 +122,7 @@ impl Registry {
             fields::OPS,
             products::OPS,
             masq::OPS,
+            born::OPS,
             restrict::OPS,
             reso::OPS,
             post::OPS,

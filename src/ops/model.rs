@@ -310,7 +310,7 @@ fn fem_err(e: element::FemError) -> Error {
 
 fn rigi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let Some(model) = a.opt::<Rc<Model>>() else {
-        return springs(it, a);
+        return springs(it, a, Subtype::Rigidite);
     };
     let mut fields = Vec::new();
     while let Some(f) = a.opt::<Rc<Mchaml>>() {
@@ -379,7 +379,9 @@ pub(crate) fn stiffness_block(
 }
 
 /// Springs to ground: RIGI/APPU (DEPL) (ROTA) (comps) (DIRECTION v) k GEO.
-fn springs(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+/// Springs (RIGI) or point masses (MASS) on the nodes of a geometry: the
+/// two forms read the same arguments and differ only by the subtype.
+pub(crate) fn springs(it: &mut Interp, a: &mut Args, subtype: Subtype) -> Result<Vec<Value>> {
     let mut comps: Vec<String> = Vec::new();
     let mut dir: Option<[f64; 3]> = None;
     let mut k: Option<f64> = None;
@@ -411,7 +413,7 @@ fn springs(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         Some(g) => g,
         None => req_geo(a)?,
     };
-    let mut rig = Rigidite::new(Subtype::Rigidite);
+    let mut rig = Rigidite::new(subtype);
     let nodes = geo.node_list();
     if let Some(v) = dir {
         let t = dofs::translations(it);
@@ -455,5 +457,5 @@ fn springs(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 fn appu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    springs(it, a)
+    springs(it, a, Subtype::Rigidite)
 }

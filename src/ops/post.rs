@@ -19,7 +19,8 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "VMIS", signature: "VMIS MMODEL MCHAML_STRESS (MCHAML)", doc: "Von Mises equivalent stress (the beam formula for bars and beams).", example: "vm = vmis mo sig ma ;", f: vmis },
     OpDef { name: "CHAN", signature: "CHAN 'POI1'|QUA8|TRI6|SEG3|QUA4|TRI3|SEG2 GEO | CHAN 'CHPO'|'NOEUD'|'GRAVITE' MMODEL MCHAML | CHAN 'INCO' RIGIDITE LISTMOTS LISTMOTS | CHAN 'ATTRIBUT' CHPOINT 'NATURE' word | CHAN 'CHAM' CHPOINT GEO|MMODEL ('NOEUD'|'GRAVITE'|'RIGIDITE'|'MASSE'|'STRESSES') (subtype) | CHAN 'TYPE' MCHAML word | CHAN 'MAJU'|'MINU' MOT", doc: "Change the type or attributes of an object.", example: "pts = chan 'POI1' l ;", f: chan },
     OpDef { name: "PRES", signature: "PRES 'MASS' MMODEL (MCHAML) VALUE GEO | PRES 'COQU' MMODEL VALUE ('NORM') | PRES MMODEL_PRESSION 'PRES' VALUE|CHPOINT", doc: "Of a pressure model (MODE … 'CHARGEMENT' 'PRESSION'): the pressure at the element nodes, an MCHAML for BSIG (positive along the left normal of each oriented line). Otherwise: Nodal forces equivalent to a pressure on edges/faces of a massive model (positive towards the solid; in plane stress for the DIM3 thickness of the characteristics MCHAML when given, else per unit thickness), or on every element of a shell model (positive along the element normal).", example: "f = pres 'MASS' mo 10. haut ;", f: pres },
-    OpDef { name: "MASS", signature: "MASS MMODEL MCHAML (MCHAML) ('LUMP')", doc: "Mass matrix (consistent, or lumped with 'LUMP').", example: "m = mass mo ma ;", f: mass },
+    OpDef { name: "MASS", signature: "MASS MMODEL MCHAML (MCHAML) ('LUMP') | MASS ('DEPL') ('ROTA') (comps) VALUE GEO", doc: "Mass matrix (consistent, or lumped with 'LUMP'), or point masses on the given unknowns of every node of GEO.", example: "m = mass mo ma ;", f: mass },
+    OpDef { name: "LUMP", signature: "LUMP MMODEL MCHAML (MCHAML)", doc: "Lumped (diagonal) mass matrix of a model.", example: "m = lump mo ma ;", f: lump },
 ];
 
 fn fem_err(e: element::FemError) -> Error {
@@ -484,8 +485,20 @@ pub(super) fn inside_point(it: &Interp, model: &Model, face: &[usize]) -> Option
 }
 
 fn mass(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    if a.peek_right().is_some_and(|v| !matches!(v, Value::Model(_))) {
+        return super::model::springs(it, a, Subtype::Masse);
+    }
     let (model, fields, _) = model_args(a)?;
     let lumped = a.keyword(&["LUMP", "DIAG"]).is_some();
+    model_mass(it, model, fields, lumped)
+}
+
+fn lump(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let (model, fields, _) = model_args(a)?;
+    model_mass(it, model, fields, true)
+}
+
+fn model_mass(it: &Interp, model: Rc<Model>, fields: Vec<Rc<Mchaml>>, lumped: bool) -> Result<Vec<Value>> {
     let mut rig = Rigidite::new(Subtype::Masse);
     for zone in model.zones.iter().filter(|z| z.formulation != super::pres_model::FORMULATION) {
         let (form, mode) = (formulation(zone), zone_mode(zone)?);

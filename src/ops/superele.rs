@@ -16,8 +16,8 @@ use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[OpDef {
     name: "SUPE",
-    signature: "SUPER 'RIGIDITE' ('NOMU') RIGIDITE GEO|RIGIDITE|CHPOINT | SUPER 'CHARGE' SUPERELE CHPOINT | SUPER 'DEPLACEMENT' SUPERELE CHPOINT (CHPOINT)",
-    doc: "Static condensation onto master unknowns (from a mesh, the unknowns of a rigidity, or a field): condensed stiffness (EXTR SUP 'RIGI'), condensed load, expansion of master displacements.",
+    signature: "SUPER 'RIGIDITE' ('NOMU') RIGIDITE GEO|RIGIDITE|CHPOINT | SUPER 'CHARGE' SUPERELE CHPOINT | SUPER 'DEPLACEMENT' SUPERELE CHPOINT (CHPOINT) | SUPER 'MASSE' SUPERELE RIGIDITE ('LCHP')",
+    doc: "Static condensation onto master unknowns (from a mesh, the unknowns of a rigidity, or a field): condensed stiffness (EXTR SUP 'RIGI'), condensed load, expansion of master displacements, reduced mass (with 'LCHP', first the static modes as a LISTCHPO).",
     example: "sup = super 'RIGIDITE' k interface ; kc = extr sup 'RIGI' ;",
     f: supe,
 }];
@@ -87,8 +87,76 @@ fn supe(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             let sol = s.schur.expand(&load, &tail);
             Ok(vec![Value::Chpo(Rc::new(solution_field(&s.asm, &sol)))])
         }
-        _ => Err(a.err("SUPER 'MASSE' is not supported yet")),
+        _ => masse(it, a),
     }
+}
+
+/// SUPER 'MASSE': the Guyan reduced mass Tᵀ M T, T holding the static
+/// modes (the expansion of a unit value of each master with no load). With
+/// 'LCHP' the static modes come first, as a LISTCHPO.
+fn masse(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let h = req_super(a)?;
+    let s = h.as_any().downcast_ref::<SuperElem>().expect("checked");
+    let m = a.req::<Rc<Rigidite>>()?;
+    let with_modes = a.keyword(&["LCHP"]).is_some();
+    let load = assemble::load(it, &s.asm, &[]).map_err(|e| a.err(e.message))?;
+    let d = s.masters.len();
+    let modes: Vec<Rc<Chpoint>> = (0..d)
+        .map(|j| {
+            let tail: Vec<f64> = (0..d).map(|i| if i == j { 1.0 } else { 0.0 }).collect();
+            Rc::new(solution_field(&s.asm, &s.schur.expand(&load, &tail)))
+        })
+        .collect();
+    let mut mats = vec![0.0; d * d];
+    for i in 0..d {
+        for j in i..d {
+            let v = quadratic(&m, &modes[i], &modes[j]);
+            mats[i * d + j] = v;
+            mats[j * d + i] = v;
+        }
+    }
+    let mass = Value::Rigi(Rc::new(condensed(s, Subtype::Masse, mats)));
+    Ok(if with_modes { vec![Value::ListChpo(Rc::new(modes)), mass] } else { vec![mass] })
+}
+
+/// uᵀ M v over the element blocks of M (a mass carries no conditions).
+fn quadratic(m: &Rigidite, u: &Chpoint, v: &Chpoint) -> f64 {
+    let mut sum = 0.0;
+    for b in &m.blocks {
+        let nd = b.ndof();
+        for e in 0..b.n_elem() {
+            let conn = &b.conn[e * b.nodes_per_elem..(e + 1) * b.nodes_per_elem];
+            let k = b.mat(e);
+            let at = |f: &Chpoint, i: usize| f.get(conn[b.dofs[i].0], &b.dofs[i].1).unwrap_or(0.0);
+            for i in 0..nd {
+                let ui = at(u, i);
+                if ui != 0.0 {
+                    sum += ui * (0..nd).map(|j| k[i * nd + j] * at(v, j)).sum::<f64>();
+                }
+            }
+        }
+    }
+    sum
+}
+
+/// A dense matrix over the masters of a super-element, as one block.
+fn condensed(s: &SuperElem, subtype: Subtype, mats: Vec<f64>) -> Rigidite {
+    let mut nodes: Vec<usize> = Vec::new();
+    for (n, _) in &s.masters {
+        if !nodes.contains(n) {
+            nodes.push(*n);
+        }
+    }
+    let mut rig = Rigidite::new(subtype);
+    rig.blocks.push(Block {
+        nodes_per_elem: nodes.len(),
+        conn: nodes.clone(),
+        dofs: s.masters.iter().map(|(n, c)| (nodes.iter().position(|x| x == n).unwrap_or(0), c.clone())).collect(),
+        duals: s.masters.iter().map(|(_, c)| dofs::dual_of(c)).collect(),
+        mats,
+        symmetry: Symmetry::Symmetric,
+    });
+    rig
 }
 
 fn build(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
@@ -142,15 +210,6 @@ pub(crate) fn extr(a: &mut Args, v: &Value) -> Result<Vec<Value>> {
                 mats.push(m[(i, j)]);
             }
         }
-        let mut rig = Rigidite::new(Subtype::Rigidite);
-        rig.blocks.push(Block {
-            nodes_per_elem: nodes.len(),
-            conn: nodes.clone(),
-            dofs: s.masters.iter().map(|(n, c)| (nodes.iter().position(|x| x == n).unwrap_or(0), c.clone())).collect(),
-            duals: s.masters.iter().map(|(_, c)| dofs::dual_of(c)).collect(),
-            mats,
-            symmetry: Symmetry::Symmetric,
-        });
-        Ok(vec![Value::Rigi(Rc::new(rig))])
+        Ok(vec![Value::Rigi(Rc::new(condensed(s, Subtype::Rigidite, mats)))])
     }
 }
