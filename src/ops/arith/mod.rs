@@ -2,6 +2,7 @@
 //! pushed operand on their left, else read two operands on their right
 //! (`'-' 10 4`), so `1 + 2 * 3` is 9: there is no precedence.
 
+mod components;
 mod table;
 
 pub(crate) use table::apply;
@@ -120,7 +121,10 @@ fn binary(it: &mut Interp, a: &mut Args, op: Bin) -> Result<Vec<Value>> {
     if let Some(e) = arith::divides_by_zero(op, &x, &y) {
         return Err(a.err(e));
     }
-    let r = table::apply(it, a, op, &x, &y)?;
+    let r = match components::apply(a, op, &x, &y)? {
+        Some(r) => r,
+        None => table::apply(it, a, op, &x, &y)?,
+    };
     Ok(vec![arith::check(op, &x, &y, r).map_err(|e| a.err(e))?])
 }
 
