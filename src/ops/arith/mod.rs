@@ -40,7 +40,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef {
         name: "/",
         signature: "OBJ1 / OBJ2",
-        doc: "Quotient; ENTIER / ENTIER truncates.",
+        doc: "Quotient; ENTIER / ENTIER truncates. Two CHPOINT or MCHAML with three LISTMOTS: component LMOTS3(i) is LMOTS1(i) of the first over LMOTS2(i) of the second (same for + - *).",
         example: "x = 7 / 2 ;",
         f: divide,
     },
