@@ -210,7 +210,7 @@ fn nomc(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 /// NOMC's `'NATU' 'INDETER'|'DIFFUS'|'DISCRET'`, if written.
-fn nature_word(a: &mut Args) -> Result<Option<Nature>> {
+pub(crate) fn nature_word(a: &mut Args) -> Result<Option<Nature>> {
     if a.keyword(&["NATU"]).is_none() {
         return Ok(None);
     }
@@ -312,6 +312,9 @@ pub(crate) fn extremum(a: &mut Args, max: bool, use_abs: bool) -> Result<Option<
             for p in z.values.iter().flatten() {
                 out.extend(p.iter().zip(&keep).filter(|(_, k)| **k).map(|(v, _)| if use_abs { v.abs() } else { *v }));
             }
+            // Material data (MATE) are constants of the zone: values too.
+            let kept = |c: &String| filter.as_ref().is_none_or(|(avec, l)| l.iter().any(|x| x == c) == *avec);
+            out.extend(z.constants.iter().filter(|(c, _)| kept(c)).map(|(_, v)| if use_abs { v.abs() } else { *v }));
         }
         out
     } else {

@@ -24,7 +24,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "MOIN", signature: "OBJ MOIN VECTOR", doc: "A copy translated by minus the vector.", example: "l2 = l moin (0. 1.) ;", f: moin },
     OpDef { name: "SYME", signature: "POINT|MAILLAGE SYME ('DROIT' P1 P2 | 'PLAN' P1 P2 P3 | 'POINT' P)", doc: "Mirror image on new nodes: about a line (2D; in 3D the half-turn about it), a plane (3D) or a point. Surfaces and volumes keep their orientation.", example: "s2 = s1 syme 'DROIT' p1 p2 ;", f: syme },
     OpDef { name: "TOUR", signature: "POINT|MAILLAGE TOUR angle P1 (P2)", doc: "A copy on new nodes turned by angle degrees about P1 (2D) or about the axis P1 P2 (3D).", example: "s2 = s1 tour 90. p0 ;", f: tour },
-    OpDef { name: "INVE", signature: "INVE GEO", doc: "Reverse the orientation of a mesh.", example: "l2 = inve l ;", f: inve },
+    OpDef { name: "INVE", signature: "INVE GEO | INVE CHPOINT", doc: "Reverse the orientation of a mesh; the inverse of each value of a node field.", example: "l2 = inve l ;", f: inve },
 ];
 
 fn elem(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
@@ -265,6 +265,13 @@ fn tour(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 fn inve(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    // On a node field: the inverse of each value (inve.notice), same nature.
+    if let Some(c) = a.opt::<Rc<crate::value::Chpoint>>() {
+        if let Some((n, comp, _)) = c.entries().find(|e| e.2 == 0.0) {
+            return Err(a.err(format!("the field is zero at node {} on {}: it has no inverse", n + 1, comp)));
+        }
+        return Ok(vec![Value::Chpo(Rc::new(c.map(|v| 1.0 / v)))]);
+    }
     let m = a.req::<Rc<Mesh>>()?;
     Ok(mesh_val(mg::inve(&m)?))
 }

@@ -114,6 +114,21 @@ fn exis(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             Some(comp) => c.components().contains(&comp),
             None => true,
         },
+        // Whether some zone has that component, as point values or as
+        // material data (`EXIS MAT 'TRAC'`: the word is read even when it
+        // names an operator).
+        Value::Mchaml(m) => match a.word() {
+            Some(comp) => {
+                let comp = comp.trim_end();
+                m.zones.iter().any(|z| {
+                    z.comps.iter().any(|c| c == comp)
+                        || z.constants.contains_key(comp)
+                        || z.laws.contains_key(comp)
+                        || z.vectors.contains_key(comp)
+                })
+            }
+            None => true,
+        },
         // Whether a load of that name is part of a CHARGEMENT.
         Value::Charge(c) => match a.opt_right::<String>() {
             Some(name) => c.has(&name.trim().to_uppercase().chars().take(4).collect::<String>()),

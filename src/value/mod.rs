@@ -4,6 +4,7 @@
 //! object, except TABLE which Gibiane mutates in place (`T . k = v`).
 
 pub mod arith;
+pub mod by_components;
 pub mod chargement;
 mod describe;
 mod display;

@@ -2,6 +2,7 @@
 //! pushed operand on their left, else read two operands on their right
 //! (`'-' 10 4`), so `1 + 2 * 3` is 9: there is no precedence.
 
+mod components;
 mod table;
 
 pub(crate) use table::apply;
@@ -39,7 +40,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef {
         name: "/",
         signature: "OBJ1 / OBJ2",
-        doc: "Quotient; ENTIER / ENTIER truncates.",
+        doc: "Quotient; ENTIER / ENTIER truncates. Two CHPOINT or MCHAML with three LISTMOTS: component LMOTS3(i) is LMOTS1(i) of the first over LMOTS2(i) of the second (same for + - *).",
         example: "x = 7 / 2 ;",
         f: divide,
     },
@@ -120,7 +121,10 @@ fn binary(it: &mut Interp, a: &mut Args, op: Bin) -> Result<Vec<Value>> {
     if let Some(e) = arith::divides_by_zero(op, &x, &y) {
         return Err(a.err(e));
     }
-    let r = table::apply(it, a, op, &x, &y)?;
+    let r = match components::apply(a, op, &x, &y)? {
+        Some(r) => r,
+        None => table::apply(it, a, op, &x, &y)?,
+    };
     Ok(vec![arith::check(op, &x, &y, r).map_err(|e| a.err(e))?])
 }
 
