@@ -48,6 +48,7 @@ mod noise;
 mod nuage;
 mod objects;
 mod opti;
+mod poin_field;
 mod opti_own;
 mod pasapas;
 mod pasapas_fields;
