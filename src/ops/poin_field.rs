@@ -35,29 +35,57 @@ impl Filter {
     }
 }
 
-/// The test read after POIN: a predicate on one value, given every value
-/// the test looks at (MAXI/MINI need their extreme; EGAL a tolerance).
-fn read_test(a: &mut Args, vals: &[f64]) -> Result<Box<dyn Fn(f64) -> bool>> {
+/// The test named after POIN, with its reference values.
+enum Test {
+    Maxi,
+    Mini,
+    Compare(&'static str, f64),
+    Between(f64, f64),
+}
+
+/// The test and its options ('ABS', a component filter), which may stand
+/// before the test, after its keyword or after its values.
+fn read_test(a: &mut Args) -> Result<(Test, bool, Filter)> {
+    let mut abs = false;
+    let mut filter = Filter { keep: None };
+    let mut options = |a: &mut Args| -> Result<()> {
+        abs |= a.keyword_next(&["ABS"]).is_some();
+        if filter.keep.is_none() {
+            filter = Filter::read(a)?;
+        }
+        abs |= a.keyword_next(&["ABS"]).is_some();
+        Ok(())
+    };
+    options(a)?;
     let k = a.req_keyword(TESTS)?;
+    options(a)?;
+    let test = match k {
+        "MAXI" => Test::Maxi,
+        "MINI" => Test::Mini,
+        "COMP" => Test::Between(a.req_num()?, a.req_num()?),
+        _ => Test::Compare(k, a.req_num()?),
+    };
+    options(a)?;
+    Ok((test, abs, filter))
+}
+
+/// The test as a predicate on one value, given every value it looks at
+/// (MAXI/MINI need their extreme; EGAL/DIFF a round-off tolerance).
+fn predicate(test: Test, vals: &[f64]) -> Box<dyn Fn(f64) -> bool> {
     let scale = vals.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
-    // Values equal to the extreme or to the reference up to round-off.
-    let tol = 1e-10 * scale;
-    Ok(match k {
-        "MAXI" => {
+    match test {
+        Test::Maxi => {
             let top = vals.iter().fold(f64::NEG_INFINITY, |m, &v| m.max(v));
+            let tol = 1e-10 * scale;
             Box::new(move |v| v >= top - tol)
         }
-        "MINI" => {
+        Test::Mini => {
             let low = vals.iter().fold(f64::INFINITY, |m, &v| m.min(v));
+            let tol = 1e-10 * scale;
             Box::new(move |v| v <= low + tol)
         }
-        "COMP" => {
-            let lo = a.req_num()?;
-            let hi = a.req_num()?;
-            Box::new(move |v| lo <= v && v <= hi)
-        }
-        _ => {
-            let t = a.req_num()?;
+        Test::Between(lo, hi) => Box::new(move |v| lo <= v && v <= hi),
+        Test::Compare(k, t) => {
             let tol = 1e-10 * scale.max(t.abs());
             match k {
                 "SUPE" => Box::new(move |v| v > t),
@@ -68,20 +96,12 @@ fn read_test(a: &mut Args, vals: &[f64]) -> Result<Box<dyn Fn(f64) -> bool>> {
                 _ => Box::new(move |v| (v - t).abs() > tol),
             }
         }
-    })
-}
-
-/// Reads the optional 'ABS' and component filter, which may stand before
-/// or after the test.
-fn read_options(a: &mut Args) -> Result<(bool, Filter)> {
-    let abs = a.keyword(&["ABS"]).is_some();
-    let filter = Filter::read(a)?;
-    Ok((abs, filter))
+    }
 }
 
 /// `CHPOINT POIN test`: the nodes where one considered value meets it.
 pub(crate) fn poin_of_chpo(a: &mut Args, ch: &Chpoint) -> Result<Vec<Value>> {
-    let (abs, filter) = read_options(a)?;
+    let (test, abs, filter) = read_test(a)?;
     let value = |v: f64| if abs { v.abs() } else { v };
     let vals: Vec<(usize, f64)> =
         ch.entries().filter(|(_, c, _)| filter.takes(c)).map(|(n, _, v)| (n, value(v))).collect();
@@ -89,7 +109,7 @@ pub(crate) fn poin_of_chpo(a: &mut Args, ch: &Chpoint) -> Result<Vec<Value>> {
         return Err(a.err("the field has no value to test"));
     }
     let all: Vec<f64> = vals.iter().map(|e| e.1).collect();
-    let test = read_test(a, &all)?;
+    let test = predicate(test, &all);
     let mut seen = HashSet::new();
     let nodes: Vec<usize> = vals.into_iter().filter(|&(n, v)| test(v) && seen.insert(n)).map(|e| e.0).collect();
     Ok(mesh_val(Mesh::points(&nodes)))
@@ -108,7 +128,7 @@ enum Site {
 /// result lines up with the MCHAML). Fields at the nodes give the nodes;
 /// fields at centres or Gauss points give new points there.
 pub(crate) fn poin_of_mchaml(it: &mut Interp, a: &mut Args, m: &Mchaml) -> Result<Vec<Value>> {
-    let (abs, filter) = read_options(a)?;
+    let (test, abs, filter) = read_test(a)?;
     let value = |v: f64| if abs { v.abs() } else { v };
     let mut sites: Vec<(Site, Vec<f64>)> = vec![];
     for z in &m.zones {
@@ -129,7 +149,7 @@ pub(crate) fn poin_of_mchaml(it: &mut Interp, a: &mut Args, m: &Mchaml) -> Resul
     if all.is_empty() {
         return Err(a.err("the field has no point value to test"));
     }
-    let test = read_test(a, &all)?;
+    let test = predicate(test, &all);
     let d = it.opts.dens;
     let mut seen = HashSet::new();
     let mut out = vec![];
