@@ -21,8 +21,8 @@ pub(crate) const OPS: &[OpDef] = &[
 ];
 
 const FORMS: &[&str] = &[
-    "BARR", "POUT", "TIMO", "Q4RI", "Q8RI", "COQ3", "DKT", "COQ4", "COQ2", "TRI3", "TRI6", "QUA4", "QUA8", "CUB8", "TET4",
-    "PRI6", "SEG2",
+    "BARR", "POUT", "TIMO", "Q4RI", "Q8RI", "COQ3", "DKT", "COQ4", "COQ2", "TRI3", "TRI6", "QUA4", "QUA8", "CUB8",
+    "TET4", "PRI6", "SEG2",
 ];
 
 const BEHAVIOURS: &[&str] = &["ELASTIQUE", "ISOTROPE"];
