@@ -166,6 +166,12 @@ fn intg_mchaml(
                             .values
                             .get(e)
                             .ok_or_else(|| a.err(format!("the field has no values on element {}", e + 1)))?;
+                        // One value per element (a field at the centres,
+                        // CHAN 'GRAVITE'): constant over the element.
+                        if pts.len() == 1 && w.len() > 1 && !z.at_nodes {
+                            vals.push(pts[0][c] * w.iter().sum::<f64>());
+                            continue;
+                        }
                         if pts.len() != w.len() {
                             return Err(a.err(format!(
                                 "element {}: the field has values at {} points, the model's elements at {}",

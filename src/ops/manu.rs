@@ -57,8 +57,9 @@ fn manu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 
 /// MANU 'CHML' mo c1 v1 …: the same values at every point of every
 /// element. Built with the points SIGM gives (or the element nodes with
-/// 'NOEUD'), so that VMIS, CHAN, INTG and arithmetic treat it like a
-/// computed field; another support word changes nothing for a constant.
+/// 'NOEUD', or one point per element with 'GRAVITE'), so that VMIS, CHAN,
+/// INTG and arithmetic treat it like a computed field; another support
+/// word changes nothing for a constant.
 fn chml(a: &mut Args, early: Option<Rc<Mesh>>) -> Result<Vec<Value>> {
     use crate::value::model::{Mchaml, MchamlZone};
     // On a mesh (no model) the values sit at the element nodes, as Cast3M
@@ -75,6 +76,7 @@ fn chml(a: &mut Args, early: Option<Rc<Mesh>>) -> Result<Vec<Value>> {
     let mut subtype = "SCALAIRE".to_string();
     let mut at_nodes = false;
     let mut spread = false;
+    let mut centre = false;
     const SUPPORTS: &[&str] = &["STRESSES", "GRAVITE", "RIGIDITE", "MASSE", "DEFORMATIONS"];
     loop {
         // TYPE unquoted is also an operator name: read as the keyword here.
@@ -94,6 +96,9 @@ fn chml(a: &mut Args, early: Option<Rc<Mesh>>) -> Result<Vec<Value>> {
             spread = true;
         } else if super::args::keyword_matches(&w, "NOEUD") {
             at_nodes = true;
+        } else if super::args::keyword_matches(&w, "GRAVITE") {
+            // One point per element, its centre (as CHAN 'GRAVITE').
+            centre = true;
         } else if SUPPORTS.iter().any(|k| super::args::keyword_matches(&w, k)) {
             continue;
         } else {
@@ -147,7 +152,13 @@ fn chml(a: &mut Args, early: Option<Rc<Mesh>>) -> Result<Vec<Value>> {
     for z in model.iter().flat_map(|m| m.zones.iter()) {
         let form = super::model::formulation(z);
         for part in &z.mesh.parts {
-            let npts = if at_nodes { part.ty.nodes() } else { crate::fem::element::gauss_points(form, part.ty).len() };
+            let npts = if at_nodes {
+                part.ty.nodes()
+            } else if centre {
+                1
+            } else {
+                crate::fem::element::gauss_points(form, part.ty).len()
+            };
             zones.push(MchamlZone {
                 mesh: Mesh::single(part.clone()),
                 element: z.element.clone(),

@@ -14,7 +14,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "COOR", signature: "COOR POINT | COOR n POINT | COOR (n) MAILLAGE", doc: "Coordinates of a point (one result per dimension), one of them, or coordinate fields (SCAL) on a mesh: one per dimension, or the n-th.", example: "x y = coor p ;", f: coor },
     OpDef { name: "NBNO", signature: "NBNO MAILLAGE", doc: "Number of nodes of a mesh.", example: "n = nbno l ;", f: nbno },
     OpDef { name: "NBEL", signature: "NBEL MAILLAGE", doc: "Number of elements of a mesh.", example: "n = nbel s ;", f: nbel },
-    OpDef { name: "POIN", signature: "POIN x (y) (z) | POIN LISTREEL (LISTREEL) (LISTREEL) | MAILLAGE POIN n | MAILLAGE POIN ('INIT'|'FINAL') | MAILLAGE POIN 'PROC' POINT | MAILLAGE POIN ('DROIT' P1 P2 | 'PLAN' P1 P2 P3) (crit) | CHPOINT POIN 'MAXI'|'MINI' ('ABS') | CHPOINT POIN 'SUPE'|'INFE'|'EGSU'|'EGIN'|'EGAL' v", doc: "A point, or nodes of a mesh, or the nodes where a field meets a test (a POI1 mesh).", example: "p = l poin 'FINAL' ;", f: poin },
+    OpDef { name: "POIN", signature: "POIN x (y) (z) | POIN LISTREEL (LISTREEL) (LISTREEL) | MAILLAGE POIN n | MAILLAGE POIN ('INIT'|'FINAL') | MAILLAGE POIN 'PROC' POINT | MAILLAGE POIN ('DROIT' P1 P2 | 'PLAN' P1 P2 P3) (crit) | CHPOINT|MCHAML POIN ('ABS') ('AVEC'|'SANS' LISTMOTS) 'MAXI'|'MINI'|'SUPE'|'INFE'|'EGSU'|'EGIN'|'EGAL'|'DIFF' v|'COMP' v1 v2", doc: "A point, or nodes of a mesh, or the points where a field's values meet a test (a POI1 mesh; for an MCHAML at centres or Gauss points, new points there, in element order).", example: "p = l poin 'FINAL' ;", f: poin },
 ];
 
 fn noeu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
@@ -73,7 +73,10 @@ fn nbel(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 
 fn poin(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     if let Some(ch) = a.opt::<Rc<crate::value::Chpoint>>() {
-        return poin_of_field(a, &ch);
+        return super::poin_field::poin_of_chpo(a, &ch);
+    }
+    if let Some(m) = a.opt::<Rc<crate::value::Mchaml>>() {
+        return super::poin_field::poin_of_mchaml(it, a, &m);
     }
     if let Some(m) = a.opt::<Rc<Mesh>>() {
         if let Some(k) = a.keyword(&["SPHE", "CYLI", "CONE", "TORE", "JONC"]) {
@@ -138,43 +141,4 @@ fn poin(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     }
     let d = it.opts.dens;
     Ok(vec![Value::Point(it.nodes.push(x, d))])
-}
-
-/// `CHPO POIN 'MAXI'|'MINI' ('ABS') | 'SUPE'|'INFE'|'EGSU'|'EGIN'|'EGAL' v`:
-/// the nodes where one value of the field meets the test, as a POI1 mesh
-/// (where is the maximum?). MAXI/MINI and EGAL compare within 1e-10 of
-/// the largest value.
-fn poin_of_field(a: &mut Args, ch: &crate::value::Chpoint) -> Result<Vec<Value>> {
-    let k = a.req_keyword(&["MAXI", "MINI", "SUPE", "INFE", "EGSU", "EGIN", "EGAL"])?;
-    let abs = a.keyword(&["ABS"]).is_some();
-    let value = |v: f64| if abs { v.abs() } else { v };
-    let vals: Vec<(usize, f64)> = ch.entries().map(|(n, _, v)| (n, value(v))).collect();
-    if vals.is_empty() {
-        return Err(a.err("the field is empty"));
-    }
-    let scale = vals.iter().fold(0.0_f64, |m, e| m.max(e.1.abs()));
-    let tol = 1e-10 * scale;
-    let test: Box<dyn Fn(f64) -> bool> = match k {
-        "MAXI" => {
-            let top = vals.iter().fold(f64::NEG_INFINITY, |m, e| m.max(e.1));
-            Box::new(move |v| v >= top - tol)
-        }
-        "MINI" => {
-            let low = vals.iter().fold(f64::INFINITY, |m, e| m.min(e.1));
-            Box::new(move |v| v <= low + tol)
-        }
-        _ => {
-            let t = a.req_num()?;
-            match k {
-                "SUPE" => Box::new(move |v| v > t),
-                "INFE" => Box::new(move |v| v < t),
-                "EGSU" => Box::new(move |v| v >= t),
-                "EGIN" => Box::new(move |v| v <= t),
-                _ => Box::new(move |v| (v - t).abs() <= tol),
-            }
-        }
-    };
-    let mut seen = std::collections::HashSet::new();
-    let nodes: Vec<usize> = vals.into_iter().filter(|&(n, v)| test(v) && seen.insert(n)).map(|e| e.0).collect();
-    Ok(mesh_val(Mesh::points(&nodes)))
 }

@@ -53,6 +53,7 @@ mod opti_own;
 mod pasapas;
 mod pasapas_fields;
 mod pasapas_model;
+mod poin_field;
 mod pointwise;
 mod post;
 mod pres_field;

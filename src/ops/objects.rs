@@ -18,7 +18,7 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "EXIS",
-        signature: "EXIS NAME | TABLE KEY | CHPOINT COMP | CHARGEMENT NAME | LIST VALUE",
+        signature: "EXIS NAME | TABLE KEY | CHPOINT COMP | CHARGEMENT NAME | LIST VALUE | LISTMOTS LISTMOTS ('ET'|'OU')",
         doc: "Whether a name, a table key, a component or a list member exists.",
         example: "si (exis t 'K') ; mess 'yes' ; finsi ;",
         f: exis,
@@ -98,10 +98,22 @@ fn exis(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             Some(k) => t.borrow().get(&Key::from_value(&k)).is_some(),
             None => true,
         },
-        Value::ListMots(l) => match a.opt_right::<String>() {
-            Some(w) => l.iter().any(|x| x.trim_end() == w.trim_end()),
-            None => true,
-        },
+        Value::ListMots(l) => {
+            let has = |w: &str| l.iter().any(|x| x.trim_end() == w.trim_end());
+            if let Some(words) = a.opt_right::<Rc<Vec<String>>>() {
+                // A second list: all of it ('ET'), any of it ('OU'), or
+                // one answer per word.
+                return Ok(match a.keyword_next(&["ET", "OU"]) {
+                    Some("ET") => vec![Value::Bool(words.iter().all(|w| has(w)))],
+                    Some(_) => vec![Value::Bool(words.iter().any(|w| has(w)))],
+                    None => words.iter().map(|w| Value::Bool(has(w))).collect(),
+                });
+            }
+            match a.opt_right::<String>() {
+                Some(w) => has(&w),
+                None => true,
+            }
+        }
         Value::ListReel(l) => match a.opt_num_right() {
             Some(x) => l.contains(&x),
             None => true,

@@ -17,7 +17,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "EPSI", signature: "EPSI ('LINE') MMODEL (MCHAML) CHPOINT", doc: "Strains (EPXX … GAXY; generalised strains for bars and beams; EPSS EPTT GAST RTSS RTTT RTST for shells).", example: "eps = epsi mo ma u ;", f: epsi },
     OpDef { name: "GRAD", signature: "GRAD MMODEL CHPOINT (MCHAML)", doc: "Gradient of the displacements of a massive model at its stress points (UX,X UX,Y UY,X UY,Y …; UR,R UR,Z UZ,R UZ,Z UT,T in AXIS).", example: "g = grad mo u ;", f: grad },
     OpDef { name: "VMIS", signature: "VMIS MMODEL MCHAML_STRESS (MCHAML)", doc: "Von Mises equivalent stress (the beam formula for bars and beams).", example: "vm = vmis mo sig ma ;", f: vmis },
-    OpDef { name: "CHAN", signature: "CHAN 'POI1'|QUA8|TRI6|SEG3|QUA4|TRI3|SEG2 GEO | CHAN 'CHPO'|'NOEUD'|'GRAVITE' MMODEL MCHAML | CHAN 'INCO' RIGIDITE LISTMOTS LISTMOTS | CHAN 'ATTRIBUT' CHPOINT 'NATURE' word | CHAN 'CHAM' CHPOINT GEO|MMODEL ('NOEUD'|'GRAVITE'|'RIGIDITE'|'MASSE'|'STRESSES') (subtype) | CHAN 'TYPE' MCHAML word | CHAN 'MAJU'|'MINU' MOT", doc: "Change the type or attributes of an object.", example: "pts = chan 'POI1' l ;", f: chan },
+    OpDef { name: "CHAN", signature: "CHAN 'POI1'|QUA8|TRI6|SEG3|QUA4|TRI3|SEG2 GEO | CHAN 'CHPO'|'NOEUD'|'GRAVITE' MMODEL MCHAML ('MOYE'|'SOMM') | CHAN 'INCO' RIGIDITE LISTMOTS LISTMOTS | CHAN 'ATTRIBUT' CHPOINT 'NATURE' word | CHAN 'CHAM' CHPOINT GEO|MMODEL ('NOEUD'|'GRAVITE'|'RIGIDITE'|'MASSE'|'STRESSES') (subtype) | CHAN 'TYPE' MCHAML word | CHAN 'MAJU'|'MINU' MOT", doc: "Change the type or attributes of an object.", example: "pts = chan 'POI1' l ;", f: chan },
     OpDef { name: "PRES", signature: "PRES 'MASS' MMODEL (MCHAML) VALUE GEO | PRES 'COQU' MMODEL VALUE ('NORM') | PRES MMODEL_PRESSION 'PRES' VALUE|CHPOINT", doc: "Of a pressure model (MODE … 'CHARGEMENT' 'PRESSION'): the pressure at the element nodes, an MCHAML for BSIG (positive along the left normal of each oriented line). Otherwise: Nodal forces equivalent to a pressure on edges/faces of a massive model (positive towards the solid; in plane stress for the DIM3 thickness of the characteristics MCHAML when given, else per unit thickness), or on every element of a shell model (positive along the element normal).", example: "f = pres 'MASS' mo 10. haut ;", f: pres },
     OpDef { name: "MASS", signature: "MASS MMODEL MCHAML (MCHAML) ('LUMP') | MASS ('DEPL') ('ROTA') (comps) VALUE GEO", doc: "Mass matrix (consistent, or lumped with 'LUMP'), or point masses on the given unknowns of every node of GEO.", example: "m = mass mo ma ;", f: mass },
     OpDef { name: "LUMP", signature: "LUMP MMODEL MCHAML (MCHAML)", doc: "Lumped (diagonal) mass matrix of a model.", example: "m = lump mo ma ;", f: lump },
@@ -184,7 +184,7 @@ fn vmis(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     const KW: &[&str] = &[
         "POI1", "QUA8", "TRI6", "SEG3", "QUA4", "TRI3", "SEG2", "CHPO", "NOEUD", "INCO", "ATTRIBUT", "COMP", "TYPE",
-        "GRAVITE", "MAJU", "MINU", "QUAD", "LIGN", "CHAM",
+        "GRAVITE", "MAJU", "MINU", "QUAD", "LIGN", "CHAM", "LINE",
     ];
     // CHAN (TYPE) POI1_MESH LISTENTI: elements joining the mesh's points.
     if let Some(r) = super::chan_cham::connect(it, a)? {
@@ -206,7 +206,7 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             Ok(vec![Value::Mesh(Rc::new(mg::change_to_quadratic(&mut it.nodes, &m)?))])
         }
         "TRI3" => Ok(vec![Value::Mesh(Rc::new(mg::change_to_triangles(&super::mesh::req_geo(a)?)))]),
-        "QUA4" | "SEG2" => Ok(vec![Value::Mesh(Rc::new(mg::change_to_linear(&super::mesh::req_geo(a)?)))]),
+        "QUA4" | "SEG2" | "LINE" => Ok(vec![Value::Mesh(Rc::new(mg::change_to_linear(&super::mesh::req_geo(a)?)))]),
         "INCO" => {
             let r = a.req::<Rc<Rigidite>>()?;
             let old = a.req::<Rc<Vec<String>>>()?;
@@ -286,6 +286,9 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 "CHAM" => a.keyword(&["NOEUD", "GRAVITE"]).unwrap_or("NOEUD"),
                 _ => k,
             };
+            // CHPO: the nodal value is the mean of the elements' values
+            // there ('MOYE', the default) or their sum ('SOMM').
+            let summed = k == "CHPO" && a.keyword(&["MOYE", "SOMM"]) == Some("SOMM");
             let mut sum = Chpoint::new(Nature::Diffus);
             let mut count = std::collections::HashMap::<(usize, String), f64>::new();
             let mut out_m = Mchaml { subtype: m.subtype.clone(), zones: vec![] };
@@ -346,7 +349,9 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             }
             let avg = Chpoint::from_entries(
                 Nature::Diffus,
-                sum.entries().map(|(n, c, v)| (n, c, v / count[&(n, c.to_string())])).collect::<Vec<_>>(),
+                sum.entries()
+                    .map(|(n, c, v)| (n, c, if summed { v } else { v / count[&(n, c.to_string())] }))
+                    .collect::<Vec<_>>(),
             );
             Ok(vec![Value::Chpo(Rc::new(avg))])
         }
