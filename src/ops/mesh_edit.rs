@@ -69,29 +69,12 @@ fn face(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 /// orientation (`shape::faces`).
 fn enve(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let m = a.req::<Rc<Mesh>>()?;
-    let mut faces: Vec<(ElemType, Vec<usize>)> = Vec::new();
-    let mut count: std::collections::HashMap<Vec<usize>, usize> = std::collections::HashMap::new();
-    for part in m.parts.iter().filter(|p| p.ty.dim() == 3) {
-        for e in part.elems() {
-            for (fty, loc) in crate::fem::shape::faces(part.ty) {
-                let nodes: Vec<usize> = loc.iter().map(|&k| e[k]).collect();
-                let mut key = nodes.clone();
-                key.sort_unstable();
-                *count.entry(key).or_default() += 1;
-                faces.push((fty, nodes));
-            }
-        }
-    }
-    if faces.is_empty() {
+    let faces = mg::edges::boundary_faces(m.parts.iter().filter(|p| p.ty.dim() == 3));
+    if !m.parts.iter().any(|p| p.ty.dim() == 3) {
         return Err(a.err("ENVE needs a volume mesh (the boundary of a surface or a line is CONT)"));
     }
     let mut parts: Vec<(ElemType, Vec<usize>)> = Vec::new();
     for (fty, nodes) in faces {
-        let mut key = nodes.clone();
-        key.sort_unstable();
-        if count[&key] != 1 {
-            continue;
-        }
         match parts.iter_mut().find(|(t, _)| *t == fty) {
             Some((_, c)) => c.extend(nodes),
             None => parts.push((fty, nodes)),

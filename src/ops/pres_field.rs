@@ -9,7 +9,6 @@ use crate::error::{Error, Result};
 use crate::eval::Interp;
 use crate::fem::mesh::ElemType;
 use crate::value::{Chpoint, Mchaml, Model, Nature, Value};
-use std::collections::HashMap;
 use std::rc::Rc;
 
 fn model_dim(model: &Model) -> usize {
@@ -75,28 +74,9 @@ pub(super) fn from_chpoint(
     fields: &[Rc<Mchaml>],
 ) -> Result<Vec<Value>> {
     let comp = component(a, &ch.components())?;
-    let mut count: HashMap<Vec<usize>, usize> = HashMap::new();
-    let mut faces: Vec<(ElemType, Vec<usize>)> = Vec::new();
-    for z in &model.zones {
-        for part in &z.mesh.parts {
-            for e in part.elems() {
-                for (fty, loc) in crate::fem::shape::faces(part.ty) {
-                    let face: Vec<usize> = loc.iter().map(|&i| e[i]).collect();
-                    let mut key = face.clone();
-                    key.sort_unstable();
-                    *count.entry(key).or_insert(0) += 1;
-                    faces.push((fty, face));
-                }
-            }
-        }
-    }
+    let parts = model.zones.iter().flat_map(|z| z.mesh.parts.iter());
     let mut out = Chpoint::new(Nature::Discret);
-    for (fty, face) in &faces {
-        let mut key = face.clone();
-        key.sort_unstable();
-        if count[&key] != 1 {
-            continue;
-        }
+    for (fty, face) in &crate::fem::meshing::edges::boundary_faces(parts) {
         let p: Option<Vec<f64>> = face.iter().map(|n| ch.get(*n, &comp)).collect();
         if let Some(p) = p {
             add_face(it, a, model, fields, &mut out, *fty, face, &p)?;

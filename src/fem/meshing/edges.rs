@@ -3,7 +3,7 @@
 
 use super::vec3::{add, cross, dot, norm, V3};
 use super::{check_nodes, fail, mesh_of, MeshError};
-use crate::fem::mesh::{ElemType, Mesh, Nodes};
+use crate::fem::mesh::{ElemType, Mesh, Nodes, Part};
 use crate::fem::shape::faces;
 use std::collections::HashMap;
 
@@ -20,33 +20,11 @@ pub fn aret(nodes: &Nodes, mesh: &Mesh, angle_deg: f64) -> Result<Mesh, MeshErro
     }
     // Facets as corner lists (quadratic faces by their corners).
     let mut facets: Vec<Vec<usize>> = Vec::new();
-    let mut count: HashMap<Vec<usize>, usize> = HashMap::new();
-    let mut skin: Vec<Vec<usize>> = Vec::new();
-    for p in &mesh.parts {
-        for e in p.elems() {
-            match p.ty.dim() {
-                2 => facets.push(corners(p.ty, e)),
-                3 => {
-                    for (fty, loc) in faces(p.ty) {
-                        let f: Vec<usize> = loc.iter().map(|&k| e[k]).collect();
-                        let c = corners(fty, &f);
-                        let mut key = c.clone();
-                        key.sort_unstable();
-                        *count.entry(key).or_default() += 1;
-                        skin.push(c);
-                    }
-                }
-                _ => {}
-            }
-        }
+    for p in mesh.parts.iter().filter(|p| p.ty.dim() == 2) {
+        facets.extend(p.elems().map(|e| corners(p.ty, e)));
     }
-    for c in skin {
-        let mut key = c.clone();
-        key.sort_unstable();
-        if count[&key] == 1 {
-            facets.push(c);
-        }
-    }
+    let volumes = mesh.parts.iter().filter(|p| p.ty.dim() == 3);
+    facets.extend(boundary_faces(volumes).into_iter().map(|(fty, f)| corners(fty, &f)));
     if facets.is_empty() {
         return fail("ARET", "the mesh has no surface or volume elements");
     }
@@ -141,4 +119,30 @@ pub fn all_edges(mesh: &Mesh) -> Mesh {
         }
     }
     mesh_of(parts)
+}
+
+/// The faces of `parts`' elements that no other element shares (the same
+/// node set), in element order, each as its element orients it
+/// (`shape::faces`): the skin of volumes, the boundary edges of surfaces.
+/// ENVE, ARET and PRES on a field all start from it.
+pub fn boundary_faces<'a>(parts: impl IntoIterator<Item = &'a Part>) -> Vec<(ElemType, Vec<usize>)> {
+    let mut count: HashMap<Vec<usize>, usize> = HashMap::new();
+    let mut all: Vec<(ElemType, Vec<usize>)> = Vec::new();
+    for part in parts {
+        for e in part.elems() {
+            for (fty, loc) in faces(part.ty) {
+                let f: Vec<usize> = loc.iter().map(|&k| e[k]).collect();
+                let mut key = f.clone();
+                key.sort_unstable();
+                *count.entry(key).or_default() += 1;
+                all.push((fty, f));
+            }
+        }
+    }
+    all.retain(|(_, f)| {
+        let mut key = f.clone();
+        key.sort_unstable();
+        count[&key] == 1
+    });
+    all
 }
