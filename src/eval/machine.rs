@@ -29,8 +29,12 @@ impl Interp {
         let span = items.iter().map(|i| i.span).reduce(Span::join).unwrap_or_default();
         let (mut vals, ran_operator) = self.run_tokens(toks)?;
         // Numbers left over become a POINT only when they were written as
-        // operands: `x y = coor p` keeps the two results of COOR.
-        if !ran_operator && (vals.len() == 2 || vals.len() == 3) && vals.iter().all(Value::is_number) {
+        // operands: `x y = coor p` keeps the two results of COOR. Fewer
+        // numbers than the dimension cannot be a point, so in 3D
+        // `a b = (MINI x) (MAXI x)` keeps its two numbers, as in Cast3M.
+        let dim = self.opts.dime;
+        let point_sized = (vals.len() == 2 || vals.len() == 3) && (dim == 0 || vals.len() >= dim);
+        if !ran_operator && point_sized && vals.iter().all(Value::is_number) {
             vals = vec![self.make_point(&vals).map_err(|e| e.with_span_if_missing(span, &self.source))?];
         }
         Ok(vals)
