@@ -156,7 +156,9 @@ fn run() -> ExitCode {
     let mut gibi = builder.build();
 
     if cli.list_operators {
-        println!("{}", repl::catalogue_json(gibi.registry()));
+        // A reader that stops early (`| head`) is not an error of gibi's.
+        use std::io::Write;
+        let _ = writeln!(std::io::stdout(), "{}", repl::catalogue_json(gibi.registry()));
         return ExitCode::SUCCESS;
     }
 
