@@ -43,6 +43,7 @@ mod mesh_move;
 mod mesh_query;
 mod mesh_repair;
 mod mesh_ruled;
+mod joint_mesh;
 mod mesh_select;
 mod model;
 mod noise;
@@ -106,6 +107,7 @@ impl Registry {
             mesh_free::OPS,
             mesh_lines::OPS,
             mesh_ruled::OPS,
+            joint_mesh::OPS,
             mesh_move::OPS,
             mesh_repair::OPS,
             mesh_edit::OPS,
