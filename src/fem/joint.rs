@@ -89,7 +89,7 @@ fn points(ty: ElemType, mode: Mode, x: &[[f64; 3]], m: &Material) -> Result<Vec<
         }
         let (frame, jac) = if face.dim() == 1 {
             let l = norm(d[0]);
-            if !(l > 0.0) || !l.is_finite() {
+            if l.is_nan() || l <= 0.0 || !l.is_finite() {
                 return Err(degenerate());
             }
             let t = scale(d[0], 1.0 / l);
@@ -98,7 +98,7 @@ fn points(ty: ElemType, mode: Mode, x: &[[f64; 3]], m: &Material) -> Result<Vec<
             let nrm = cross(d[0], d[1]);
             let a = norm(nrm);
             let l1 = norm(d[0]);
-            if !(a > 0.0) || !a.is_finite() || !(l1 > 0.0) {
+            if a.is_nan() || a <= 0.0 || !a.is_finite() || l1.is_nan() || l1 <= 0.0 {
                 return Err(degenerate());
             }
             let e3 = scale(nrm, 1.0 / a);
@@ -191,13 +191,21 @@ pub fn hooke(mode: Mode, m: &Material, eps: &GaussField) -> Result<GaussField, F
     let values = eps
         .values
         .iter()
-        .map(|v| comps.iter().zip(&d).map(|(c, k)| k * eps.comps.iter().position(|n| n == c).map_or(0.0, |i| v[i])).collect())
+        .map(|v| {
+            comps.iter().zip(&d).map(|(c, k)| k * eps.comps.iter().position(|n| n == c).map_or(0.0, |i| v[i])).collect()
+        })
         .collect();
     Ok(GaussField { comps: comp_names(mode, true), values })
 }
 
 /// Nodal forces Bᵀσ of a traction field (BSIG).
-pub fn internal_forces(ty: ElemType, mode: Mode, x: &[[f64; 3]], m: &Material, sig: &GaussField) -> Result<Vec<f64>, FemError> {
+pub fn internal_forces(
+    ty: ElemType,
+    mode: Mode,
+    x: &[[f64; 3]],
+    m: &Material,
+    sig: &GaussField,
+) -> Result<Vec<f64>, FemError> {
     let nc = dofs(mode)?.len();
     let pts = points(ty, mode, x, m)?;
     if sig.values.len() != pts.len() {

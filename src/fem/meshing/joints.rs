@@ -16,7 +16,7 @@ fn joint_of(face: ElemType) -> Option<ElemType> {
 /// Joint elements between `a` (side 1) and `b` (side 2). `lines` says
 /// which operator is meshing: RACC (lines) or LIAI (surfaces).
 pub fn joints(op: &'static str, nodes: &Nodes, a: &Mesh, b: &Mesh, crit: f64, lines: bool) -> Result<Mesh, MeshError> {
-    if !(crit >= 0.0) || !crit.is_finite() {
+    if crit.is_nan() || crit < 0.0 || !crit.is_finite() {
         return fail(op, format!("the distance criterion must be a finite positive number, not {}", crit));
     }
     let d2 = |p: usize, q: usize| {
@@ -34,9 +34,11 @@ pub fn joints(op: &'static str, nodes: &Nodes, a: &Mesh, b: &Mesh, crit: f64, li
             let found = b.parts.iter().filter(|pb| pb.ty == pa.ty).flat_map(|pb| pb.elems()).find_map(|e2| {
                 let mut side2 = Vec::with_capacity(e1.len());
                 for &n1 in e1 {
-                    let n2 = e2.iter().copied().filter(|&n2| d2(n1, n2) <= crit * crit).min_by(|&p, &q| {
-                        d2(n1, p).total_cmp(&d2(n1, q))
-                    })?;
+                    let n2 = e2
+                        .iter()
+                        .copied()
+                        .filter(|&n2| d2(n1, n2) <= crit * crit)
+                        .min_by(|&p, &q| d2(n1, p).total_cmp(&d2(n1, q)))?;
                     if side2.contains(&n2) {
                         return None;
                     }
