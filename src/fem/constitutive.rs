@@ -76,7 +76,7 @@ pub fn thermal_strain(
                 .collect();
             Ok(GaussField { comps, values })
         }
-        Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 | Formulation::Coq2 => {
+        Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 | Formulation::Coq2 | Formulation::Joint => {
             Err(FemError::Unsupported { form: f.name(), elem: ty.name(), mode: mode.name() })
         }
     }
@@ -105,6 +105,7 @@ pub fn hooke(f: Formulation, ty: ElemType, mode: Mode, m: &Material, eps: &Gauss
         Formulation::Barr => vec!["EPSS"],
         Formulation::Pout | Formulation::Timo => vec!["EPSS", "GAXY", "GAXZ", "CURX", "CURY", "CURZ"],
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::strain_comps(mode),
+        Formulation::Joint => return super::joint::hooke(mode, m, eps),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 | Formulation::Coq2 => unreachable!("refused above"),
     };
     if !wanted.iter().any(|w| eps.comps.contains(w)) {
@@ -130,7 +131,7 @@ pub fn hooke(f: Formulation, ty: ElemType, mode: Mode, m: &Material, eps: &Gauss
                 .collect();
             Ok(GaussField { comps: solid::stress_comps(mode), values })
         }
-        Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 | Formulation::Coq2 => {
+        Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 | Formulation::Coq2 | Formulation::Joint => {
             Err(FemError::Unsupported { form: f.name(), elem: ty.name(), mode: mode.name() })
         }
     }

@@ -14,7 +14,7 @@
 //!   is per unit thickness.
 
 use super::mesh::ElemType;
-use super::{bar, beam, coq2, shell, solid};
+use super::{bar, beam, coq2, joint, shell, solid};
 use thiserror::Error;
 
 pub use super::material::Material;
@@ -57,6 +57,9 @@ pub enum Formulation {
     /// Thin conical (AXIS) or cylindrical (plane modes) shell on SEG2
     /// (see [`coq2`]).
     Coq2,
+    /// Linear elastic joint (JOI2, JOI3, JOI4) on RAC2, RAC3, LIA3, LIA4
+    /// (see [`joint`]).
+    Joint,
 }
 
 impl Formulation {
@@ -72,6 +75,7 @@ impl Formulation {
             Formulation::Dkt => "DKT",
             Formulation::Coq4 => "COQ4",
             Formulation::Coq2 => "COQ2",
+            Formulation::Joint => "JOI2",
         }
     }
 
@@ -134,6 +138,7 @@ pub fn node_dofs(f: Formulation, mode: Mode) -> Result<&'static [&'static str], 
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => Ok(solid::dofs(mode)),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::dofs(f, mode),
         Formulation::Coq2 => coq2::dofs(mode),
+        Formulation::Joint => joint::dofs(mode),
     }
 }
 
@@ -188,6 +193,7 @@ fn check(f: Formulation, ty: ElemType, mode: Mode) -> Result<(), FemError> {
         Formulation::Solid => ty.dim() >= 2,
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => ty == shell::geometry(f),
         Formulation::Coq2 => ty == ElemType::Seg2,
+        Formulation::Joint => joint::accepts(ty, mode),
     };
     if ok {
         Ok(())
@@ -211,6 +217,7 @@ pub fn stiffness(
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::stiffness(f, ty, mode, x, m),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::stiffness(f, mode, x, m),
         Formulation::Coq2 => coq2::stiffness(mode, x, m),
+        Formulation::Joint => joint::stiffness(ty, mode, x, m),
     }
 }
 
@@ -231,6 +238,13 @@ pub fn mass(
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::mass(ty, mode, x, m, lumped),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::mass(f, mode, x, m, lumped),
         Formulation::Coq2 => coq2::mass(mode, x, m, lumped),
+        // A joint has no thickness, hence no mass.
+        Formulation::Joint => {
+            let names = joint::dofs(mode)?;
+            let n = x.len() * names.len();
+            let dofs = (0..x.len()).flat_map(|i| names.iter().map(move |&d| (i, d))).collect();
+            Ok(ElemMatrix { dofs, k: vec![0.0; n * n] })
+        }
     }
 }
 
@@ -252,6 +266,7 @@ pub fn stress(
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::field(f, ty, mode, x, m, u, true),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::stress(f, mode, x, m, u),
         Formulation::Coq2 => coq2::stress(mode, x, m, u),
+        Formulation::Joint => joint::stress(ty, mode, x, m, u),
     }
 }
 
@@ -291,6 +306,7 @@ pub fn strain(
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::field(f, ty, mode, x, m, u, false),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::strain(f, mode, x, u),
         Formulation::Coq2 => coq2::strain(mode, x, u),
+        Formulation::Joint => joint::strain(ty, mode, x, m, u),
     }
 }
 
@@ -312,6 +328,7 @@ pub fn internal_forces(
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::internal_forces(f, ty, mode, x, m, sig),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::internal_forces(f, mode, x, sig),
         Formulation::Coq2 => coq2::internal_forces(mode, x, m, sig),
+        Formulation::Joint => joint::internal_forces(ty, mode, x, m, sig),
     }
 }
 
@@ -326,6 +343,8 @@ pub fn gauss_points(f: Formulation, ty: ElemType) -> Vec<([f64; 3], f64)> {
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::rule(f, ty),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::rule(ty),
         Formulation::Coq2 => coq2::rule(),
+        // On the face; the joint's reference coordinate across is 0.
+        Formulation::Joint => joint::rule(ty),
     }
 }
 

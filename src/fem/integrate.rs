@@ -62,6 +62,11 @@ fn measure_rule(ty: ElemType) -> Vec<QPoint> {
         ElemType::Cub8 => hexa(3),
         ElemType::Tet4 => tet(4),
         ElemType::Pri6 => prism(7, 3),
+        // The face's measure, on the mid-surface (t = 0).
+        ElemType::Rac2 => seg(3),
+        ElemType::Rac3 => measure_rule(ElemType::Seg3),
+        ElemType::Lia3 => tri(7),
+        ElemType::Lia4 => quad(3),
     }
 }
 
@@ -84,6 +89,7 @@ pub fn point_weights(
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::point_weights(f, ty, mode, x, m),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => super::shell::point_weights(f, x),
         Formulation::Coq2 => super::coq2::point_weights(mode, x),
+        Formulation::Joint => super::joint::point_weights(ty, mode, x),
     }
 }
 
@@ -101,6 +107,7 @@ pub fn node_weights(
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::node_weights(ty, mode, x, m),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => super::shell::node_weights(f, x),
         Formulation::Coq2 => super::coq2::node_weights(mode, x),
+        Formulation::Joint => Err(FemError::NotFor { what: "integrating a nodal field", form: f.name() }),
     }
 }
 

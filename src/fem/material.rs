@@ -33,6 +33,9 @@ pub struct Material {
     pub dz: Option<f64>,
     /// Local y axis of 3D beams (CARA 'VECT').
     pub vect: Option<[f64; 3]>,
+    /// Tangential and normal stiffnesses of joints, per unit area.
+    pub ks: Option<f64>,
+    pub kn: Option<f64>,
 }
 
 impl Material {
@@ -57,6 +60,8 @@ impl Material {
             "DX" => self.dx = v,
             "DY" => self.dy = v,
             "DZ" => self.dz = v,
+            "KS" => self.ks = v,
+            "KN" => self.kn = v,
             _ => return false,
         }
         true

@@ -22,11 +22,17 @@ pub enum ElemType {
     Cub8,
     Tet4,
     Pri6,
+    /// Joint elements (RACC, LIAI): the nodes of a face on side 1, then
+    /// the facing nodes of side 2 in the same order.
+    Rac2,
+    Rac3,
+    Lia3,
+    Lia4,
 }
 
 impl ElemType {
     /// Every geometry, in Cast3M's usual listing order.
-    pub const ALL: [ElemType; 10] = [
+    pub const ALL: [ElemType; 14] = [
         ElemType::Poi1,
         ElemType::Seg2,
         ElemType::Seg3,
@@ -37,6 +43,10 @@ impl ElemType {
         ElemType::Cub8,
         ElemType::Tet4,
         ElemType::Pri6,
+        ElemType::Rac2,
+        ElemType::Rac3,
+        ElemType::Lia3,
+        ElemType::Lia4,
     ];
 
     /// Number of nodes of one element.
@@ -52,6 +62,9 @@ impl ElemType {
             ElemType::Cub8 => 8,
             ElemType::Tet4 => 4,
             ElemType::Pri6 => 6,
+            ElemType::Rac2 => 4,
+            ElemType::Rac3 | ElemType::Lia3 => 6,
+            ElemType::Lia4 => 8,
         }
     }
 
@@ -59,8 +72,8 @@ impl ElemType {
     pub fn dim(self) -> usize {
         match self {
             ElemType::Poi1 => 0,
-            ElemType::Seg2 | ElemType::Seg3 => 1,
-            ElemType::Tri3 | ElemType::Tri6 | ElemType::Qua4 | ElemType::Qua8 => 2,
+            ElemType::Seg2 | ElemType::Seg3 | ElemType::Rac2 | ElemType::Rac3 => 1,
+            ElemType::Tri3 | ElemType::Tri6 | ElemType::Qua4 | ElemType::Qua8 | ElemType::Lia3 | ElemType::Lia4 => 2,
             ElemType::Cub8 | ElemType::Tet4 | ElemType::Pri6 => 3,
         }
     }
@@ -78,6 +91,21 @@ impl ElemType {
             ElemType::Cub8 => "CUB8",
             ElemType::Tet4 => "TET4",
             ElemType::Pri6 => "PRI6",
+            ElemType::Rac2 => "RAC2",
+            ElemType::Rac3 => "RAC3",
+            ElemType::Lia3 => "LIA3",
+            ElemType::Lia4 => "LIA4",
+        }
+    }
+
+    /// The face geometry of one side of a joint element.
+    pub fn joint_face(self) -> Option<ElemType> {
+        match self {
+            ElemType::Rac2 => Some(ElemType::Seg2),
+            ElemType::Rac3 => Some(ElemType::Seg3),
+            ElemType::Lia3 => Some(ElemType::Tri3),
+            ElemType::Lia4 => Some(ElemType::Qua4),
+            _ => None,
         }
     }
 

@@ -14,6 +14,7 @@ pub mod contact_weak;
 pub mod coq2;
 pub mod element;
 pub mod integrate;
+pub mod joint;
 pub mod loads;
 pub mod material;
 pub mod plate;

@@ -45,7 +45,28 @@ pub fn ref_nodes(ty: ElemType) -> Vec<[f64; 3]> {
             v.extend(t.iter().map(|p| [p[0], p[1], 1.]));
             v
         }
+        // A joint is its face drawn twice: side 1 at t = -1, side 2 at
+        // t = +1, t the coordinate after the face's own (y on a line, z
+        // on a surface).
+        ElemType::Rac2 | ElemType::Rac3 | ElemType::Lia3 | ElemType::Lia4 => {
+            let (face, t) = joint_axes(ty);
+            let f = ref_nodes(face);
+            let mut v: Vec<_> = f.iter().map(|p| with(*p, t, -1.)).collect();
+            v.extend(f.iter().map(|p| with(*p, t, 1.)));
+            v
+        }
     }
+}
+
+/// The face of a joint geometry and the reference coordinate across it.
+fn joint_axes(ty: ElemType) -> (ElemType, usize) {
+    let face = ty.joint_face().expect("a joint geometry");
+    (face, face.dim())
+}
+
+fn with(mut p: [f64; 3], c: usize, v: f64) -> [f64; 3] {
+    p[c] = v;
+    p
 }
 
 /// Shape functions and their derivatives at reference point `p`.
@@ -131,6 +152,20 @@ pub fn eval(ty: ElemType, p: [f64; 3]) -> Shape {
             }
             Shape { n, dn }
         }
+        ElemType::Rac2 | ElemType::Rac3 | ElemType::Lia3 | ElemType::Lia4 => {
+            let (face, t) = joint_axes(ty);
+            let s = eval(face, with(p, t, 0.));
+            let mut n = Vec::with_capacity(2 * s.n.len());
+            let mut dn = Vec::with_capacity(2 * s.n.len());
+            for c in [-1., 1.] {
+                let ft = 0.5 * (1. + c * p[t]);
+                for (ni, di) in s.n.iter().zip(&s.dn) {
+                    n.push(ni * ft);
+                    dn.push(with([di[0] * ft, di[1] * ft, di[2] * ft], t, 0.5 * c * ni));
+                }
+            }
+            Shape { n, dn }
+        }
     }
 }
 
@@ -158,6 +193,8 @@ pub fn faces(ty: ElemType) -> Vec<(ElemType, Vec<usize>)> {
             v.extend(f(Qua4, &[&[0, 1, 4, 3], &[1, 2, 5, 4], &[2, 0, 3, 5]]));
             v
         }
+        // A joint has no boundary of its own: it lies between two.
+        Rac2 | Rac3 | Lia3 | Lia4 => vec![],
     }
 }
 

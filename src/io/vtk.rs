@@ -46,6 +46,11 @@ pub fn vtk_cell(ty: ElemType) -> (u8, &'static [usize]) {
         ElemType::Cub8 => (12, &[0, 1, 2, 3, 4, 5, 6, 7]),
         ElemType::Tet4 => (10, &[0, 1, 2, 3]),
         ElemType::Pri6 => (13, &[0, 2, 1, 3, 5, 4]),
+        // Joints: the two sides as one flat cell (polygon, wedge, hexahedron).
+        ElemType::Rac2 => (9, &[0, 1, 3, 2]),
+        ElemType::Rac3 => (7, &[0, 1, 2, 5, 4, 3]),
+        ElemType::Lia3 => (13, &[0, 1, 2, 3, 4, 5]),
+        ElemType::Lia4 => (12, &[0, 1, 2, 3, 4, 5, 6, 7]),
     }
 }
 

@@ -22,7 +22,7 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "RELA",
-        signature: "RELA ('MINI'|'MAXI') (c1) comp1 GEO1 (+|-) (c2) comp2 GEO2 … | RELA ('MINI'|'MAXI') CHPOINT ('DUAL' CHPOINT)",
+        signature: "RELA ('MINI'|'MAXI') (c1) comp1 GEO1 (+|-) (c2) comp2 GEO2 … | RELA ('MINI'|'MAXI') CHPOINT ('DUAL' CHPOINT) | RELA 'ENSE' comp… GEO",
         doc: "Linear relations between unknowns, node by node (MINI: >= d, MAXI: <= d). From a field, one relation whose coefficients are the field's values; 'DUAL' gives a non-associated reaction direction (the system is then solved as non-symmetric).",
         example: "r = rela 'MINI' 1. 'UX' pb - 1. 'UX' pa ;",
         f: rela,
@@ -160,6 +160,9 @@ type RelaTerm = (f64, Vec<(String, f64)>, Vec<usize>);
 
 fn rela(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let kind = kind_keyword(a);
+    if a.keyword(&["ENSE"]).is_some() {
+        return rela_ense(it, a, kind);
+    }
     if let Some(ch) = a.opt::<Rc<Chpoint>>() {
         let terms = field_terms(&ch);
         let first = terms.first().map(|t| t.0).ok_or_else(|| a.err("the field is empty"))?;
@@ -223,6 +226,29 @@ fn rela(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         }
         let m = mult_node(it, row[0].0);
         rig.conds.push(CondRow::new(m, row, kind));
+    }
+    Ok(vec![Value::Rigi(Rc::new(rig))])
+}
+
+/// `RELA 'ENSE' comp… GEO`: every node of GEO moves as its first node on
+/// the listed components (u_first - u_i = 0, one row per node and
+/// component).
+fn rela_ense(it: &mut Interp, a: &mut Args, kind: Kind) -> Result<Vec<Value>> {
+    let mut comps = Vec::new();
+    while let Some(c) = a.word_not_operator() {
+        comps.push(c.to_uppercase());
+    }
+    if comps.is_empty() {
+        return Err(a.missing("a component name"));
+    }
+    let nodes = req_geo(a)?.node_list();
+    let mut rig = Rigidite::new(Subtype::Blocage);
+    for c in &comps {
+        for &n in nodes.iter().skip(1) {
+            let row = vec![(nodes[0], c.clone(), 1.0), (n, c.clone(), -1.0)];
+            let m = mult_node(it, nodes[0]);
+            rig.conds.push(CondRow::new(m, row, kind));
+        }
     }
     Ok(vec![Value::Rigi(Rc::new(rig))])
 }

@@ -29,6 +29,7 @@ mod fourier;
 mod fracture;
 mod integrate;
 mod io;
+mod joint_mesh;
 mod limits;
 mod lists;
 mod lists_search;
@@ -106,6 +107,7 @@ impl Registry {
             mesh_free::OPS,
             mesh_lines::OPS,
             mesh_ruled::OPS,
+            joint_mesh::OPS,
             mesh_move::OPS,
             mesh_repair::OPS,
             mesh_edit::OPS,

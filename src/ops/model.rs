@@ -22,7 +22,7 @@ pub(crate) const OPS: &[OpDef] = &[
 
 const FORMS: &[&str] = &[
     "BARR", "POUT", "TIMO", "Q4RI", "Q8RI", "COQ3", "DKT", "COQ4", "COQ2", "TRI3", "TRI6", "QUA4", "QUA8", "CUB8",
-    "TET4", "PRI6", "SEG2",
+    "TET4", "PRI6", "SEG2", "JOI2", "JOI3", "JOI4",
 ];
 
 const BEHAVIOURS: &[&str] = &["ELASTIQUE", "ISOTROPE"];
@@ -157,7 +157,7 @@ fn contact_model(it: &mut Interp, a: &mut Args, geo: &Mesh) -> Result<Vec<Value>
 
 const PROPS: &[&str] = &[
     "YOUN", "NU", "RHO", "ALPH", "TREF", "SECT", "INRY", "INRZ", "TORS", "SECY", "SECZ", "EPAI", "DIM3", "DX", "DY",
-    "DZ", "VECT", "JEU", "ADHE", "SIGY", "H",
+    "DZ", "VECT", "JEU", "ADHE", "SIGY", "H", "KS", "KN", "ALPN",
 ];
 
 fn props(it: &Interp, a: &mut Args, subtype: &str) -> Result<Vec<Value>> {
@@ -290,6 +290,7 @@ pub(crate) fn formulation(zone: &ModelZone) -> Formulation {
         "TIMO" => Formulation::Timo,
         "Q4RI" => Formulation::Q4ri,
         "Q8RI" => Formulation::Q8ri,
+        "JOI2" | "JOI3" | "JOI4" => Formulation::Joint,
         _ => Formulation::Solid,
     }
 }

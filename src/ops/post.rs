@@ -131,7 +131,7 @@ fn intern(c: &str) -> &'static str {
         "SMXX", "SMYY", "SMZZ", "SMXY", "SMXZ", "SMYZ", "SMRR", "SMTT", "SMRZ", "EPXX", "EPYY", "EPZZ", "GAXY", "GAXZ",
         "GAYZ", "EPRR", "EPTT", "GARZ", "EFFX", "EFFY", "EFFZ", "MOMX", "MOMY", "MOMZ", "EPSS", "CURX", "CURY", "CURZ",
         "VMIS", "SCAL", "ENER", "TRES", "I1", "J2", "J3", "N11", "N22", "N12", "M11", "M22", "M12", "V1", "V2", "GAST",
-        "RTSS", "RTTT", "RTST",
+        "RTSS", "RTTT", "RTST", "EPSN", "EPS1", "EPS2", "SIGS", "SIGN", "SIG1", "SIG2",
     ];
     NAMES.iter().find(|n| **n == c).copied().unwrap_or("?")
 }

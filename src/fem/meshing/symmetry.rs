@@ -80,6 +80,10 @@ pub(crate) fn turn_over(ty: ElemType) -> &'static [usize] {
         ElemType::Cub8 => &[0, 3, 2, 1, 4, 7, 6, 5],
         ElemType::Tet4 => &[0, 2, 1, 3],
         ElemType::Pri6 => &[0, 2, 1, 3, 5, 4],
+        ElemType::Rac2 => &[0, 1, 2, 3],
+        ElemType::Rac3 => &[0, 1, 2, 3, 4, 5],
+        ElemType::Lia3 => &[0, 2, 1, 3, 5, 4],
+        ElemType::Lia4 => &[0, 3, 2, 1, 4, 7, 6, 5],
     }
 }
 
