@@ -6,6 +6,7 @@ use super::{dofs, Args, OpDef, PointId};
 use crate::error::{Error, Result};
 use crate::eval::Interp;
 use crate::fem::element::{self, Formulation, Material, Mode};
+use crate::fem::incomp;
 use crate::fem::mesh::{ElemType, Mesh};
 use crate::value::model::{MchamlZone, ModelZone};
 use crate::value::rigidity::{Block, Subtype, Symmetry};
@@ -22,7 +23,7 @@ pub(crate) const OPS: &[OpDef] = &[
 
 const FORMS: &[&str] = &[
     "BARR", "POUT", "TIMO", "Q4RI", "Q8RI", "COQ3", "DKT", "COQ4", "COQ2", "TRI3", "TRI6", "QUA4", "QUA8", "CUB8",
-    "TET4", "PRI6", "SEG2",
+    "TET4", "PRI6", "SEG2", "ICT3", "ICQ4", "ICT6", "ICQ8", "ICT4", "ICC8", "ICP6",
 ];
 
 const BEHAVIOURS: &[&str] = &["ELASTIQUE", "ISOTROPE"];
@@ -95,6 +96,9 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         }
     }
     let mut model = Model { zones: vec![] };
+    if let Some(&(_, ty)) = incomp::NAMES.iter().find(|(n, _)| *n == element) {
+        return incompressible_model(a, geo, formulation, behaviour, element, ty, mode);
+    }
     // Massive elements follow the mesh: one zone per element type.
     if element.is_empty() || ElemType::from_name(&element).is_some() {
         for p in &geo.parts {
@@ -110,6 +114,42 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         model.zones.push(ModelZone { mesh: geo, formulation, behaviour, element, mode });
     }
     Ok(vec![Value::Model(Rc::new(model))])
+}
+
+/// A model of incompressible elements (ICT3 on TRI3, ICQ4 on QUA4, ...):
+/// one zone per mesh part, each of the element's own geometry.
+fn incompressible_model(
+    a: &Args,
+    geo: Mesh,
+    formulation: String,
+    behaviour: Vec<String>,
+    element: String,
+    ty: ElemType,
+    mode: String,
+) -> Result<Vec<Value>> {
+    if let Some(p) = geo.parts.iter().find(|p| p.ty != ty) {
+        return Err(a.err(format!(
+            "{} is the incompressible element on {} meshes; this mesh has {} elements",
+            element,
+            ty.name(),
+            p.ty.name()
+        )));
+    }
+    if (ty.dim() == 3) != (mode == "TRID") {
+        return Err(a.err(format!("{} elements are not available in mode {}", element, mode)));
+    }
+    let zones = geo
+        .parts
+        .iter()
+        .map(|p| ModelZone {
+            mesh: Mesh::single(p.clone()),
+            formulation: formulation.clone(),
+            behaviour: behaviour.clone(),
+            element: element.clone(),
+            mode: mode.clone(),
+        })
+        .collect();
+    Ok(vec![Value::Model(Rc::new(Model { zones }))])
 }
 
 /// Behaviour families beyond elasticity (mode.notice): accepted by MODE,
@@ -290,6 +330,7 @@ pub(crate) fn formulation(zone: &ModelZone) -> Formulation {
         "TIMO" => Formulation::Timo,
         "Q4RI" => Formulation::Q4ri,
         "Q8RI" => Formulation::Q8ri,
+        e if incomp::NAMES.iter().any(|(n, _)| *n == e) => Formulation::Incomp,
         _ => Formulation::Solid,
     }
 }
