@@ -234,7 +234,9 @@ pub fn mass(
         Formulation::Barr => bar::mass(mode, x, m, lumped),
         Formulation::Pout => beam::mass(false, mode, x, m, lumped),
         Formulation::Timo => beam::mass(true, mode, x, m, lumped),
-        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => solid::mass(ty, mode, x, m, lumped),
+        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => {
+            solid::mass(ty, mode, x, m, lumped)
+        }
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::mass(f, mode, x, m, lumped),
         Formulation::Coq2 => coq2::mass(mode, x, m, lumped),
     }
@@ -274,7 +276,9 @@ pub fn gradient(
 ) -> Result<GaussField, FemError> {
     check(f, ty, mode)?;
     match f {
-        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => solid::gradient(f, ty, mode, x, u),
+        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => {
+            solid::gradient(f, ty, mode, x, u)
+        }
         _ => Err(FemError::NotFor { what: "GRAD", form: f.name() }),
     }
 }
@@ -295,7 +299,9 @@ pub fn strain(
         Formulation::Barr => bar::strain(mode, x, u),
         Formulation::Pout => beam::strain(false, mode, x, m, u),
         Formulation::Timo => beam::strain(true, mode, x, m, u),
-        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => solid::field(f, ty, mode, x, m, u, false),
+        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => {
+            solid::field(f, ty, mode, x, m, u, false)
+        }
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::strain(f, mode, x, u),
         Formulation::Coq2 => coq2::strain(mode, x, u),
     }
@@ -316,7 +322,9 @@ pub fn internal_forces(
     match f {
         Formulation::Barr => bar::internal_forces(mode, x, sig),
         Formulation::Pout | Formulation::Timo => beam::internal_forces(f == Formulation::Timo, mode, x, m, sig),
-        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => solid::internal_forces(f, ty, mode, x, m, sig),
+        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => {
+            solid::internal_forces(f, ty, mode, x, m, sig)
+        }
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::internal_forces(f, mode, x, sig),
         Formulation::Coq2 => coq2::internal_forces(mode, x, m, sig),
     }

@@ -30,6 +30,7 @@ use super::element::{ElemMatrix, FemError, Formulation, GaussField, Mode};
 use super::material::Material;
 use super::mesh::ElemType;
 use super::solid::{self, bmat, dof_list, points, Point};
+use faer::linalg::solvers::Solve;
 
 /// Number of strain components whose sum is the trace (the first three).
 const TRACE: usize = 3;
@@ -82,10 +83,7 @@ fn moduli(m: &Material, elem: &'static str) -> Result<(f64, f64), FemError> {
 /// 2μ·dev(ε) for a strain vector of the mode (engineering shears last).
 fn deviatoric(mu: f64, eps: &[f64]) -> Vec<f64> {
     let tr: f64 = eps[..TRACE].iter().sum();
-    eps.iter()
-        .enumerate()
-        .map(|(i, e)| if i < TRACE { 2.0 * mu * (e - tr / 3.0) } else { mu * e })
-        .collect()
+    eps.iter().enumerate().map(|(i, e)| if i < TRACE { 2.0 * mu * (e - tr / 3.0) } else { mu * e }).collect()
 }
 
 /// The element's integration points with their B matrices and pressure
@@ -128,42 +126,22 @@ fn mixed(ty: ElemType, mode: Mode, x: &[[f64; 3]], kappa: f64, t: f64) -> Result
     Ok(Mixed { pts, g, c })
 }
 
-/// M⁻¹ R by Gaussian elimination with partial pivoting (M is at most 4×4,
-/// symmetric positive definite for a valid element).
-fn solve(mut m: Vec<Vec<f64>>, r: &[Vec<f64>]) -> Option<Vec<Vec<f64>>> {
+/// M⁻¹ R (M is at most 3×3, symmetric positive definite for a valid
+/// element): faer's LU, with a check that the result is finite and M not
+/// singular relative to its diagonal.
+fn solve(m: Vec<Vec<f64>>, r: &[Vec<f64>]) -> Option<Vec<Vec<f64>>> {
     let n = m.len();
-    let mut r = r.to_vec();
-    let scale = (0..n).map(|i| m[i][i].abs()).fold(0.0, f64::max);
-    for k in 0..n {
-        let piv = (k..n).max_by(|&a, &b| m[a][k].abs().total_cmp(&m[b][k].abs()))?;
-        if m[piv][k].abs() <= 1e-12 * scale {
-            return None;
-        }
-        m.swap(k, piv);
-        r.swap(k, piv);
-        for i in k + 1..n {
-            let f = m[i][k] / m[k][k];
-            for j in k..n {
-                m[i][j] -= f * m[k][j];
-            }
-            let (top, bottom) = r.split_at_mut(i);
-            for (v, w) in bottom[0].iter_mut().zip(&top[k]) {
-                *v -= f * w;
-            }
-        }
+    let nd = r.first()?.len();
+    let mm = faer::Mat::from_fn(n, n, |i, j| m[i][j]);
+    let lu = mm.partial_piv_lu();
+    let det: f64 = (0..n).map(|i| lu.U()[(i, i)]).product();
+    let diag: f64 = (0..n).map(|i| m[i][i].abs()).product();
+    if det.abs() <= 1e-12 * diag {
+        return None;
     }
-    for k in (0..n).rev() {
-        for i in k + 1..n {
-            let f = m[k][i];
-            let (top, bottom) = r.split_at_mut(i);
-            for (v, w) in top[k].iter_mut().zip(&bottom[0]) {
-                *v -= f * w;
-            }
-        }
-        let d = m[k][k];
-        r[k].iter_mut().for_each(|v| *v /= d);
-    }
-    Some(r)
+    let x = lu.solve(faer::Mat::from_fn(n, nd, |i, j| r[i][j]));
+    let out: Vec<Vec<f64>> = (0..n).map(|i| (0..nd).map(|j| x[(i, j)]).collect()).collect();
+    out.iter().flatten().all(|v| v.is_finite()).then_some(out)
 }
 
 pub fn stiffness(ty: ElemType, mode: Mode, x: &[[f64; 3]], m: &Material) -> Result<ElemMatrix, FemError> {

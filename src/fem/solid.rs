@@ -122,7 +122,13 @@ fn check(ty: ElemType, mode: Mode, x: &[[f64; 3]]) -> Result<usize, FemError> {
 /// uniformly reversed (clockwise in 2D, left-handed in 3D) are accepted
 /// with |J|; a Jacobian that vanishes or changes sign inside the element is
 /// an error, since the mapping then folds over itself.
-pub(super) fn points(ty: ElemType, mode: Mode, x: &[[f64; 3]], rule: &[QPoint], t: f64) -> Result<Vec<Point>, FemError> {
+pub(super) fn points(
+    ty: ElemType,
+    mode: Mode,
+    x: &[[f64; 3]],
+    rule: &[QPoint],
+    t: f64,
+) -> Result<Vec<Point>, FemError> {
     let dim = check(ty, mode, x)?;
     let mut size: f64 = 0.0;
     for a in x {

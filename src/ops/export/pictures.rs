@@ -193,7 +193,11 @@ pub(super) fn vect(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     // components is a mistake.
     let known = |w: &String| comps.contains(w) || ["DEPL", "FORC", "ROTA", "MOME"].contains(&w.as_str());
     if !chosen.is_empty() && !chosen.iter().any(known) {
-        return Err(a.err(format!("the field has none of the components {} (it has {})", chosen.join(" "), comps.join(" "))));
+        return Err(a.err(format!(
+            "the field has none of the components {} (it has {})",
+            chosen.join(" "),
+            comps.join(" ")
+        )));
     }
     if chosen.is_empty() {
         chosen = comps;
