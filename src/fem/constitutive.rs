@@ -39,7 +39,7 @@ pub fn thermal_strain(
         return Err(FemError::WrongNodeCount { elem: ty.name(), expected: ty.nodes(), got: t.len() });
     }
     let elem = match f {
-        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => ty.name(),
+        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => ty.name(),
         _ => f.name(),
     };
     if f.is_shell() {
@@ -62,7 +62,7 @@ pub fn thermal_strain(
             row[0] = e;
             Ok(GaussField { comps, values: vec![row; 2] })
         }
-        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => {
+        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => {
             check_solid(f, ty, mode)?;
             let comps = solid::strain_comps(mode);
             let values = gauss_points(f, ty)
@@ -104,7 +104,7 @@ pub fn hooke(f: Formulation, ty: ElemType, mode: Mode, m: &Material, eps: &Gauss
     let wanted: Vec<&'static str> = match f {
         Formulation::Barr => vec!["EPSS"],
         Formulation::Pout | Formulation::Timo => vec!["EPSS", "GAXY", "GAXZ", "CURX", "CURY", "CURZ"],
-        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::strain_comps(mode),
+        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => solid::strain_comps(mode),
         Formulation::Joint => return super::joint::hooke(mode, m, eps),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 | Formulation::Coq2 => unreachable!("refused above"),
     };
@@ -118,7 +118,7 @@ pub fn hooke(f: Formulation, ty: ElemType, mode: Mode, m: &Material, eps: &Gauss
             Ok(GaussField { comps: vec!["EFFX"], values })
         }
         Formulation::Pout | Formulation::Timo => beam::hooke(f == Formulation::Timo, mode, m, eps),
-        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => {
+        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => {
             check_solid(f, ty, mode)?;
             let d = elasticity(mode, m, ty.name())?;
             let values = eps
@@ -205,7 +205,7 @@ fn tensor(mode: Mode, sig: &GaussField, v: &[f64]) -> [f64; 6] {
 }
 
 fn check_stress(f: Formulation, mode: Mode, sig: &GaussField, what: &'static str) -> Result<(), FemError> {
-    if !matches!(f, Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri) {
+    if !matches!(f, Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp) {
         return Err(FemError::Unsupported { form: f.name(), elem: what, mode: mode.name() });
     }
     let first = if mode == Mode::Axis { "SMRR" } else { "SMXX" };

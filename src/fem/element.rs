@@ -50,6 +50,9 @@ pub enum Formulation {
     Solid,
     Q4ri,
     Q8ri,
+    /// Mixed displacement/pressure massive elements (ICT3, ICQ4, ...; see
+    /// [`super::incomp`]).
+    Incomp,
     /// Thin flat shells (see [`shell`]).
     Coq3,
     Dkt,
@@ -71,6 +74,7 @@ impl Formulation {
             Formulation::Solid => "massive",
             Formulation::Q4ri => "Q4RI",
             Formulation::Q8ri => "Q8RI",
+            Formulation::Incomp => "incompressible",
             Formulation::Coq3 => "COQ3",
             Formulation::Dkt => "DKT",
             Formulation::Coq4 => "COQ4",
@@ -135,7 +139,7 @@ pub fn node_dofs(f: Formulation, mode: Mode) -> Result<&'static [&'static str], 
     match f {
         Formulation::Barr => bar::dofs(mode),
         Formulation::Pout | Formulation::Timo => beam::dofs(mode),
-        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => Ok(solid::dofs(mode)),
+        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => Ok(solid::dofs(mode)),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::dofs(f, mode),
         Formulation::Coq2 => coq2::dofs(mode),
         Formulation::Joint => joint::dofs(mode),
@@ -191,6 +195,7 @@ fn check(f: Formulation, ty: ElemType, mode: Mode) -> Result<(), FemError> {
         Formulation::Q4ri => ty == ElemType::Qua4,
         Formulation::Q8ri => ty == ElemType::Qua8,
         Formulation::Solid => ty.dim() >= 2,
+        Formulation::Incomp => super::incomp::geometry_ok(ty),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => ty == shell::geometry(f),
         Formulation::Coq2 => ty == ElemType::Seg2,
         Formulation::Joint => joint::accepts(ty, mode),
@@ -214,6 +219,7 @@ pub fn stiffness(
         Formulation::Barr => bar::stiffness(mode, x, m),
         Formulation::Pout => beam::stiffness(false, mode, x, m),
         Formulation::Timo => beam::stiffness(true, mode, x, m),
+        Formulation::Incomp => super::incomp::stiffness(ty, mode, x, m),
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::stiffness(f, ty, mode, x, m),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::stiffness(f, mode, x, m),
         Formulation::Coq2 => coq2::stiffness(mode, x, m),
@@ -235,7 +241,9 @@ pub fn mass(
         Formulation::Barr => bar::mass(mode, x, m, lumped),
         Formulation::Pout => beam::mass(false, mode, x, m, lumped),
         Formulation::Timo => beam::mass(true, mode, x, m, lumped),
-        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::mass(ty, mode, x, m, lumped),
+        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => {
+            solid::mass(ty, mode, x, m, lumped)
+        }
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::mass(f, mode, x, m, lumped),
         Formulation::Coq2 => coq2::mass(mode, x, m, lumped),
         // A joint has no thickness, hence no mass.
@@ -263,6 +271,7 @@ pub fn stress(
         Formulation::Barr => bar::stress(mode, x, m, u),
         Formulation::Pout => beam::stress(false, mode, x, m, u),
         Formulation::Timo => beam::stress(true, mode, x, m, u),
+        Formulation::Incomp => super::incomp::stress(ty, mode, x, m, u),
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::field(f, ty, mode, x, m, u, true),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::stress(f, mode, x, m, u),
         Formulation::Coq2 => coq2::stress(mode, x, m, u),
@@ -282,7 +291,9 @@ pub fn gradient(
 ) -> Result<GaussField, FemError> {
     check(f, ty, mode)?;
     match f {
-        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::gradient(f, ty, mode, x, u),
+        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => {
+            solid::gradient(f, ty, mode, x, u)
+        }
         _ => Err(FemError::NotFor { what: "GRAD", form: f.name() }),
     }
 }
@@ -303,7 +314,9 @@ pub fn strain(
         Formulation::Barr => bar::strain(mode, x, u),
         Formulation::Pout => beam::strain(false, mode, x, m, u),
         Formulation::Timo => beam::strain(true, mode, x, m, u),
-        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::field(f, ty, mode, x, m, u, false),
+        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => {
+            solid::field(f, ty, mode, x, m, u, false)
+        }
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::strain(f, mode, x, u),
         Formulation::Coq2 => coq2::strain(mode, x, u),
         Formulation::Joint => joint::strain(ty, mode, x, m, u),
@@ -325,7 +338,9 @@ pub fn internal_forces(
     match f {
         Formulation::Barr => bar::internal_forces(mode, x, sig),
         Formulation::Pout | Formulation::Timo => beam::internal_forces(f == Formulation::Timo, mode, x, m, sig),
-        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::internal_forces(f, ty, mode, x, m, sig),
+        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => {
+            solid::internal_forces(f, ty, mode, x, m, sig)
+        }
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::internal_forces(f, mode, x, sig),
         Formulation::Coq2 => coq2::internal_forces(mode, x, m, sig),
         Formulation::Joint => joint::internal_forces(ty, mode, x, m, sig),
@@ -340,7 +355,7 @@ pub fn gauss_points(f: Formulation, ty: ElemType) -> Vec<([f64; 3], f64)> {
         Formulation::Barr | Formulation::Pout | Formulation::Timo => {
             vec![([-1.0, 0.0, 0.0], 1.0), ([1.0, 0.0, 0.0], 1.0)]
         }
-        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::rule(f, ty),
+        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => solid::rule(f, ty),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::rule(ty),
         Formulation::Coq2 => coq2::rule(),
         // On the face; the joint's reference coordinate across is 0.

@@ -86,7 +86,9 @@ pub fn point_weights(
 ) -> Result<Vec<f64>, FemError> {
     match f {
         Formulation::Barr | Formulation::Pout | Formulation::Timo => line_weights(x),
-        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::point_weights(f, ty, mode, x, m),
+        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => {
+            solid::point_weights(f, ty, mode, x, m)
+        }
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => super::shell::point_weights(f, x),
         Formulation::Coq2 => super::coq2::point_weights(mode, x),
         Formulation::Joint => super::joint::point_weights(ty, mode, x),
@@ -104,7 +106,9 @@ pub fn node_weights(
 ) -> Result<Vec<f64>, FemError> {
     match f {
         Formulation::Barr | Formulation::Pout | Formulation::Timo => line_weights(x),
-        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::node_weights(ty, mode, x, m),
+        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => {
+            solid::node_weights(ty, mode, x, m)
+        }
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => super::shell::node_weights(f, x),
         Formulation::Coq2 => super::coq2::node_weights(mode, x),
         Formulation::Joint => Err(FemError::NotFor { what: "integrating a nodal field", form: f.name() }),

@@ -84,11 +84,11 @@ pub fn strain_comps(mode: Mode) -> Vec<&'static str> {
 
 /// One integration point mapped to the element: shape values, physical
 /// derivatives and the full weight (w·|J|·thickness, or ·2πr in AXIS).
-struct Point {
-    n: Vec<f64>,
-    dndx: Vec<[f64; 3]>,
-    w: f64,
-    r: f64,
+pub(super) struct Point {
+    pub(super) n: Vec<f64>,
+    pub(super) dndx: Vec<[f64; 3]>,
+    pub(super) w: f64,
+    pub(super) r: f64,
 }
 
 fn check(ty: ElemType, mode: Mode, x: &[[f64; 3]]) -> Result<usize, FemError> {
@@ -122,7 +122,13 @@ fn check(ty: ElemType, mode: Mode, x: &[[f64; 3]]) -> Result<usize, FemError> {
 /// uniformly reversed (clockwise in 2D, left-handed in 3D) are accepted
 /// with |J|; a Jacobian that vanishes or changes sign inside the element is
 /// an error, since the mapping then folds over itself.
-fn points(ty: ElemType, mode: Mode, x: &[[f64; 3]], rule: &[QPoint], t: f64) -> Result<Vec<Point>, FemError> {
+pub(super) fn points(
+    ty: ElemType,
+    mode: Mode,
+    x: &[[f64; 3]],
+    rule: &[QPoint],
+    t: f64,
+) -> Result<Vec<Point>, FemError> {
     let dim = check(ty, mode, x)?;
     let mut size: f64 = 0.0;
     for a in x {
@@ -207,7 +213,7 @@ fn invert(j: &[[f64; 3]; 3], dim: usize) -> (f64, [[f64; 3]; 3]) {
 
 /// Strain-displacement matrix (rows: strains of the mode; columns: element
 /// dofs, node-major).
-fn bmat(mode: Mode, p: &Point) -> Vec<Vec<f64>> {
+pub(super) fn bmat(mode: Mode, p: &Point) -> Vec<Vec<f64>> {
     let nn = p.n.len();
     if mode == Mode::Trid {
         let mut b = vec![vec![0.0; 3 * nn]; 6];
@@ -240,7 +246,7 @@ fn bmat(mode: Mode, p: &Point) -> Vec<Vec<f64>> {
     b
 }
 
-fn dof_list(ty: ElemType, mode: Mode) -> Vec<(usize, &'static str)> {
+pub(super) fn dof_list(ty: ElemType, mode: Mode) -> Vec<(usize, &'static str)> {
     (0..ty.nodes()).flat_map(|i| dofs(mode).iter().map(move |&d| (i, d))).collect()
 }
 

@@ -6,6 +6,7 @@ use super::{dofs, Args, OpDef, PointId};
 use crate::error::{Error, Result};
 use crate::eval::Interp;
 use crate::fem::element::{self, Formulation, Material, Mode};
+use crate::fem::incomp;
 use crate::fem::mesh::{ElemType, Mesh};
 use crate::value::model::{MchamlZone, ModelZone};
 use crate::value::rigidity::{Block, Subtype, Symmetry};
@@ -13,7 +14,7 @@ use crate::value::{Evolution, Mchaml, Model, Rigidite, Value};
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
-    OpDef { name: "MODE", signature: "MODE GEO 'MECANIQUE' ('ELASTIQUE' ('ISOTROPE')) (BARR|POUT|TIMO|Q4RI|COQ2|COQ3|DKT|COQ4|…) | MODE GEO 'CHARGEMENT' 'PRESSION' (COQ2) | MODE CONTACT_MESH 'CONTACT' ('UNILATERAL')", doc: "A model: a mesh tied to a formulation, a behaviour and an element type (COQ3, DKT on TRI3 and COQ4 on QUA4 are thin shells, in TRID; COQ2 on SEG2 the thin shell of AXIS and the plane modes). MODE GEO 'CHARGEMENT' 'PRESSION' makes a pressure model for PRES and BSIG. 'CONTACT' on the elements of IMPO 'MAIL' makes a contact model for PASAPAS.", example: "mo = mode l mecanique elastique pout ;", f: mode },
+    OpDef { name: "MODE", signature: "MODE GEO 'MECANIQUE' ('ELASTIQUE' ('ISOTROPE')) (BARR|POUT|TIMO|Q4RI|COQ2|COQ3|DKT|COQ4|…) | MODE GEO 'CHARGEMENT' 'PRESSION' (COQ2) | MODE CONTACT_MESH 'CONTACT' ('UNILATERAL')", doc: "A model: a mesh tied to a formulation, a behaviour and an element type (COQ3, DKT on TRI3 and COQ4 on QUA4 are thin shells, in TRID; COQ2 on SEG2 the thin shell of AXIS and the plane modes; ICT3, ICQ4, ICT6, ICQ8 (ICT4, ICC8, ICP6 in TRID) the incompressible massive elements, with a pressure condensed per element). MODE GEO 'CHARGEMENT' 'PRESSION' makes a pressure model for PRES and BSIG. 'CONTACT' on the elements of IMPO 'MAIL' makes a contact model for PASAPAS.", example: "mo = mode l mecanique elastique pout ;", f: mode },
     OpDef { name: "MATE", signature: "MATE MMODEL 'YOUN' E 'NU' nu ('RHO' r) ('ALPH' a ('TREF' t)) (SECT INRY INRZ TORS SECY SECZ EPAI DIM3 …); a value may be an EVOLUTIO of a parameter | MATE MMODEL_CONTACT ('JEU' j|MCHAML) ('ADHE' a|MCHAML)", doc: "Material (and section) data of a model. A property given as an EVOLUTIO depends on the parameter its abscissa names (VARI 'NUAG' evaluates it against a field). For a contact model, the distance the bodies keep ('JEU') and the tension the contact holds before it opens ('ADHE', per unit length or area).", example: "ma = mate mo youn 2.e11 nu 0.3 ;", f: mate },
     OpDef { name: "CARA", signature: "CARA MMODEL ('SECT' s) ('INRY' i) ('INRZ' i) ('TORS' j) ('SECY' a) ('SECZ' a) ('EPAI' e) ('DIM3' e) ('VECT' P)", doc: "Geometric characteristics of a model (merge with MATE using ET).", example: "ca = cara mo sect 1. inrz 1. ;", f: cara },
     OpDef { name: "RIGI", signature: "RIGI MMODEL MCHAML (MCHAML) | RIGI ('DEPL') ('ROTA') (comps) VALUE GEO", doc: "Stiffness of a model, or springs to ground.", example: "k = rigi mo ma ;", f: rigi },
@@ -22,7 +23,7 @@ pub(crate) const OPS: &[OpDef] = &[
 
 const FORMS: &[&str] = &[
     "BARR", "POUT", "TIMO", "Q4RI", "Q8RI", "COQ3", "DKT", "COQ4", "COQ2", "TRI3", "TRI6", "QUA4", "QUA8", "CUB8",
-    "TET4", "PRI6", "SEG2", "JOI2", "JOI3", "JOI4",
+    "TET4", "PRI6", "SEG2", "JOI2", "JOI3", "JOI4", "ICT3", "ICQ4", "ICT6", "ICQ8", "ICT4", "ICC8", "ICP6",
 ];
 
 const BEHAVIOURS: &[&str] = &["ELASTIQUE", "ISOTROPE"];
@@ -95,6 +96,9 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         }
     }
     let mut model = Model { zones: vec![] };
+    if let Some(&(_, ty)) = incomp::NAMES.iter().find(|(n, _)| *n == element) {
+        return incompressible_model(a, geo, formulation, behaviour, element, ty, mode);
+    }
     // Massive elements follow the mesh: one zone per element type.
     if element.is_empty() || ElemType::from_name(&element).is_some() {
         for p in &geo.parts {
@@ -110,6 +114,42 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         model.zones.push(ModelZone { mesh: geo, formulation, behaviour, element, mode });
     }
     Ok(vec![Value::Model(Rc::new(model))])
+}
+
+/// A model of incompressible elements (ICT3 on TRI3, ICQ4 on QUA4, ...):
+/// one zone per mesh part, each of the element's own geometry.
+fn incompressible_model(
+    a: &Args,
+    geo: Mesh,
+    formulation: String,
+    behaviour: Vec<String>,
+    element: String,
+    ty: ElemType,
+    mode: String,
+) -> Result<Vec<Value>> {
+    if let Some(p) = geo.parts.iter().find(|p| p.ty != ty) {
+        return Err(a.err(format!(
+            "{} is the incompressible element on {} meshes; this mesh has {} elements",
+            element,
+            ty.name(),
+            p.ty.name()
+        )));
+    }
+    if (ty.dim() == 3) != (mode == "TRID") {
+        return Err(a.err(format!("{} elements are not available in mode {}", element, mode)));
+    }
+    let zones = geo
+        .parts
+        .iter()
+        .map(|p| ModelZone {
+            mesh: Mesh::single(p.clone()),
+            formulation: formulation.clone(),
+            behaviour: behaviour.clone(),
+            element: element.clone(),
+            mode: mode.clone(),
+        })
+        .collect();
+    Ok(vec![Value::Model(Rc::new(Model { zones }))])
 }
 
 /// Behaviour families beyond elasticity (mode.notice): accepted by MODE,
@@ -291,6 +331,7 @@ pub(crate) fn formulation(zone: &ModelZone) -> Formulation {
         "Q4RI" => Formulation::Q4ri,
         "Q8RI" => Formulation::Q8ri,
         "JOI2" | "JOI3" | "JOI4" => Formulation::Joint,
+        e if incomp::NAMES.iter().any(|(n, _)| *n == e) => Formulation::Incomp,
         _ => Formulation::Solid,
     }
 }

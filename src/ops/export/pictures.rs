@@ -184,11 +184,20 @@ pub(super) fn vect(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         let w = w.trim().to_uppercase();
         if let Some(c) = crate::fem::colour::Colour::from_name(&w) {
             colour = c;
-        } else if comps.contains(&w) || ["DEPL", "FORC", "ROTA", "MOME"].contains(&w.as_str()) {
-            chosen.push(w);
         } else {
-            return Err(a.err(format!("the field has no component {} (it has {})", w, comps.join(" "))));
+            chosen.push(w);
         }
+    }
+    // A direction the field lacks draws as zero (Cast3M decks name FX FY
+    // for a field of FY only); a list naming none of the field's
+    // components is a mistake.
+    let known = |w: &String| comps.contains(w) || ["DEPL", "FORC", "ROTA", "MOME"].contains(&w.as_str());
+    if !chosen.is_empty() && !chosen.iter().any(known) {
+        return Err(a.err(format!(
+            "the field has none of the components {} (it has {})",
+            chosen.join(" "),
+            comps.join(" ")
+        )));
     }
     if chosen.is_empty() {
         chosen = comps;
