@@ -142,12 +142,25 @@ fn dall(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     for _ in 0..4 {
         sides.push(a.req::<Rc<Mesh>>()?);
     }
-    a.keyword(&["PLAN"]);
+    use mg::dall_support::Support;
+    let point = |a: &mut Args| a.req::<PointId>().map(|p| it.nodes.get(p.0));
+    let support = match a.keyword(&["PLAN", "SPHE", "CYLI", "CONI"]) {
+        Some("SPHE") => Some(Support::Sphere(point(a)?)),
+        Some("CYLI") => Some(Support::Cylinder(point(a)?, point(a)?)),
+        Some("CONI") => Some(Support::Cone(point(a)?, point(a)?)),
+        _ => None,
+    };
     let ty = match ElemType::from_name(&it.opts.elem) {
         Some(t @ (ElemType::Qua4 | ElemType::Tri3 | ElemType::Qua8 | ElemType::Tri6)) => t,
         _ => ElemType::Qua4,
     };
-    Ok(mesh_val(mg::dall(&mut it.nodes, [&sides[0], &sides[1], &sides[2], &sides[3]], ty)?))
+    let first = it.nodes.len();
+    let m = mg::dall(&mut it.nodes, [&sides[0], &sides[1], &sides[2], &sides[3]], ty)?;
+    if let Some(support) = support {
+        let contour: Vec<usize> = sides.iter().flat_map(|s| s.node_list()).collect();
+        mg::dall_support::project(&mut it.nodes, first, &contour, support)?;
+    }
+    Ok(mesh_val(m))
 }
 
 fn tran(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
