@@ -19,7 +19,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "DROI", signature: "DROI (n) P1|LINE P2 ('DINI' d1) ('DFIN' d2) ('COULEUR' colour)", doc: "A straight line of n elements (SEG2 or SEG3 per OPTI ELEM).", example: "l = droi 10 p1 p2 ;", f: droi },
     // D and C are Cast3M's own abbreviations of DROI and CERC (`p1 d 10 p2`).
     OpDef { name: "D", signature: "D (n) P1|LINE P2 ('DINI' d1) ('DFIN' d2)", doc: "Abbreviation of DROI.", example: "l = p1 d 10 p2 ;", f: droi },
-    OpDef { name: "DALL", signature: "DALL LINE1 LINE2 LINE3 LINE4 ('PLAN')", doc: "A structured surface (OPTI ELEM QUA4, TRI3, QUA8, TRI6) from four sides forming a closed contour.", example: "s = dall bas dro hau gau ;", f: dall },
+    OpDef { name: "DALL", signature: "DALL LINE1 LINE2 LINE3 LINE4 ('PLAN' | 'SPHE' CENTRE | 'CYLI' P1 P2 | 'CONI' APEX P2)", doc: "A structured surface (OPTI ELEM QUA4, TRI3, QUA8, TRI6) from four sides forming a closed contour.", example: "s = dall bas dro hau gau ;", f: dall },
     OpDef { name: "TRAN", signature: "GEO TRAN (n) ('DINI' d1) ('DFIN' d2) VECTOR", doc: "Sweep a line into a surface or a surface into a volume along a vector.", example: "s = l tran 4 (0. 1.) ;", f: tran },
     OpDef { name: "ROTA", signature: "GEO ROTA (n) ANGLE CENTRE (AXIS_POINT)", doc: "Sweep by rotation (angle in degrees) about a point (2D) or an axis (3D).", example: "s = l rota 8 90. o ;", f: rota },
     OpDef { name: "VOLU", signature: "VOLU (n) SURF1 SURF2 | VOLU (n) SURF 'TRAN' VECTOR | VOLU (n) SURF 'ROTA' ANGLE P1 (P2)", doc: "Volume between two compatible surfaces, or swept from a surface by a translation or a rotation (as TRAN and ROTA).", example: "v = volu 3 s1 s2 ;", f: volu },

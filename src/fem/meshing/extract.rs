@@ -117,7 +117,10 @@ impl ContEdges {
 /// an error unless `empty_ok` (`'NOID'`).
 pub fn cont_with(mesh: &Mesh, which: ContEdges, empty_ok: bool) -> Result<Mesh, MeshError> {
     let out = cont_edges(mesh, which)?;
-    if !empty_ok && out.parts.iter().all(|p| p.is_empty()) {
+    // Only a surface without contour is an error: the end points of a
+    // closed line are an empty mesh, as before.
+    let surface = mesh.parts.iter().any(|p| !p.is_empty() && p.ty.dim() == 2);
+    if !empty_ok && surface && out.parts.iter().all(|p| p.is_empty()) {
         return fail("CONT", "the mesh has no contour (add 'NOID' to get an empty mesh)");
     }
     Ok(out)
