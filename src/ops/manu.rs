@@ -52,7 +52,20 @@ fn manu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         return Ok(vec![Value::Mesh(Rc::new(Mesh::points(&pts)))]);
     }
     let ty = ElemType::from_name(&what).ok_or_else(|| a.err(format!("unknown element type {}", what)))?;
-    Ok(vec![Value::Mesh(Rc::new(mg::manu(&it.nodes, ty, &pts)?))])
+    let m = mg::manu(&it.nodes, ty, &pts)?;
+    // A colour name after the points colours the element (`… 'VERT'`).
+    let colour = match a.peek_right() {
+        Some(Value::Mot(w)) => crate::fem::mesh::Colour::from_name(&w.to_uppercase()),
+        _ => None,
+    };
+    let m = match colour {
+        Some(c) => {
+            a.word();
+            m.coloured(c)
+        }
+        None => m,
+    };
+    Ok(vec![Value::Mesh(Rc::new(m))])
 }
 
 /// MANU 'CHML' mo c1 v1 …: the same values at every point of every

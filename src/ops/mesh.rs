@@ -19,7 +19,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "DROI", signature: "DROI (n) P1|LINE P2 ('DINI' d1) ('DFIN' d2) ('COULEUR' colour)", doc: "A straight line of n elements (SEG2 or SEG3 per OPTI ELEM).", example: "l = droi 10 p1 p2 ;", f: droi },
     // D and C are Cast3M's own abbreviations of DROI and CERC (`p1 d 10 p2`).
     OpDef { name: "D", signature: "D (n) P1|LINE P2 ('DINI' d1) ('DFIN' d2)", doc: "Abbreviation of DROI.", example: "l = p1 d 10 p2 ;", f: droi },
-    OpDef { name: "DALL", signature: "DALL LINE1 LINE2 LINE3 LINE4 ('PLAN')", doc: "A structured surface (OPTI ELEM QUA4, TRI3, QUA8, TRI6) from four sides forming a closed contour.", example: "s = dall bas dro hau gau ;", f: dall },
+    OpDef { name: "DALL", signature: "DALL LINE1 LINE2 LINE3 LINE4 ('PLAN' | 'SPHE' CENTRE | 'CYLI' P1 P2 | 'CONI' APEX P2)", doc: "A structured surface (OPTI ELEM QUA4, TRI3, QUA8, TRI6) from four sides forming a closed contour.", example: "s = dall bas dro hau gau ;", f: dall },
     OpDef { name: "TRAN", signature: "GEO TRAN (n) ('DINI' d1) ('DFIN' d2) VECTOR", doc: "Sweep a line into a surface or a surface into a volume along a vector.", example: "s = l tran 4 (0. 1.) ;", f: tran },
     OpDef { name: "ROTA", signature: "GEO ROTA (n) ANGLE CENTRE (AXIS_POINT)", doc: "Sweep by rotation (angle in degrees) about a point (2D) or an axis (3D).", example: "s = l rota 8 90. o ;", f: rota },
     OpDef { name: "VOLU", signature: "VOLU (n) SURF1 SURF2 | VOLU (n) SURF 'TRAN' VECTOR | VOLU (n) SURF 'ROTA' ANGLE P1 (P2)", doc: "Volume between two compatible surfaces, or swept from a surface by a translation or a rotation (as TRAN and ROTA).", example: "v = volu 3 s1 s2 ;", f: volu },
@@ -142,12 +142,25 @@ fn dall(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     for _ in 0..4 {
         sides.push(a.req::<Rc<Mesh>>()?);
     }
-    a.keyword(&["PLAN"]);
+    use mg::dall_support::Support;
+    let point = |a: &mut Args| a.req::<PointId>().map(|p| it.nodes.get(p.0));
+    let support = match a.keyword(&["PLAN", "SPHE", "CYLI", "CONI"]) {
+        Some("SPHE") => Some(Support::Sphere(point(a)?)),
+        Some("CYLI") => Some(Support::Cylinder(point(a)?, point(a)?)),
+        Some("CONI") => Some(Support::Cone(point(a)?, point(a)?)),
+        _ => None,
+    };
     let ty = match ElemType::from_name(&it.opts.elem) {
         Some(t @ (ElemType::Qua4 | ElemType::Tri3 | ElemType::Qua8 | ElemType::Tri6)) => t,
         _ => ElemType::Qua4,
     };
-    Ok(mesh_val(mg::dall(&mut it.nodes, [&sides[0], &sides[1], &sides[2], &sides[3]], ty)?))
+    let first = it.nodes.len();
+    let m = mg::dall(&mut it.nodes, [&sides[0], &sides[1], &sides[2], &sides[3]], ty)?;
+    if let Some(support) = support {
+        let contour: Vec<usize> = sides.iter().flat_map(|s| s.node_list()).collect();
+        mg::dall_support::project(&mut it.nodes, first, &contour, support)?;
+    }
+    Ok(mesh_val(m))
 }
 
 fn tran(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {

@@ -16,9 +16,9 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "COTE", signature: "COTE (n) SURFACE", doc: "Side n of a structured (DALL/TRAN) surface, or its four sides.", example: "b = cote 1 s ;", f: cote },
     OpDef { name: "FACE", signature: "FACE n VOLUME", doc: "Face n of a volume made by VOLU, TRAN or ROTA: 1 the base, 2 the opposite face, 3 the lateral surface.", example: "haut = face 2 v ;", f: face },
     OpDef { name: "ENVE", signature: "ENVE VOLUME", doc: "The envelope of a volume mesh: the faces that belong to one element only (TRI3/QUA4), oriented outwards as in their elements.", example: "peau = enve v ;", f: enve },
-    OpDef { name: "CONT", signature: "CONT GEO", doc: "Contour: boundary edges of a surface, end points of a line.", example: "c = cont s ;", f: cont },
+    OpDef { name: "CONT", signature: "CONT ('NOID') ('EXTE'|'INTE'|'TOUT') GEO", doc: "Contour: boundary edges of a surface, end points of a line.", example: "c = cont s ;", f: cont },
     OpDef { name: "ELIM", signature: "ELIM (crit) GEO (GEO2 …)", doc: "Merge nodes closer than crit, in every object (several meshes: their nodes with each other's).", example: "elim 1.e-5 l ;", f: elim },
-    OpDef { name: "INTE", signature: "GEO1 INTE GEO2", doc: "Elements common to two meshes.", example: "c = s1 inte s2 ;", f: inte },
+    OpDef { name: "INTE", signature: "GEO1 INTE GEO2 ('NOVERIF')", doc: "Elements common to two meshes.", example: "c = s1 inte s2 ;", f: inte },
     OpDef { name: "DIFF", signature: "DIFF GEO1 GEO2", doc: "Symmetric difference of two meshes.", example: "d = diff s1 s2 ;", f: diff },
     OpDef { name: "PLUS", signature: "OBJ PLUS VECTOR | GEO PLUS CHPOINT", doc: "A translated copy (geometric, not arithmetic), or the mesh moved by a displacement field.", example: "l2 = l plus (0. 1.) ;", f: plus },
     OpDef { name: "MOIN", signature: "OBJ MOIN VECTOR", doc: "A copy translated by minus the vector.", example: "l2 = l moin (0. 1.) ;", f: moin },
@@ -37,11 +37,17 @@ fn elem(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         let support = req_geo(a)?;
         return Ok(mesh_val(mg::elem_appui(&m, &support, strict)));
     }
+    // The type word comes first (`GEO ELEM POI1 1`: the first POI1
+    // element), the numbers, if any, count among that type's elements.
+    let ty = ElemType::ALL.into_iter().find(|t| a.keyword_next(&[t.name()]).is_some());
     if let Some(n) = a.opt::<i64>() {
-        return Ok(mesh_val(mg::elem_numbers(&m, None, &[n])?));
+        return Ok(mesh_val(mg::elem_numbers(&m, ty, &[n])?));
     }
     if let Some(l) = a.opt::<Rc<Vec<i64>>>() {
-        return Ok(mesh_val(mg::elem_numbers(&m, None, &l)?));
+        return Ok(mesh_val(mg::elem_numbers(&m, ty, &l)?));
+    }
+    if let Some(ty) = ty {
+        return Ok(mesh_val(mg::elem_type(&m, ty)));
     }
     let w = a.word().ok_or_else(|| a.missing("an element type, a number or APPU"))?;
     let ty = ElemType::from_name(&w.to_uppercase()).ok_or_else(|| a.err(format!("unknown element type {}", w)))?;
@@ -84,8 +90,17 @@ fn enve(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 fn cont(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    use crate::fem::meshing::extract::ContEdges;
+    let noid = a.keyword(&["NOID"]).is_some();
+    let which = match a.keyword(&["EXTE", "INTE", "TOUT"]) {
+        Some("INTE") => ContEdges::Interior,
+        Some("TOUT") => ContEdges::All,
+        _ => ContEdges::Exterior,
+    };
+    let noid = noid || a.keyword(&["NOID"]).is_some();
     let m = a.req::<Rc<Mesh>>()?;
-    Ok(mesh_val(mg::cont(&m)?))
+    let noid = noid || a.keyword(&["NOID"]).is_some();
+    Ok(mesh_val(mg::extract::cont_with(&m, which, noid)?))
 }
 
 /// ELIM works in place in Cast3M: every object holding a merged node sees
@@ -136,7 +151,14 @@ fn renumber(v: &mut Value, map: &mg::NodeMap, seen: &mut std::collections::HashS
 fn inte(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let x = req_geo(a)?;
     let y = req_geo(a)?;
-    Ok(mesh_val(mg::inte(&x, &y)))
+    // An empty intersection is an error unless 'NOVERIF' asks for an
+    // empty mesh (inte.notice).
+    let noverif = a.keyword(&["NOVERIF"]).is_some();
+    let m = mg::inte(&x, &y);
+    if m.n_elements() == 0 && !noverif {
+        return Err(a.err("the intersection is empty (add 'NOVERIF' to get an empty mesh)"));
+    }
+    Ok(mesh_val(m))
 }
 
 fn diff(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {

@@ -90,6 +90,43 @@ pub fn elem_appui(mesh: &Mesh, support: &Mesh, strict: bool) -> Mesh {
 /// * Of a line: its end points (nodes ending exactly one element), as POI1
 ///   in order of appearance; empty for a closed line.
 pub fn cont(mesh: &Mesh) -> Result<Mesh, MeshError> {
+    cont_with(mesh, ContEdges::Exterior, true)
+}
+
+/// Which edges of a surface CONT keeps, by the number of elements
+/// sharing them (cont.notice): one (`EXTE`), three or more (`INTE`: the
+/// junctions of several surfaces), anything but two (`TOUT`).
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub enum ContEdges {
+    Exterior,
+    Interior,
+    All,
+}
+
+impl ContEdges {
+    fn keeps(self, uses: usize) -> bool {
+        match self {
+            ContEdges::Exterior => uses == 1,
+            ContEdges::Interior => uses >= 3,
+            ContEdges::All => uses != 2,
+        }
+    }
+}
+
+/// CONT with its options: `which` edges of a surface; an empty contour is
+/// an error unless `empty_ok` (`'NOID'`).
+pub fn cont_with(mesh: &Mesh, which: ContEdges, empty_ok: bool) -> Result<Mesh, MeshError> {
+    let out = cont_edges(mesh, which)?;
+    // Only a surface without contour is an error: the end points of a
+    // closed line are an empty mesh, as before.
+    let surface = mesh.parts.iter().any(|p| !p.is_empty() && p.ty.dim() == 2);
+    if !empty_ok && surface && out.parts.iter().all(|p| p.is_empty()) {
+        return fail("CONT", "the mesh has no contour (add 'NOID' to get an empty mesh)");
+    }
+    Ok(out)
+}
+
+fn cont_edges(mesh: &Mesh, which: ContEdges) -> Result<Mesh, MeshError> {
     let parts: Vec<&Part> = mesh.parts.iter().filter(|p| !p.is_empty()).collect();
     let dim = parts.iter().map(|p| p.ty.dim()).max().unwrap_or(0);
     match dim {
@@ -97,7 +134,7 @@ pub fn cont(mesh: &Mesh) -> Result<Mesh, MeshError> {
         3 => fail("CONT", "the contour of a volume is a surface: use ENVE"),
         1 => Ok(line_ends(&parts)),
         _ => {
-            let bnd = boundary_edges(&parts);
+            let bnd = shared_edges(&parts, which);
             let loops = walk(&bnd);
             let mut out: Vec<(ElemType, Vec<usize>)> = Vec::new();
             for &i in loops.iter().flatten() {
@@ -248,6 +285,12 @@ fn push_edge(out: &mut Vec<(ElemType, Vec<usize>)>, e: &[usize]) {
 
 /// Boundary edges of the surface parts, in element order.
 pub(crate) fn boundary_edges(parts: &[&Part]) -> Vec<Vec<usize>> {
+    shared_edges(parts, ContEdges::Exterior)
+}
+
+/// The edges of the surface elements whose number of users `which`
+/// keeps, each once (at its first occurrence, oriented as there).
+fn shared_edges(parts: &[&Part], which: ContEdges) -> Vec<Vec<usize>> {
     let key = |e: &[usize]| {
         let mut k = e.to_vec();
         k.sort_unstable();
@@ -262,7 +305,8 @@ pub(crate) fn boundary_edges(parts: &[&Part]) -> Vec<Vec<usize>> {
     for e in &all {
         *uses.entry(key(e)).or_default() += 1;
     }
-    all.into_iter().filter(|e| uses[&key(e)] == 1).collect()
+    let mut seen = HashSet::new();
+    all.into_iter().filter(|e| which.keeps(uses[&key(e)]) && seen.insert(key(e))).collect()
 }
 
 /// Chain edges into loops (lists of edge indices), as described in [`cont`].

@@ -23,6 +23,7 @@ pub mod between;
 pub mod contour;
 pub mod couture;
 pub mod dall;
+pub mod dall_support;
 pub mod edges;
 pub mod edit;
 pub mod extract;

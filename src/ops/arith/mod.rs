@@ -125,7 +125,17 @@ fn binary(it: &mut Interp, a: &mut Args, op: Bin) -> Result<Vec<Value>> {
         Some(r) => r,
         None => table::apply(it, a, op, &x, &y)?,
     };
-    Ok(vec![arith::check(op, &x, &y, r).map_err(|e| a.err(e))?])
+    let r = arith::check(op, &x, &y, r).map_err(|e| a.err(e))?;
+    // Two fields combined may be given the result's nature
+    // (`c1 * c2 'NATURE' 'DISCRET'`).
+    if let Value::Chpo(c) = &r {
+        if let Some(n) = crate::ops::fields::nature_word(a)? {
+            let mut c = (**c).clone();
+            c.nature = n;
+            return Ok(vec![Value::Chpo(std::rc::Rc::new(c))]);
+        }
+    }
+    Ok(vec![r])
 }
 
 fn plus(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
