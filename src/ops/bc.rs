@@ -22,8 +22,8 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "RELA",
-        signature: "RELA ('MINI'|'MAXI') (c1) comp1 GEO1 (+|-) (c2) comp2 GEO2 … | RELA ('MINI'|'MAXI') CHPOINT ('DUAL' CHPOINT)",
-        doc: "Linear relations between unknowns, node by node (MINI: >= d, MAXI: <= d). From a field, one relation whose coefficients are the field's values; 'DUAL' gives a non-associated reaction direction (the system is then solved as non-symmetric).",
+        signature: "RELA ('MINI'|'MAXI') (c1) comp1 GEO1 (+|-) (c2) comp2 GEO2 … | RELA ('MINI'|'MAXI') CHPOINT ('DUAL' CHPOINT) | RELA 'ENSE' comp GEO",
+        doc: "Linear relations between unknowns, node by node (MINI: >= d, MAXI: <= d). From a field, one relation whose coefficients are the field's values; 'DUAL' gives a non-associated reaction direction (the system is then solved as non-symmetric). 'ENSE': one common value of the component on all the nodes.",
         example: "r = rela 'MINI' 1. 'UX' pb - 1. 'UX' pa ;",
         f: rela,
     },
@@ -178,6 +178,19 @@ fn rela(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         let m = mult_node(it, first);
         let mut rig = Rigidite::new(Subtype::Blocage);
         rig.conds.push(CondRow { mult_node: m, terms, kind, dual });
+        return Ok(vec![Value::Rigi(Rc::new(rig))]);
+    }
+    // 'ENSE' comp GEO: the component takes one value on all the nodes,
+    // written as u(node k) - u(node 1) = 0 for every other node.
+    if a.keyword(&["ENSE"]).is_some() {
+        let comp = a.word_not_operator().ok_or_else(|| a.missing("a component name"))?;
+        let nodes = req_geo(a)?.node_list();
+        let mut rig = Rigidite::new(Subtype::Blocage);
+        for &k in nodes.iter().skip(1) {
+            let row = vec![(k, comp.clone(), 1.0), (nodes[0], comp.clone(), -1.0)];
+            let m = mult_node(it, k);
+            rig.conds.push(CondRow::new(m, row, kind));
+        }
         return Ok(vec![Value::Rigi(Rc::new(rig))]);
     }
     // Terms: (sign) (coef) comp geo, repeated.

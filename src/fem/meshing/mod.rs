@@ -28,6 +28,7 @@ pub mod edit;
 pub mod extract;
 pub mod free;
 pub mod grading;
+pub mod grid;
 pub mod line;
 pub mod motion;
 pub mod order;
