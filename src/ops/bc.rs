@@ -23,7 +23,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef {
         name: "RELA",
         signature: "RELA ('MINI'|'MAXI') (c1) comp1 GEO1 (+|-) (c2) comp2 GEO2 … | RELA ('MINI'|'MAXI') CHPOINT ('DUAL' CHPOINT) | RELA 'ENSE' comp… GEO",
-        doc: "Linear relations between unknowns, node by node (MINI: >= d, MAXI: <= d). From a field, one relation whose coefficients are the field's values; 'DUAL' gives a non-associated reaction direction (the system is then solved as non-symmetric).",
+        doc: "Linear relations between unknowns, node by node (MINI: >= d, MAXI: <= d). From a field, one relation whose coefficients are the field's values; 'DUAL' gives a non-associated reaction direction (the system is then solved as non-symmetric). 'ENSE': each listed component takes one common value on all the nodes.",
         example: "r = rela 'MINI' 1. 'UX' pb - 1. 'UX' pa ;",
         f: rela,
     },

@@ -13,8 +13,8 @@ use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "ELEM", signature: "GEO ELEM TYPE | GEO ELEM n|LISTENTI | GEO ELEM 'APPU' ('STRI'|'LARG') GEO2 | LINE ELEM 'COMP' P1 P2 | GEO ELEM 'TYPE'", doc: "Elements of a mesh by type, by number, or resting on another mesh; the part of a line between two of its points; the element types of a mesh (LISTMOTS).", example: "q = s elem qua4 ;", f: elem },
-    OpDef { name: "COTE", signature: "COTE (n) SURFACE", doc: "Side n of a structured (DALL/TRAN) surface, or its four sides.", example: "b = cote 1 s ;", f: cote },
-    OpDef { name: "FACE", signature: "FACE n VOLUME", doc: "Face n of a volume made by VOLU, TRAN or ROTA: 1 the base, 2 the opposite face, 3 the lateral surface.", example: "haut = face 2 v ;", f: face },
+    OpDef { name: "COTE", signature: "COTE (n) SURFACE", doc: "Side n of a surface whose quadrilaterals form a grid (or of a DALL/TRAN surface of triangles), or its four sides.", example: "b = cote 1 s ;", f: cote },
+    OpDef { name: "FACE", signature: "FACE (n) VOLUME", doc: "Face n of a volume made by VOLU, TRAN or ROTA: 1 the base, 2 the opposite face, 3 the lateral surface; without n, the three.", example: "haut = face 2 v ;", f: face },
     OpDef { name: "ENVE", signature: "ENVE VOLUME", doc: "The envelope of a volume mesh: the faces that belong to one element only (TRI3/QUA4), oriented outwards as in their elements.", example: "peau = enve v ;", f: enve },
     OpDef { name: "CONT", signature: "CONT ('NOID') ('EXTE'|'INTE'|'TOUT') GEO", doc: "Contour: boundary edges of a surface, end points of a line.", example: "c = cont s ;", f: cont },
     OpDef { name: "ELIM", signature: "ELIM (crit) GEO (GEO2 …)", doc: "Merge nodes closer than crit, in every object (several meshes: their nodes with each other's).", example: "elim 1.e-5 l ;", f: elim },
@@ -65,9 +65,13 @@ fn cote(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 fn face(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let n = a.req::<i64>()?;
+    let n = a.opt::<i64>();
     let v = a.req::<Rc<Mesh>>()?;
-    Ok(mesh_val(mg::face(&v, n)?))
+    match n {
+        Some(n) => Ok(mesh_val(mg::face(&v, n)?)),
+        // `f1 f2 f3 = FACE v`: the three faces.
+        None => (1..=3).map(|k| Ok(Value::Mesh(Rc::new(mg::face(&v, k)?)))).collect(),
+    }
 }
 
 /// ENVE: the faces of the volume elements that no other element shares

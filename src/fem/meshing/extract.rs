@@ -145,7 +145,9 @@ fn cont_edges(mesh: &Mesh, which: ContEdges) -> Result<Mesh, MeshError> {
     }
 }
 
-/// `COTE n SURF`: side `n` (1 to 4) of a surface made by DALL or TRAN.
+/// `COTE n SURF`: side `n` (1 to 4) of a structured surface. A surface of
+/// quadrilaterals is read as a grid from its connectivity (see
+/// [`super::grid`]); one of triangles must come from DALL or TRAN:
 ///
 /// The sides are recovered from the structure: the boundary is walked from
 /// the first edge of element 1 (the start of side 1 for DALL and TRAN, see
@@ -160,6 +162,14 @@ pub fn cote(mesh: &Mesh, n: i64) -> Result<Mesh, MeshError> {
         return fail(OP, format!("the side number must be 1 to 4 (got {n})"));
     }
     let parts: Vec<&Part> = mesh.parts.iter().filter(|p| !p.is_empty()).collect();
+    if parts.first().is_some_and(|p| super::grid::is_quad(p.ty)) && parts.iter().all(|q| q.ty == parts[0].ty) {
+        let sides = super::grid::grid_sides(&parts)?;
+        let mut out = Vec::new();
+        for e in &sides[n as usize - 1] {
+            push_edge(&mut out, e);
+        }
+        return Ok(mesh_of(out));
+    }
     let p = match parts.as_slice() {
         [p] if p.ty.dim() == 2 => *p,
         _ => return fail(OP, "needs a surface of a single element type, as DALL or TRAN make"),

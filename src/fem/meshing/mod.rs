@@ -29,6 +29,7 @@ pub mod edit;
 pub mod extract;
 pub mod free;
 pub mod grading;
+pub mod grid;
 pub mod joints;
 pub mod line;
 pub mod motion;
