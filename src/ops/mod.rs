@@ -54,6 +54,8 @@ mod pasapas;
 mod pasapas_fields;
 mod pasapas_model;
 mod poin_field;
+mod elem_field;
+mod chan_support;
 mod pointwise;
 mod post;
 mod pres_field;
