@@ -10,12 +10,14 @@ mod calp;
 #[cfg(test)]
 mod catalogue_tests;
 mod chan_cham;
+mod chan_support;
 mod chargement;
 mod colour;
 mod config;
 mod contact;
 mod curves;
 mod dofs;
+mod elem_field;
 mod empty;
 mod evol;
 mod evol_extr;

@@ -14,7 +14,7 @@ use std::rc::Rc;
 const TESTS: &[&str] = &["MAXI", "MINI", "SUPE", "INFE", "EGSU", "EGIN", "EGAL", "DIFF", "COMP"];
 
 /// Which components take part ('AVEC' list / 'SANS' list / all).
-struct Filter {
+pub(crate) struct Filter {
     keep: Option<(bool, Rc<Vec<String>>)>,
 }
 
@@ -27,7 +27,7 @@ impl Filter {
         Ok(Filter { keep })
     }
 
-    fn takes(&self, comp: &str) -> bool {
+    pub(crate) fn takes(&self, comp: &str) -> bool {
         match &self.keep {
             None => true,
             Some((avec, names)) => names.iter().any(|n| n == comp) == *avec,
@@ -36,7 +36,7 @@ impl Filter {
 }
 
 /// The test named after POIN, with its reference values.
-enum Test {
+pub(crate) enum Test {
     Maxi,
     Mini,
     Compare(&'static str, f64),
@@ -45,7 +45,7 @@ enum Test {
 
 /// The test and its options ('ABS', a component filter), which may stand
 /// before the test, after its keyword or after its values.
-fn read_test(a: &mut Args) -> Result<(Test, bool, Filter)> {
+pub(crate) fn read_test(a: &mut Args) -> Result<(Test, bool, Filter)> {
     let mut abs = false;
     let mut filter = Filter { keep: None };
     let mut options = |a: &mut Args| -> Result<()> {
@@ -71,7 +71,7 @@ fn read_test(a: &mut Args) -> Result<(Test, bool, Filter)> {
 
 /// The test as a predicate on one value, given every value it looks at
 /// (MAXI/MINI need their extreme; EGAL/DIFF a round-off tolerance).
-fn predicate(test: Test, vals: &[f64]) -> Box<dyn Fn(f64) -> bool> {
+pub(crate) fn predicate(test: Test, vals: &[f64]) -> Box<dyn Fn(f64) -> bool> {
     let scale = vals.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
     match test {
         Test::Maxi => {

@@ -10,6 +10,7 @@ mod describe;
 mod display;
 pub mod field;
 pub mod finite;
+mod mchaml_broadcast;
 pub mod model;
 mod model_union;
 pub mod nuage;

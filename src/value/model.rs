@@ -93,7 +93,8 @@ impl Mchaml {
             )
         };
         if self.zones.len() != b.zones.len() || self.zones.iter().zip(&b.zones).any(|(p, q)| shape(p) != shape(q)) {
-            return Err("the element fields do not have the same zones, elements and components".into());
+            return crate::value::mchaml_broadcast::combine_scalar(self, b, f)
+                .ok_or_else(|| "the element fields do not have the same zones, elements and components".into());
         }
         let mut out = self.clone();
         for (z, w) in out.zones.iter_mut().zip(&b.zones) {
