@@ -17,7 +17,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "EPSI", signature: "EPSI ('LINE') MMODEL (MCHAML) CHPOINT", doc: "Strains (EPXX … GAXY; generalised strains for bars and beams; EPSS EPTT GAST RTSS RTTT RTST for shells).", example: "eps = epsi mo ma u ;", f: epsi },
     OpDef { name: "GRAD", signature: "GRAD MMODEL CHPOINT (MCHAML)", doc: "Gradient of the displacements of a massive model at its stress points (UX,X UX,Y UY,X UY,Y …; UR,R UR,Z UZ,R UZ,Z UT,T in AXIS).", example: "g = grad mo u ;", f: grad },
     OpDef { name: "VMIS", signature: "VMIS MMODEL MCHAML_STRESS (MCHAML)", doc: "Von Mises equivalent stress (the beam formula for bars and beams).", example: "vm = vmis mo sig ma ;", f: vmis },
-    OpDef { name: "CHAN", signature: "CHAN 'POI1'|QUA8|TRI6|SEG3|QUA4|TRI3|SEG2 GEO | CHAN 'CHPO'|'NOEUD'|'GRAVITE' MMODEL MCHAML ('MOYE'|'SOMM') | CHAN 'INCO' RIGIDITE LISTMOTS LISTMOTS | CHAN 'ATTRIBUT' CHPOINT 'NATURE' word | CHAN 'CHAM' CHPOINT GEO|MMODEL ('NOEUD'|'GRAVITE'|'RIGIDITE'|'MASSE'|'STRESSES') (subtype) | CHAN 'TYPE' MCHAML word | CHAN 'MAJU'|'MINU' MOT", doc: "Change the type or attributes of an object.", example: "pts = chan 'POI1' l ;", f: chan },
+    OpDef { name: "CHAN", signature: "CHAN 'POI1'|QUA8|TRI6|SEG3|QUA4|TRI3|SEG2 GEO | CHAN 'CHPO'|'NOEUD'|'GRAVITE'|'STRESSES'|'RIGIDITE'|'MASSE' MMODEL MCHAML ('MOYE'|'SOMM') | CHAN 'INCO' RIGIDITE LISTMOTS LISTMOTS | CHAN 'ATTRIBUT' CHPOINT 'NATURE' word | CHAN 'CHAM' CHPOINT GEO|MMODEL ('NOEUD'|'GRAVITE'|'RIGIDITE'|'MASSE'|'STRESSES') (subtype) | CHAN 'TYPE' MCHAML word | CHAN 'MAJU'|'MINU' MOT", doc: "Change the type or attributes of an object.", example: "pts = chan 'POI1' l ;", f: chan },
     OpDef { name: "PRES", signature: "PRES 'MASS' MMODEL (MCHAML) VALUE GEO | PRES 'COQU' MMODEL VALUE ('NORM') | PRES MMODEL_PRESSION 'PRES' VALUE|CHPOINT", doc: "Of a pressure model (MODE … 'CHARGEMENT' 'PRESSION'): the pressure at the element nodes, an MCHAML for BSIG (positive along the left normal of each oriented line). Otherwise: Nodal forces equivalent to a pressure on edges/faces of a massive model (positive towards the solid; in plane stress for the DIM3 thickness of the characteristics MCHAML when given, else per unit thickness), or on every element of a shell model (positive along the element normal).", example: "f = pres 'MASS' mo 10. haut ;", f: pres },
     OpDef { name: "MASS", signature: "MASS MMODEL MCHAML (MCHAML) ('LUMP') | MASS ('DEPL') ('ROTA') (comps) VALUE GEO", doc: "Mass matrix (consistent, or lumped with 'LUMP'), or point masses on the given unknowns of every node of GEO.", example: "m = mass mo ma ;", f: mass },
     OpDef { name: "LUMP", signature: "LUMP MMODEL MCHAML (MCHAML)", doc: "Lumped (diagonal) mass matrix of a model.", example: "m = lump mo ma ;", f: lump },
@@ -184,7 +184,7 @@ fn vmis(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     const KW: &[&str] = &[
         "POI1", "QUA8", "TRI6", "SEG3", "QUA4", "TRI3", "SEG2", "CHPO", "NOEUD", "INCO", "ATTRIBUT", "COMP", "TYPE",
-        "GRAVITE", "MAJU", "MINU", "QUAD", "LIGN", "CHAM", "LINE",
+        "GRAVITE", "MAJU", "MINU", "QUAD", "LIGN", "CHAM", "LINE", "STRESSES", "RIGIDITE", "MASSE",
     ];
     // CHAN (TYPE) POI1_MESH LISTENTI: elements joining the mesh's points.
     if let Some(r) = super::chan_cham::connect(it, a)? {
@@ -283,7 +283,7 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             // CHAN 'CHAM' of an element field: to the support named after
             // it, the nodes by default.
             let k = match k {
-                "CHAM" => a.keyword(&["NOEUD", "GRAVITE"]).unwrap_or("NOEUD"),
+                "CHAM" => a.keyword(&["NOEUD", "GRAVITE", "STRESSES", "RIGIDITE", "MASSE"]).unwrap_or("NOEUD"),
                 _ => k,
             };
             // CHPO: the nodal value is the mean of the elements' values
@@ -308,7 +308,13 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 let refs = crate::fem::shape::ref_nodes(part.ty);
                 let centre = refs.iter().fold([0.0; 3], |acc, p| [0, 1, 2].map(|i| acc[i] + p[i] / refs.len() as f64));
                 let at_centre = crate::fem::shape::eval(part.ty, centre).n;
-                let npts = crate::fem::element::gauss_points(form, part.ty).len();
+                let gauss = crate::fem::element::gauss_points(form, part.ty);
+                let npts = gauss.len();
+                // STRESSES, RIGIDITE, MASSE: the nodal values interpolated
+                // at the element's integration points.
+                let at_points: Vec<Vec<f64>> =
+                    gauss.iter().map(|(p, _)| crate::fem::shape::eval(part.ty, *p).n).collect();
+                let to_points = matches!(k, "STRESSES" | "RIGIDITE" | "MASSE");
                 for (e, nodes) in part.elems().enumerate() {
                     let g = match z.values.get(e) {
                         // A field at the element centres (CHAN 'GRAVITE'):
@@ -335,16 +341,27 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                             .map(|c| at_centre.iter().zip(&g.values).map(|(w, row)| w * row[c]).sum())
                             .collect();
                         nz.values.push(vec![v]);
+                    } else if to_points {
+                        nz.values.push(
+                            at_points
+                                .iter()
+                                .map(|w| {
+                                    (0..z.comps.len())
+                                        .map(|c| w.iter().zip(&g.values).map(|(wi, row)| wi * row[c]).sum())
+                                        .collect()
+                                })
+                                .collect(),
+                        );
                     } else {
                         nz.values.push(g.values);
                     }
                 }
-                if k == "GRAVITE" {
+                if k == "GRAVITE" || to_points {
                     nz.at_nodes = false;
                 }
                 out_m.zones.push(nz);
             }
-            if k == "NOEUD" || k == "GRAVITE" {
+            if k != "CHPO" {
                 return Ok(vec![Value::Mchaml(Rc::new(out_m))]);
             }
             let avg = Chpoint::from_entries(
