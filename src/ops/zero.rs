@@ -117,7 +117,12 @@ fn internal_variables(zone: &ModelZone) -> Vec<String> {
 }
 
 /// GRADIENT, CONTRAIN, DEFORMAT, DEFINELA, PRINCIPA components.
-fn stress_point_comps(kind: &str, f: Formulation, m: Mode, zone: &ModelZone) -> std::result::Result<Vec<String>, String> {
+fn stress_point_comps(
+    kind: &str,
+    f: Formulation,
+    m: Mode,
+    zone: &ModelZone,
+) -> std::result::Result<Vec<String>, String> {
     let massive = matches!(f, Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri);
     let v: Vec<&str> = match kind {
         "CONTRAIN" if massive => solid::stress_comps(m),
