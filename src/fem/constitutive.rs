@@ -252,6 +252,40 @@ pub fn tresca(f: Formulation, mode: Mode, sig: &GaussField) -> Result<GaussField
     Ok(GaussField { comps: vec!["TRES"], values })
 }
 
+/// Hooke's law inverted for massive isotropic elements (ELAS on a stress
+/// field): ε_ii = (σ_ii − ν Σ_{j≠i} σ_jj)/E and engineering shears σ/G.
+/// The three direct stresses are always there (SMZZ included in the
+/// plane modes), so one formula serves every mode: in plane stress
+/// SMZZ = 0 gives EPZZ = −ν(σxx + σyy)/E.
+pub fn inverse_hooke(
+    f: Formulation,
+    ty: ElemType,
+    mode: Mode,
+    m: &Material,
+    sig: &GaussField,
+) -> Result<GaussField, FemError> {
+    if !matches!(f, Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri) {
+        return Err(FemError::NotFor { what: "Hooke's law on a stress field (ELAS)", form: f.name() });
+    }
+    check_solid(f, ty, mode)?;
+    let (e, nu) = (m.young(ty.name())?, m.poisson(ty.name())?);
+    let g = e / (2.0 * (1.0 + nu));
+    let names = solid::stress_comps(mode);
+    let values = sig
+        .values
+        .iter()
+        .map(|v| {
+            let s: Vec<f64> = names.iter().map(|c| get(sig, v, c)).collect();
+            let trace: f64 = s[..3].iter().sum();
+            s.iter()
+                .enumerate()
+                .map(|(i, si)| if i < 3 { ((1.0 + nu) * si - nu * trace) / e } else { si / g })
+                .collect()
+        })
+        .collect();
+    Ok(GaussField { comps: solid::strain_comps(mode), values })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -15,7 +15,13 @@ use std::rc::Rc;
 pub(crate) fn to_integration_points(a: &mut Args) -> Result<Vec<Value>> {
     let model = a.req::<Rc<Model>>()?;
     let m = a.req::<Rc<Mchaml>>()?;
-    let mut out = (*m).clone();
+    to_points(a, &model, &m)
+}
+
+/// The same once the model and field are read (also `CHAN 'CHAM' MCHAML
+/// MMODEL 'STRESSES'`); an optional subtype word may follow.
+pub(crate) fn to_points(a: &mut Args, model: &Model, m: &Mchaml) -> Result<Vec<Value>> {
+    let mut out = m.clone();
     if let Some(sub) = a.opt::<String>() {
         if !sub.trim().is_empty() {
             out.subtype = sub.trim().to_uppercase();
@@ -25,7 +31,7 @@ pub(crate) fn to_integration_points(a: &mut Args) -> Result<Vec<Value>> {
         if z.values.is_empty() {
             continue;
         }
-        let mz = zone_of(&model, z).ok_or_else(|| a.err("the field does not belong to this model"))?;
+        let mz = zone_of(model, z).ok_or_else(|| a.err("the field does not belong to this model"))?;
         let form = formulation(mz);
         let mut e = 0;
         let mut values = Vec::with_capacity(z.values.len());

@@ -75,6 +75,7 @@ mod transform;
 mod union;
 mod variable;
 mod variable_fields;
+mod zero;
 
 // The machine and the argument reader live in `eval`; the families name
 // them from here, as they always did.
@@ -142,6 +143,7 @@ impl Registry {
             nuage::OPS,
             tables::OPS,
             variable::OPS,
+            zero::OPS,
             pasapas::OPS,
         ] {
             for d in table {

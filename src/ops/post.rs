@@ -284,9 +284,12 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             // CHAN 'CHAM' of an element field: to the support named after
             // it, the nodes by default.
             let k = match k {
-                "CHAM" => a.keyword(&["NOEUD", "GRAVITE"]).unwrap_or("NOEUD"),
+                "CHAM" => a.keyword(&["NOEUD", "GRAVITE", "STRESSES", "RIGIDITE", "MASSE"]).unwrap_or("NOEUD"),
                 _ => k,
             };
+            if matches!(k, "STRESSES" | "RIGIDITE" | "MASSE") {
+                return super::chan_support::to_points(a, &model, &m);
+            }
             // CHPO: the nodal value is the mean of the elements' values
             // there ('MOYE', the default) or their sum ('SOMM').
             let summed = k == "CHPO" && a.keyword(&["MOYE", "SOMM"]) == Some("SOMM");
@@ -294,6 +297,15 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             let mut count = std::collections::HashMap::<(usize, String), f64>::new();
             let mut out_m = Mchaml { subtype: m.subtype.clone(), zones: vec![] };
             for z in &m.zones {
+                // Material data (constants, as MATE or EXCO of it give):
+                // the same values at every node.
+                let held;
+                let z = if z.values.is_empty() && !z.constants.is_empty() {
+                    held = constants_at_nodes(z);
+                    &held
+                } else {
+                    z
+                };
                 let mz = zone_of(&model, z).ok_or_else(|| a.err("the field does not belong to this model"))?;
                 let form = formulation(mz);
                 let part = z.mesh.parts.first().ok_or_else(|| a.err("empty zone"))?;
@@ -345,7 +357,7 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 }
                 out_m.zones.push(nz);
             }
-            if k == "NOEUD" || k == "GRAVITE" {
+            if k != "CHPO" {
                 return Ok(vec![Value::Mchaml(Rc::new(out_m))]);
             }
             let avg = Chpoint::from_entries(
@@ -529,4 +541,12 @@ fn model_mass(it: &Interp, model: Rc<Model>, fields: Vec<Rc<Mchaml>>, lumped: bo
         }
     }
     Ok(vec![Value::Rigi(Rc::new(rig))])
+}
+
+/// A zone of constants as point values at every node of every element.
+fn constants_at_nodes(z: &MchamlZone) -> MchamlZone {
+    let comps: Vec<String> = z.constants.keys().cloned().collect();
+    let row: Vec<f64> = z.constants.values().copied().collect();
+    let values = z.mesh.parts.iter().flat_map(|p| p.elems().map(|e| vec![row.clone(); e.len()])).collect();
+    MchamlZone { comps, values, at_nodes: true, constants: Default::default(), ..z.clone() }
 }

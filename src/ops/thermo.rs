@@ -21,7 +21,7 @@ use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "EPTH", signature: "EPTH MMODEL MCHAML CHPOINT_T", doc: "Thermal strains α(T − TREF) at the element points, from a temperature CHPOINT (component T) and the material's ALPH (TREF 0 by default). EPZZ = αΔT in the plane modes; bars and beams: EPSS of the element's mean temperature.", example: "ept = epth mo ma t ;", f: epth },
-    OpDef { name: "ELAS", signature: "ELAS MMODEL MCHAML MCHAML_STRAIN", doc: "Hooke's law on a strain field: the stresses (SMXX …, or EFFX … for bars and beams) of strains such as those of EPSI or EPTH.", example: "sth = elas mo ma (epth mo ma t) ;", f: elas },
+    OpDef { name: "ELAS", signature: "ELAS MMODEL MCHAML MCHAML_STRAIN|MCHAML_STRESS", doc: "Hooke's law on a strain field: the stresses (SMXX …, or EFFX … for bars and beams) of strains such as those of EPSI or EPTH; on a stress field of massive elements, the strains (EPXX …).", example: "sth = elas mo ma (epth mo ma t) ;", f: elas },
     OpDef { name: "THET", signature: "THET MMODEL MCHAML CHPOINT_T", doc: "Stresses of the thermal strains of a temperature CHPOINT (component T): ELAS mo ma (EPTH mo ma t) in one step.", example: "sth = thet mo ma t ;", f: thet },
     OpDef { name: "ENER", signature: "ENER (MMODEL) MCHAML_STRESS MCHAML_STRAIN", doc: "Strain energy density ½ σ:ε (component ENER; per unit length for bars and beams); INTG of it is the strain energy.", example: "w = intg mo (ener mo sig eps) ;", f: ener },
     OpDef { name: "INVA", signature: "INVA MMODEL MCHAML_STRESS", doc: "Stress invariants of massive elements: I1 = tr σ, J2 = ½ s:s and J3 = det s of the deviator s (σzz, σθθ included); √(3 J2) is the von Mises stress.", example: "inv = inva mo sig ;", f: inva },
@@ -152,6 +152,14 @@ fn elas(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         .find(|f| has_points(f))
         .cloned()
         .ok_or_else(|| a.missing("MCHAML of strains (from EPSI or EPTH)"))?;
+    if holds(&eps, STRESS_NAMES) && !holds(&eps, STRAIN_NAMES) {
+        // Stresses to strains: the law inverted.
+        let out = map_zones(a, &model, &eps, "DEFORMATIONS", |mz, ty, g| {
+            let mode = zone_mode(mz).map_err(|_| FemError::Unsupported { form: "ELAS", elem: ty.name(), mode: "?" })?;
+            constitutive::inverse_hooke(formulation(mz), ty, mode, &material_for(mz, &fields), g)
+        })?;
+        return Ok(vec![Value::Mchaml(Rc::new(out))]);
+    }
     if !holds(&eps, STRAIN_NAMES) {
         return Err(a.err(format!(
             "Hooke's law applies to a strain field (EPXX …, EPSS …); this field has {}",
