@@ -32,6 +32,7 @@ mod io;
 mod limits;
 mod lists;
 mod lists_search;
+mod ordo_cost;
 mod manu;
 mod masq;
 mod math;

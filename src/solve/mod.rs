@@ -26,6 +26,7 @@ pub mod cache;
 pub mod error;
 pub mod numbering;
 pub mod problem;
+pub mod assignment;
 pub mod twins;
 pub mod unilateral;
 
