@@ -76,7 +76,8 @@ impl Interp {
                 // After an object that is not a TABLE the '.' is only a
                 // separator: Cast3M's reader skips it and reads on
                 // (`PRES 'MASS' MOD1 pre1 . L13` gives PRES both).
-                ItemKind::Dot if matches!(out.last(), Some(Tok { kind: TokKind::Val(v), .. }) if !matches!(v, Value::Table(_))) => {}
+                ItemKind::Dot if matches!(out.last(), Some(Tok { kind: TokKind::Val(v), .. }) if !matches!(v, Value::Table(_))) =>
+                    {}
                 ItemKind::Dot => {
                     let key_item = &items[i + 1];
                     let table = match out.pop() {

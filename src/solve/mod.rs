@@ -21,12 +21,12 @@
 //!
 //! `unilateral` uses `bilateral`, never the other way round.
 
+pub mod assignment;
 pub mod bilateral;
 pub mod cache;
 pub mod error;
 pub mod numbering;
 pub mod problem;
-pub mod assignment;
 pub mod twins;
 pub mod unilateral;
 
