@@ -176,3 +176,18 @@ fn procedures_from_a_file() {
     let e = run(&dir, "lire 'PROC' 'lib.procedur' 'NONE' ;").unwrap_err();
     assert!(e.contains("has no procedure NONE"), "{}", e);
 }
+
+#[test]
+fn sort_chai_writes_lines() {
+    let dir = scratch("chai");
+    // Two calls append to the file OPTI SORT names, which is kept as named;
+    // numbers and words are shown as MESS shows them.
+    ok(&dir, "opti sort 'out.txt' ; sort 'CHAI' 'a' 12 ; sort 'CHAI' 'b' 'c' ; opti sort 'other.txt' ;");
+    let text = std::fs::read_to_string(dir.join("out.txt")).unwrap();
+    assert_eq!(text, "a 12\nb c\n");
+    // A new run starts the file again.
+    ok(&dir, "opti sort 'out.txt' ; sort 'CHAI' 'z' ;");
+    assert_eq!(std::fs::read_to_string(dir.join("out.txt")).unwrap(), "z\n");
+    let e = run(&dir, "opti sort 'out.txt' ; sort 'CHAI' (prog 1.) ;").unwrap_err();
+    assert!(e.contains("writes words and numbers, not a LISTREEL"), "{}", e);
+}

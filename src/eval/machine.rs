@@ -77,6 +77,11 @@ impl Interp {
                 // A '.' that ends a group or an instruction separates
                 // nothing: Cast3M passes over it (`p = x (-1.*x). ;`).
                 ItemKind::Dot if i + 1 == items.len() => {}
+                // After an object that is not a TABLE the '.' is only a
+                // separator: Cast3M's reader skips it and reads on
+                // (`PRES 'MASS' MOD1 pre1 . L13` gives PRES both).
+                ItemKind::Dot if matches!(out.last(), Some(Tok { kind: TokKind::Val(v), .. }) if !matches!(v, Value::Table(_))) =>
+                    {}
                 ItemKind::Dot => {
                     let key_item = &items[i + 1];
                     let table = match out.pop() {

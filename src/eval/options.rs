@@ -72,6 +72,9 @@ pub struct Exports {
     /// The AVS file SORT 'AVS' wrote in this run: 'SUIT' appends to it
     /// (and only to it, never to a file left by an earlier run).
     pub avs_written: Option<String>,
+    /// The text file SORT 'CHAI' writes to in this run: later lines are
+    /// appended while OPTI SORT names the same file.
+    pub text_written: Option<String>,
     /// The AVS file LIRE 'AVS' reads (OPTI LECT) and where its next
     /// structure starts (byte offset, line number): each LIRE reads one.
     pub avs_read: Option<(String, usize, usize)>,

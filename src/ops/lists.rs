@@ -5,7 +5,8 @@
 use super::{limits, Args, FromArg, OpDef};
 use crate::error::Result;
 use crate::eval::Interp;
-use crate::value::{Chpoint, Value};
+use crate::value::{Chpoint, Key, Table, Value};
+use std::cell::RefCell;
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
@@ -39,8 +40,8 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "ORDO",
-        signature: "ORDO LIST1 (LIST2 …) ('CROI'|'DECR') ('ABS') | ORDO EVOLUTIO ('CROI'|'DECR') ('ABS') | ORDO MAILLAGE",
-        doc: "Sort a LISTREEL, LISTENTI or LISTMOTS (increasing by default); further lists of the same length follow the first one's order, one result per list. An EVOLUTIO's curves are sorted by abscissa. A mesh: points by distance to the first, a line as one walk from end to end, other elements by vicinity.",
+        signature: "ORDO LIST1 (LIST2 …) ('CROI'|'DECR') ('ABS') ('NOCA') ('UNIQ' (tol)) | ORDO 'COUT' ('HONG'|'COMP') COSTS LIST1 (LIST2 …) | ORDO EVOLUTIO ('CROI'|'DECR') ('ABS') | ORDO MAILLAGE",
+        doc: "Sort a LISTREEL, LISTENTI or LISTMOTS (increasing by default); further lists of the same length follow the first one's order, one result per list. 'NOCA' compares words without case; 'UNIQ' (one list only) keeps one item of each run of equal ones (numbers within tol are equal). 'COUT' COSTS (n*n values, C(i,j) at (i-1)*n+j) gives the least total cost of an assignment (Hungarian method; 'COMP' tries every permutation), then each list permuted by it. An EVOLUTIO's curves are sorted by abscissa. A mesh: points by distance to the first, a line as one walk from end to end, other elements by vicinity.",
         example: "ls = ordo (prog 3. 1. 2.) ;",
         f: ordo,
     },
@@ -195,7 +196,7 @@ impl FromArg for AnyList {
     }
 }
 
-fn list_len(v: &Value) -> Option<usize> {
+pub(crate) fn list_len(v: &Value) -> Option<usize> {
     match v {
         Value::ListReel(l) => Some(l.len()),
         Value::ListEnti(l) => Some(l.len()),
@@ -209,6 +210,9 @@ fn ordo(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     if let Some(m) = a.opt::<Rc<crate::fem::mesh::Mesh>>() {
         return Ok(vec![Value::Mesh(Rc::new(crate::fem::meshing::order::ordo(&it.nodes, &m)?))]);
     }
+    if a.keyword(&["COUT"]).is_some() {
+        return super::ordo_cost::ordo_cost(a);
+    }
     let mut order = None;
     let mut use_abs = false;
     if let Some(ev) = a.opt::<Rc<crate::value::Evolution>>() {
@@ -221,13 +225,44 @@ fn ordo(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         return Ok(vec![Value::Evol(Rc::new(super::evol_extr::sorted(&ev, order == Some("DECR"), use_abs)))]);
     }
     let mut lists: Vec<Value> = Vec::new();
+    let (mut nocase, mut unique, mut tol) = (false, false, 0.0);
+    let mut table: Option<Rc<RefCell<Table>>> = None;
+    let mut table_keys: Vec<Key> = Vec::new();
     loop {
-        if let Some(k) = a.keyword(&["CROI", "DECR", "ABS"]) {
+        if let Some(k) = a.keyword(&["CROI", "DECR", "ABS", "NOCA", "UNIQ"]) {
             match k {
                 "ABS" => use_abs = true,
+                "NOCA" => nocase = true,
+                "UNIQ" => {
+                    unique = true;
+                    tol = a.opt_num_right().unwrap_or(0.0);
+                }
                 k => order = Some(k),
             }
             continue;
+        }
+        // A TABLE of lists and the key of the one that sets the order.
+        if lists.is_empty() && table.is_none() {
+            if let Some(t) = a.opt::<Rc<RefCell<Table>>>() {
+                let k = a.opt::<Value>().ok_or_else(|| a.missing("the key of the list to sort the TABLE by"))?;
+                let k = Key::from_value(&k);
+                let entries = t.borrow();
+                let Some(first) = entries.get(&k).filter(|v| list_len(v).is_some()) else {
+                    return Err(a.err("the TABLE has no list at that key"));
+                };
+                lists.push(first.clone());
+                for (key, v) in entries.iter().filter(|(key, v)| *key != k && list_len(v).is_some()) {
+                    lists.push(v.clone());
+                    table_keys.push(key.clone());
+                }
+                table_keys.insert(0, k);
+                drop(entries);
+                table = Some(t);
+                continue;
+            }
+        }
+        if table.is_some() {
+            break;
         }
         // The key list may have been pushed before ORDO; the others follow.
         let next = if lists.is_empty() { a.opt::<AnyList>() } else { a.opt_right::<AnyList>() };
@@ -246,14 +281,34 @@ fn ordo(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         Value::ListReel(l) => num(l[i]).total_cmp(&num(l[j])),
         Value::ListEnti(l) if use_abs => l[i].abs().cmp(&l[j].abs()),
         Value::ListEnti(l) => l[i].cmp(&l[j]),
+        Value::ListMots(l) if nocase => l[i].to_uppercase().cmp(&l[j].to_uppercase()),
         Value::ListMots(l) => l[i].cmp(&l[j]),
         _ => std::cmp::Ordering::Equal,
     };
+    if unique && lists.len() > 1 {
+        return Err(a.err("'UNIQ' sorts one list only"));
+    }
     // Stable either way: equal keys keep their order.
     let decr = order == Some("DECR");
     let mut perm: Vec<usize> = (0..n).collect();
     perm.sort_by(|&i, &j| if decr { cmp(j, i) } else { cmp(i, j) });
-    Ok(lists
+    if unique {
+        // An item equal to the last one kept is dropped (within tol for
+        // numbers, without case under 'NOCA' for words).
+        let same = |i: usize, j: usize| match key {
+            Value::ListReel(l) => (num(l[i]) - num(l[j])).abs() <= tol,
+            Value::ListEnti(l) => (num(l[i] as f64) - num(l[j] as f64)).abs() <= tol,
+            _ => cmp(i, j) == std::cmp::Ordering::Equal,
+        };
+        let mut kept: Vec<usize> = Vec::with_capacity(perm.len());
+        for &i in &perm {
+            if kept.last().is_none_or(|&k| !same(k, i)) {
+                kept.push(i);
+            }
+        }
+        perm = kept;
+    }
+    let sorted = lists
         .iter()
         .map(|l| match l {
             Value::ListReel(l) => Value::ListReel(Rc::new(perm.iter().map(|&i| l[i]).collect())),
@@ -261,7 +316,18 @@ fn ordo(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             Value::ListMots(l) => Value::ListMots(Rc::new(perm.iter().map(|&i| l[i].clone()).collect())),
             other => other.clone(),
         })
-        .collect())
+        .collect::<Vec<_>>();
+    match table {
+        // A new TABLE: the same entries, its lists permuted.
+        Some(t) => {
+            let mut out = t.borrow().clone();
+            for (k, v) in table_keys.into_iter().zip(sorted) {
+                out.set(k, v);
+            }
+            Ok(vec![Value::Table(Rc::new(RefCell::new(out)))])
+        }
+        None => Ok(sorted),
+    }
 }
 
 /// `EXTR LIST LISTENTI`: the items at the given (1-based) places, in the

@@ -53,6 +53,7 @@ mod nuage;
 mod objects;
 mod opti;
 mod opti_own;
+mod ordo_cost;
 mod pasapas;
 mod pasapas_fields;
 mod pasapas_model;

@@ -26,7 +26,7 @@ const FORMS: &[&str] = &[
     "TET4", "PRI6", "SEG2", "JOI2", "JOI3", "JOI4", "ICT3", "ICQ4", "ICT6", "ICQ8", "ICT4", "ICC8", "ICP6",
 ];
 
-const BEHAVIOURS: &[&str] = &["ELASTIQUE", "ISOTROPE"];
+const BEHAVIOURS: &[&str] = &["ELASTIQUE", "ISOTROPE", "EPSILON"];
 
 fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let geo = req_geo(a)?;
@@ -52,6 +52,10 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     // MECANIQUE ELASTIQUE` (Cast3M reads MODE's words as words).
     while let Some(w) = a.keyword_next(BEHAVIOURS).map(String::from).or_else(|| a.word_not_operator()) {
         let w = w.to_uppercase();
+        if w.starts_with("EPSI") {
+            epsilon(a)?;
+            continue;
+        }
         if let Some(f) = FORMS.iter().find(|f| super::args::keyword_matches(&w, f)) {
             element = f.to_string();
         } else if ["ELAS", "ISOT"].iter().any(|k| w.starts_with(k)) {
@@ -150,6 +154,17 @@ fn incompressible_model(
         })
         .collect();
     Ok(vec![Value::Model(Rc::new(Model { zones }))])
+}
+
+/// `'EPSI' MOT`: how strains are computed. gibi's elements use small
+/// (linear) strains, which is what 'LINEAIRE' asks for; another measure
+/// is refused rather than silently replaced.
+fn epsilon(a: &mut Args) -> Result<()> {
+    match a.word().map(|w| w.to_uppercase()) {
+        Some(w) if w.starts_with("LINE") => Ok(()),
+        Some(w) => Err(a.err(format!("EPSI {}: only linear strains (EPSI LINEAIRE) are available", w))),
+        None => Err(a.missing("the strain measure after EPSI (LINEAIRE)")),
+    }
 }
 
 /// Behaviour families beyond elasticity (mode.notice): accepted by MODE,

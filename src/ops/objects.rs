@@ -273,7 +273,9 @@ fn tabl(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     if let Some(t) = a.opt::<Rc<RefCell<Table>>>() {
         return Ok(vec![Value::Table(t)]);
     }
-    let t = match a.opt_right::<String>() {
+    // The subtype is read as a word even when it names an operator
+    // (`TABL VECTEUR`): Cast3M's TABL reads a text there, never runs it.
+    let t = match a.word() {
         Some(sub) => Table::with_subtype(&sub),
         None => Table::new(),
     };

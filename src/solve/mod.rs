@@ -21,6 +21,7 @@
 //!
 //! `unilateral` uses `bilateral`, never the other way round.
 
+pub mod assignment;
 pub mod bilateral;
 pub mod cache;
 pub mod error;

@@ -22,6 +22,7 @@ mod read_gmsh;
 mod read_proc;
 mod sort_matrix;
 mod sort_pasapas;
+mod sort_text;
 mod sort_vtk;
 mod stl;
 mod trac_fields;
@@ -36,7 +37,7 @@ use std::path::{Path, PathBuf};
 pub(crate) const OPS: &[OpDef] = &[
     OpDef {
         name: "SORT",
-        signature: "SORT 'VTK' MAILLAGE (CHPOINT|MCHAML ('NAME'))… ('CONTACT' RIGIDITE SOLUTION (LIMITS)) ('TEMPS' t) | SORT 'VTK' TABLE_PASAPAS (MAILLAGE) | SORT 'MAT' RIGIDITE 'file.mtx' | SORT 'STL' MAILLAGE | SORT 'AVS' (MAILLAGE) (CHPOINT) (MCHAML) ('SUIT') ('TEMP' t) | SORT 'NAS' MAILLAGE",
+        signature: "SORT 'VTK' MAILLAGE (CHPOINT|MCHAML ('NAME'))… ('CONTACT' RIGIDITE SOLUTION (LIMITS)) ('TEMPS' t) | SORT 'VTK' TABLE_PASAPAS (MAILLAGE) | SORT 'MAT' RIGIDITE 'file.mtx' | SORT 'STL' MAILLAGE | SORT 'AVS' (MAILLAGE) (CHPOINT) (MCHAML) ('SUIT') ('TEMP' t) | SORT 'NAS' MAILLAGE | SORT 'CHAI' OBJ…",
         doc: "Write files for other tools. 'VTK': a ParaView .vtu named by OPTI SORT (default gibi.vtu) with \
               nodal fields (UX UY UZ → one 3-component vector, also in 2D) and element fields (MCHAML, averaged \
               per element); with 'TEMPS' t each call writes name_NNNN.vtu and rewrites name.pvd with every time \
@@ -49,7 +50,9 @@ pub(crate) const OPS: &[OpDef] = &[
               name, .inp added) with the mesh (else the MCHAML's support, else the CHPOINT's nodes), the nodal \
               field (zero where it has no value), the element field (one value per element: CHAN 'GRAVITE') \
               and the time; 'SUIT' appends a structure to the file this run wrote. 'NAS': Nastran bulk data \
-              (OPTI SORT name, .nas added): GRID (large fields) and element cards, one property id per sub-mesh.",
+              (OPTI SORT name, .nas added): GRID (large fields) and element cards, one property id per sub-mesh. 'CHAI': the objects (words, numbers, texts) as one line \
+              of text, written as MESS shows them, to the OPTI SORT file (kept as named); later calls append \
+              while OPTI SORT names the same file.",
         example: "opti sort 'beam' ; sort 'VTK' s u 'DEPL' sig 'SIGMA' 'TEMPS' 1. ;",
         f: sort,
     },
@@ -152,8 +155,9 @@ fn out_path(it: &Interp, name: &str) -> Result<PathBuf> {
 }
 
 fn sort(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    match a.req_keyword(&["VTK", "MAT", "STL", "AVS", "NAS"])? {
+    match a.req_keyword(&["VTK", "MAT", "STL", "AVS", "NAS", "CHAI"])? {
         "VTK" => sort_vtk::sort_vtk(it, a),
+        "CHAI" => sort_text::sort(it, a),
         "NAS" => nastran::sort(it, a),
         "AVS" => avs::sort(it, a),
         "STL" => stl::sort(it, a),

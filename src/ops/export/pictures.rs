@@ -44,12 +44,26 @@ fn eptr(it: &Interp) -> Option<u32> {
 /// skipped. Called between arguments: a 'TITR' found ahead of them sets
 /// the title once, later calls keep it.
 fn skip_options(a: &mut Args, title: &mut String) {
-    while a.keyword(&["TITR"]).is_some() {
-        if let Some(w) = a.word_not_operator() {
-            *title = w;
+    loop {
+        if a.keyword(&["TITR"]).is_some() {
+            if let Some(w) = a.word_not_operator() {
+                *title = w;
+            }
+            continue;
+        }
+        // TRAC's drawing options are words even where they name an
+        // operator (`TRAC FACE MAIL`): TRAC reads them, nothing runs them.
+        if a.keyword_next(DRAWING_OPTIONS).is_none() {
+            break;
         }
     }
 }
+
+/// trac.notice's option words that gibi passes over when it draws.
+const DRAWING_OPTIONS: &[&str] = &[
+    "ANIME", "ARET", "BOITE", "CACH", "CHAMP", "COUL", "COUPE", "DATE", "DIRE", "ECLA", "ELEM", "FACB", "FACE", "FSDB",
+    "LEGE", "LIGNE", "MOINS", "NCLK", "NOEUD", "NOLE", "OSCIL", "QUAL", "SECT", "SULI", "SURF",
+];
 
 pub(super) fn trac(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let mut title = it.title.clone();
