@@ -171,7 +171,19 @@ fn cos(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     unary(a, cos_deg)
 }
 fn tan(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    unary(a, |x| sin_deg(x) / cos_deg(x))
+    unary(a, tan_deg)
+}
+
+/// tan of an angle in degrees. At an odd multiple of 90 the exact cosine is
+/// 0; Cast3M, converting to radians first, gets the large finite tangent of
+/// the rounded angle there, which decks print and go on with: give the same.
+pub(crate) fn tan_deg(x: f64) -> f64 {
+    let c = cos_deg(x);
+    if c == 0.0 {
+        x.to_radians().tan()
+    } else {
+        sin_deg(x) / c
+    }
 }
 
 /// An angle in degrees brought into [-180, 180] and its sign folded into
