@@ -95,14 +95,14 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "PI", signature: "PI", doc: "The number pi.", example: "l = 2. * pi ;", f: pi },
     OpDef {
         name: "MAXI",
-        signature: "MAXI (ABS) LISTREEL|LISTENTI|NUM1 NUM2 ...|CHPOINT|MCHAML",
+        signature: "MAXI (ABS) LISTREEL|LISTENTI|NUM1 NUM2 ...|CHPOINT|MCHAML|EVOLUTIO",
         doc: "Largest value of a list, of several numbers or of a field (ENTIER when every value is); of several lists or fields, the largest value by value.",
         example: "m = maxi (prog 3. 8. 1.) ;",
         f: maxi,
     },
     OpDef {
         name: "MINI",
-        signature: "MINI (ABS) LISTREEL|LISTENTI|NUM1 NUM2 ...|CHPOINT|MCHAML",
+        signature: "MINI (ABS) LISTREEL|LISTENTI|NUM1 NUM2 ...|CHPOINT|MCHAML|EVOLUTIO",
         doc: "Smallest value of a list, of several numbers or of a field (ENTIER when every value is); of several lists or fields, the smallest value by value.",
         example: "m = mini (prog 3. 8. 1.) ;",
         f: mini,
@@ -421,6 +421,9 @@ fn extremum(a: &mut Args, max: bool) -> Result<Vec<Value>> {
         let v = l.iter().map(|i| if use_abs { i.abs() } else { *i });
         let v = if max { v.max() } else { v.min() };
         return Ok(vec![Value::Int(v.ok_or_else(|| a.err("empty list"))?)]);
+    }
+    if let Some(r) = super::evol_extremum::extremum(a, max, use_abs)? {
+        return Ok(r);
     }
     if let Some(r) = super::fields::extremum(a, max, use_abs)? {
         return Ok(vec![r]);

@@ -18,6 +18,7 @@ mod curves;
 mod dofs;
 mod empty;
 mod evol;
+mod evol_extremum;
 mod evol_extr;
 mod evol_temps;
 mod export;

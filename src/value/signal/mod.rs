@@ -6,3 +6,4 @@
 pub mod fit;
 pub mod fourier;
 pub mod noise;
+pub mod complex;
