@@ -130,7 +130,7 @@ impl FromArg for Numeric {
 
 /// The operand of a one-argument function: the newest pushed value when
 /// it holds numbers (`(x - 1.) abs`), else the next one on the right.
-fn operand(a: &mut Args) -> Result<Value> {
+pub(crate) fn operand(a: &mut Args) -> Result<Value> {
     match a.left_top::<Numeric>().or_else(|| a.opt::<Numeric>()) {
         Some(n) => Ok(n.0),
         None => Err(a.missing(Numeric::EXPECT)),
@@ -139,7 +139,7 @@ fn operand(a: &mut Args) -> Result<Value> {
 
 /// `f` value by value; a NaN or an infinity made from a finite value is
 /// an error, since it would slip through every `SI (err > tol)` check.
-fn unary(a: &mut Args, f: fn(f64) -> f64) -> Result<Vec<Value>> {
+pub(crate) fn unary(a: &mut Args, f: fn(f64) -> f64) -> Result<Vec<Value>> {
     let v = operand(a)?;
     let g = |x: f64| {
         let y = f(x);

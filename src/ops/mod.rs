@@ -36,6 +36,7 @@ mod lists_search;
 mod manu;
 mod masq;
 mod math;
+mod hyperbolic;
 mod mesh;
 mod mesh_edit;
 mod mesh_free;
@@ -90,6 +91,7 @@ impl Registry {
         for table in [
             arith::OPS,
             math::OPS,
+            hyperbolic::OPS,
             lists::OPS,
             noise::OPS,
             fourier::OPS,
