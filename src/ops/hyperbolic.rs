@@ -30,7 +30,12 @@ pub(crate) const OPS: &[OpDef] = &[
     row!("ATAH", "0.5", "Inverse hyperbolic tangent (values in ]-1, 1[).", |_, a| unary(a, f64::atanh)),
     row!("ERF", "0.5", "Error function 2/sqrt(pi) int_0^x exp(-t^2) dt.", |_, a| unary(a, libm::erf)),
     row!("ERFC", "0.5", "Complementary error function 1 - erf(x).", |_, a| unary(a, libm::erfc)),
-    row!("SIGN", "0.5", "Sign of each value: -1 below zero, else 1 (Fortran's SIGN(1, x)); an ENTIER or LISTENTI stays one.", sign),
+    row!(
+        "SIGN",
+        "0.5",
+        "Sign of each value: -1 below zero, else 1 (Fortran's SIGN(1, x)); an ENTIER or LISTENTI stays one.",
+        sign
+    ),
 ];
 
 fn sign(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {

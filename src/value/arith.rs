@@ -146,17 +146,6 @@ impl ArithError {
     }
 }
 
-#[cfg(test)]
-mod power_tests {
-    #[test]
-    fn odd_roots_of_negative_numbers_are_real() {
-        assert!((super::power(-8.0, 1.0 / 3.0) + 2.0).abs() < 1e-12);
-        assert!((super::power(-512.0, 1.0 / 9.0) + 2.0).abs() < 1e-12);
-        assert!(super::power(-4.0, 0.5).is_nan());
-        assert!(super::power(-4.0, 0.25).is_nan());
-    }
-}
-
 /// Checks the result `r` of `x op y`, computed value by value: a result
 /// that is not finite is the error of the operation, named by why it
 /// happened.
@@ -257,5 +246,16 @@ pub fn describe(v: &Value) -> String {
             let t = other.type_name();
             format!("{} {}", if t.starts_with(['A', 'E', 'I', 'O', 'U']) { "an" } else { "a" }, t)
         }
+    }
+}
+
+#[cfg(test)]
+mod power_tests {
+    #[test]
+    fn odd_roots_of_negative_numbers_are_real() {
+        assert!((super::power(-8.0, 1.0 / 3.0) + 2.0).abs() < 1e-12);
+        assert!((super::power(-512.0, 1.0 / 9.0) + 2.0).abs() < 1e-12);
+        assert!(super::power(-4.0, 0.5).is_nan());
+        assert!(super::power(-4.0, 0.25).is_nan());
     }
 }

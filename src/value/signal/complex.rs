@@ -61,7 +61,13 @@ pub fn combine(e: &Evolution, g: &Evolution, op: Bin) -> Option<Result<Evolution
             Form::ModPhase => {
                 let m = re.hypot(im);
                 y1.push(m);
-                y2.push(if m > 1e-20 { im.atan2(re).to_degrees() } else if m.is_finite() { 0.0 } else { f64::NAN });
+                y2.push(if m > 1e-20 {
+                    im.atan2(re).to_degrees()
+                } else if m.is_finite() {
+                    0.0
+                } else {
+                    f64::NAN
+                });
             }
         }
     }
