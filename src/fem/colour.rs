@@ -28,6 +28,22 @@ const NAMES: &[(&str, [u8; 3])] = &[
     ("OLIV", [128, 128, 0]),
     ("GRIS", [128, 128, 128]),
     ("AZUR", [0, 127, 255]),
+    // Cast3M's extended palette, drawn in the X11 colours it names.
+    ("POUR", [208, 32, 144]),
+    ("BRUN", [139, 69, 19]),
+    ("BRIQ", [178, 34, 34]),
+    ("CORA", [255, 127, 80]),
+    ("BEIG", [245, 222, 179]),
+    ("OR", [255, 215, 0]),
+    ("MARI", [0, 0, 128]),
+    ("BOUT", [0, 100, 0]),
+    ("LIME", [127, 255, 0]),
+    ("LAVA", [230, 230, 250]),
+    ("BRON", [218, 165, 32]),
+    ("KAKI", [240, 230, 140]),
+    ("PEAU", [255, 182, 193]),
+    ("CARA", [205, 133, 63]),
+    ("INDI", [75, 0, 130]),
 ];
 
 impl Colour {
@@ -66,6 +82,8 @@ mod tests {
         assert_eq!(Colour::from_name("rouge").map(Colour::name), Some("ROUG"));
         assert_eq!(Colour::from_name("TURQUOISE").map(Colour::name), Some("TURQ"));
         assert_eq!(Colour::from_name("MAUVE"), None);
+        assert_eq!(Colour::from_name("BRONZE").map(Colour::name), Some("BRON"));
+        assert_eq!(Colour::from_name("OR").map(Colour::name), Some("OR"));
         assert_eq!(Colour::default().name(), "DEFA");
         assert!(Colour::default().rgb().is_none());
         assert_eq!(Colour::from_name("ROUG").unwrap().rgb(), Some([220, 0, 0]));

@@ -32,8 +32,9 @@ pub(crate) const COLOURS: &[&str] = &[
 
 fn evol(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     a.keyword(COLOURS);
-    let curve = match a.req_keyword(&["MANU", "CHPO", "TEMP"])? {
+    let curve = match a.req_keyword(&["MANU", "CHPO", "TEMP", "COMP"])? {
         "MANU" => manu(a)?,
+        "COMP" => return Ok(vec![Value::Evol(Rc::new(complex(a)?))]),
         "TEMP" => return super::evol_temps::evol_temp(it, a),
         _ => along_line(it, a)?,
     };
@@ -57,6 +58,47 @@ fn manu(a: &mut Args) -> Result<Curve> {
         return Err(a.err("a curve needs at least one point"));
     }
     Ok(Curve { legend, x_name, y_name, x, y })
+}
+
+/// `'COMP' ('REIM'|'MOPH') ('LEGE' T1 T2) (nameX) LX (name1) L1 (name2) L2`:
+/// a complex curve as TFR gives one, two curves on the same abscissae. The
+/// ordinates keep the names that make it a transform (PREE/PIMA or
+/// MODU/PHAS, which `* /` and TFRI read) unless the deck names them.
+fn complex(a: &mut Args) -> Result<Evolution> {
+    let moph = a.keyword(&["REIM", "MOPH"]) == Some("MOPH");
+    let (mut t1, mut t2) = if moph { ("Amp", "Phase") } else { ("Re", "Im") };
+    let (l1, l2);
+    if a.keyword(&["LEGE"]).is_some() {
+        l1 = a.word().ok_or_else(|| a.missing("the title of the first curve"))?;
+        l2 = a.word().ok_or_else(|| a.missing("the title of the second curve"))?;
+        (t1, t2) = (&l1, &l2);
+    }
+    let x_name = label(a).unwrap_or_default();
+    let x = numbers(a).ok_or_else(|| a.missing("LISTREEL (the abscissae)"))?;
+    let (d1, d2) = if moph { ("MODU", "PHAS") } else { ("PREE", "PIMA") };
+    let n1 = label(a).unwrap_or_else(|| d1.into());
+    let y1 = numbers(a).ok_or_else(|| a.missing("LISTREEL (the real parts or moduli)"))?;
+    let n2 = label(a).unwrap_or_else(|| d2.into());
+    let y2 = numbers(a).ok_or_else(|| a.missing("LISTREEL (the imaginary parts or phases)"))?;
+    if x.len() != y1.len() || x.len() != y2.len() {
+        return Err(a.err(format!(
+            "the abscissae have {} values but the ordinates {} and {}",
+            x.len(),
+            y1.len(),
+            y2.len()
+        )));
+    }
+    if x.is_empty() {
+        return Err(a.err("a curve needs at least one point"));
+    }
+    let curve = |legend: &str, y_name: String, y: Vec<f64>| Curve {
+        legend: legend.into(),
+        x_name: x_name.clone(),
+        y_name,
+        x: x.clone(),
+        y,
+    };
+    Ok(Evolution { curves: vec![curve(t1, n1, y1), curve(t2, n2, y2)] })
 }
 
 /// A list's name: a word before the list, even one that names an

@@ -95,14 +95,14 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "PI", signature: "PI", doc: "The number pi.", example: "l = 2. * pi ;", f: pi },
     OpDef {
         name: "MAXI",
-        signature: "MAXI (ABS) LISTREEL|LISTENTI|NUM1 NUM2 ...|CHPOINT|MCHAML",
+        signature: "MAXI (ABS) LISTREEL|LISTENTI|NUM1 NUM2 ...|CHPOINT|MCHAML|EVOLUTIO",
         doc: "Largest value of a list, of several numbers or of a field (ENTIER when every value is); of several lists or fields, the largest value by value.",
         example: "m = maxi (prog 3. 8. 1.) ;",
         f: maxi,
     },
     OpDef {
         name: "MINI",
-        signature: "MINI (ABS) LISTREEL|LISTENTI|NUM1 NUM2 ...|CHPOINT|MCHAML",
+        signature: "MINI (ABS) LISTREEL|LISTENTI|NUM1 NUM2 ...|CHPOINT|MCHAML|EVOLUTIO",
         doc: "Smallest value of a list, of several numbers or of a field (ENTIER when every value is); of several lists or fields, the smallest value by value.",
         example: "m = mini (prog 3. 8. 1.) ;",
         f: mini,
@@ -130,7 +130,7 @@ impl FromArg for Numeric {
 
 /// The operand of a one-argument function: the newest pushed value when
 /// it holds numbers (`(x - 1.) abs`), else the next one on the right.
-fn operand(a: &mut Args) -> Result<Value> {
+pub(crate) fn operand(a: &mut Args) -> Result<Value> {
     match a.left_top::<Numeric>().or_else(|| a.opt::<Numeric>()) {
         Some(n) => Ok(n.0),
         None => Err(a.missing(Numeric::EXPECT)),
@@ -139,7 +139,7 @@ fn operand(a: &mut Args) -> Result<Value> {
 
 /// `f` value by value; a NaN or an infinity made from a finite value is
 /// an error, since it would slip through every `SI (err > tol)` check.
-fn unary(a: &mut Args, f: fn(f64) -> f64) -> Result<Vec<Value>> {
+pub(crate) fn unary(a: &mut Args, f: fn(f64) -> f64) -> Result<Vec<Value>> {
     let v = operand(a)?;
     let g = |x: f64| {
         let y = f(x);
@@ -171,7 +171,19 @@ fn cos(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     unary(a, cos_deg)
 }
 fn tan(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    unary(a, |x| sin_deg(x) / cos_deg(x))
+    unary(a, tan_deg)
+}
+
+/// tan of an angle in degrees. At an odd multiple of 90 the exact cosine is
+/// 0; Cast3M, converting to radians first, gets the large finite tangent of
+/// the rounded angle there, which decks print and go on with: give the same.
+pub(crate) fn tan_deg(x: f64) -> f64 {
+    let c = cos_deg(x);
+    if c == 0.0 {
+        x.to_radians().tan()
+    } else {
+        sin_deg(x) / c
+    }
 }
 
 /// An angle in degrees brought into [-180, 180] and its sign folded into
@@ -409,6 +421,9 @@ fn extremum(a: &mut Args, max: bool) -> Result<Vec<Value>> {
         let v = l.iter().map(|i| if use_abs { i.abs() } else { *i });
         let v = if max { v.max() } else { v.min() };
         return Ok(vec![Value::Int(v.ok_or_else(|| a.err("empty list"))?)]);
+    }
+    if let Some(r) = super::evol_extremum::extremum(a, max, use_abs)? {
+        return Ok(r);
     }
     if let Some(r) = super::fields::extremum(a, max, use_abs)? {
         return Ok(vec![r]);

@@ -21,6 +21,7 @@ mod elem_field;
 mod empty;
 mod evol;
 mod evol_extr;
+mod evol_extremum;
 mod evol_temps;
 mod export;
 mod extract;
@@ -29,6 +30,7 @@ mod fit;
 mod format;
 mod fourier;
 mod fracture;
+mod hyperbolic;
 mod integrate;
 mod io;
 mod joint_mesh;
@@ -94,6 +96,7 @@ impl Registry {
         for table in [
             arith::OPS,
             math::OPS,
+            hyperbolic::OPS,
             lists::OPS,
             noise::OPS,
             fourier::OPS,

@@ -81,8 +81,22 @@ pub fn float_op(op: Bin, x: f64, y: f64) -> f64 {
         Bin::Sub => x - y,
         Bin::Mul => x * y,
         Bin::Div => x / y,
-        Bin::Pow => x.powf(y),
+        Bin::Pow => power(x, y),
     }
+}
+
+/// `x ** y`, with the real odd root of a negative number: `(-8.) ** (1./3.)`
+/// is -2 when 1/y is an odd integer (to rounding), as Cast3M gives it.
+/// Any other fractional power of a negative number has no real value.
+fn power(x: f64, y: f64) -> f64 {
+    if x < 0.0 && y.fract() != 0.0 && y.is_finite() {
+        let n = 1.0 / y;
+        let k = n.round();
+        if (n - k).abs() <= 1e-9 * k.abs() && k % 2.0 != 0.0 {
+            return -(-x).powf(y);
+        }
+    }
+    x.powf(y)
 }
 
 /// Why an operation has no value.
@@ -232,5 +246,16 @@ pub fn describe(v: &Value) -> String {
             let t = other.type_name();
             format!("{} {}", if t.starts_with(['A', 'E', 'I', 'O', 'U']) { "an" } else { "a" }, t)
         }
+    }
+}
+
+#[cfg(test)]
+mod power_tests {
+    #[test]
+    fn odd_roots_of_negative_numbers_are_real() {
+        assert!((super::power(-8.0, 1.0 / 3.0) + 2.0).abs() < 1e-12);
+        assert!((super::power(-512.0, 1.0 / 9.0) + 2.0).abs() < 1e-12);
+        assert!(super::power(-4.0, 0.5).is_nan());
+        assert!(super::power(-4.0, 0.25).is_nan());
     }
 }

@@ -139,7 +139,43 @@ fn binary(it: &mut Interp, a: &mut Args, op: Bin) -> Result<Vec<Value>> {
 }
 
 fn plus(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    if let Some(sum) = table_sum(it, a)? {
+        return Ok(vec![sum]);
+    }
     binary(it, a, Bin::Add)
+}
+
+/// `+ TAB`, Cast3M's one-operand form: the sum of every object of a table
+/// (the per-domain pieces of a result gathered back into one), its
+/// 'SOUSTYPE' word left out. Only when `+` has no left operand and the
+/// table is its last operand.
+fn table_sum(it: &mut Interp, a: &mut Args) -> Result<Option<Value>> {
+    let Some(Value::Table(t)) = a.peek_right() else { return Ok(None) };
+    if a.left_len() > 0 {
+        return Ok(None);
+    }
+    a.right_any();
+    if a.peek_right().is_some() {
+        return Err(a.err("+ of a TABLE takes no other operand".to_string()));
+    }
+    let items: Vec<Value> = t
+        .borrow()
+        .iter()
+        .filter(|(k, _)| !matches!(k, crate::value::table::Key::Mot(m) if m.trim() == "SOUSTYPE"))
+        .map(|(_, v)| v.clone())
+        .collect();
+    let mut it_items = items.into_iter();
+    let Some(mut acc) = it_items.next() else {
+        return Err(a.err("+ of an empty TABLE has nothing to sum".to_string()));
+    };
+    for v in it_items {
+        let r = match components::apply(a, Bin::Add, &acc, &v)? {
+            Some(r) => r,
+            None => table::apply(it, a, Bin::Add, &acc, &v)?,
+        };
+        acc = arith::check(Bin::Add, &acc, &v, r).map_err(|e| a.err(e))?;
+    }
+    Ok(Some(acc))
 }
 fn minus(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     binary(it, a, Bin::Sub)

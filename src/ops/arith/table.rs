@@ -175,7 +175,10 @@ fn rigidities(_: &mut Interp, _: &Args, op: Bin, x: &Value, y: &Value) -> Result
 fn sampled(_: &mut Interp, a: &Args, op: Bin, x: &Value, y: &Value) -> Result<Option<Value>> {
     let f = |p: f64, q: f64| float_op(op, p, q);
     Ok(Some(match (x, y) {
-        (Value::Evol(e), Value::Evol(g)) => Value::Evol(Rc::new(e.combine(g, f).map_err(|m| a.err(m))?)),
+        (Value::Evol(e), Value::Evol(g)) => match crate::value::signal::complex::combine(e, g, op) {
+            Some(r) => Value::Evol(Rc::new(r.map_err(|m| a.err(m))?)),
+            None => Value::Evol(Rc::new(e.combine(g, f).map_err(|m| a.err(m))?)),
+        },
         (Value::Mchaml(m), Value::Mchaml(n)) => {
             let fill = matches!(op, Bin::Add | Bin::Sub);
             // Realigned only onto a layout of as many elements: a sum must

@@ -3,6 +3,7 @@
 //! Plain numbers in, plain numbers out; the operators (`ops/noise.rs`, `ops/fourier.rs`)
 //! read the arguments and wrap the results.
 
+pub mod complex;
 pub mod fit;
 pub mod fourier;
 pub mod noise;
