@@ -57,39 +57,47 @@ const MOMENTUM: [&str; 3] = ["UX", "UY", "UZ"];
 
 /// A value of a field, the component compared without trailing blanks.
 fn value_at(a: &Args, c: &Chpoint, what: &str, node: usize, comp: &str) -> Result<f64> {
-    c.get(node, comp)
-        .or_else(|| c.comps.iter().find(|x| x.trim_end() == comp).and_then(|x| c.get(node, x)))
-        .ok_or_else(|| {
-            a.err(format!("the {} has no component '{}' at node {}: the fields must share their support", what, comp, node))
-        })
+    c.get(node, comp).or_else(|| c.comps.iter().find(|x| x.trim_end() == comp).and_then(|x| c.get(node, x))).ok_or_else(
+        || {
+            a.err(format!(
+                "the {} has no component '{}' at node {}: the fields must share their support",
+                what,
+                comp,
+                node + 1
+            ))
+        },
+    )
 }
 
 impl Fields {
     fn read(a: &mut Args, dim: usize) -> Result<Fields> {
-        Ok(Fields {
-            rho: a.req()?,
-            momentum: a.req()?,
-            rho_e: a.req()?,
-            rho_y: None,
-            species: vec![],
-            dim,
-        })
+        Ok(Fields { rho: a.req()?, momentum: a.req()?, rho_e: a.req()?, rho_y: None, species: vec![], dim })
     }
 
     /// Run `f` at every node of the density field; gather its results.
-    fn each(&self, a: &Args, mut f: impl FnMut(usize, Conservative) -> std::result::Result<Primitive, String>) -> Result<Vec<(usize, Primitive)>> {
+    fn each(
+        &self,
+        a: &Args,
+        mut f: impl FnMut(usize, Conservative) -> std::result::Result<Primitive, String>,
+    ) -> Result<Vec<(usize, Primitive)>> {
         let mut out = Vec::with_capacity(self.rho.nodes.len());
         for &n in &self.rho.nodes {
             let rho = value_at(a, &self.rho, "density", n, "SCAL")?;
-            let momentum =
-                MOMENTUM[..self.dim].iter().map(|c| value_at(a, &self.momentum, "momentum", n, c)).collect::<Result<Vec<_>>>()?;
+            let momentum = MOMENTUM[..self.dim]
+                .iter()
+                .map(|c| value_at(a, &self.momentum, "momentum", n, c))
+                .collect::<Result<Vec<_>>>()?;
             let rho_e = value_at(a, &self.rho_e, "total energy", n, "SCAL")?;
             let rho_y = match &self.rho_y {
-                Some(c) => self.species.iter().map(|s| value_at(a, c, "partial densities", n, s)).collect::<Result<Vec<_>>>()?,
+                Some(c) => self
+                    .species
+                    .iter()
+                    .map(|s| value_at(a, c, "partial densities", n, s))
+                    .collect::<Result<Vec<_>>>()?,
                 None => vec![],
             };
             let s = Conservative { rho, momentum: &momentum, rho_e, rho_y: &rho_y };
-            let p = f(n, s).map_err(|m| a.err(format!("at node {}: {}", n, m)))?;
+            let p = f(n, s).map_err(|m| a.err(format!("at node {}: {}", n + 1, m)))?;
             out.push((n, p));
         }
         Ok(out)
@@ -124,7 +132,7 @@ fn perfmono(a: &mut Args, dim: usize) -> Result<Vec<Value>> {
     let f = Fields::read(a, dim)?;
     let gamma: Rc<Chpoint> = a.req()?;
     let res = f.each(a, |n, s| {
-        let g = gamma.get(n, "SCAL").ok_or_else(|| format!("gamma has no 'SCAL' at node {}", n))?;
+        let g = gamma.get(n, "SCAL").ok_or_else(|| format!("gamma has no 'SCAL' at node {}", n + 1))?;
         flow::perfect_mono(s, g)
     })?;
     Ok(vec![f.velocity(&res), f.scalar(&res, |p| p.pressure)])
@@ -150,14 +158,18 @@ fn number(a: &Args, v: Value, what: &str) -> Result<f64> {
 fn sub_table(a: &Args, t: &Table, key: &str, what: &str) -> Result<Rc<RefCell<Table>>> {
     match req_entry(a, t, key, what)? {
         Value::Table(s) => Ok(s),
-        other => Err(a.err(format!("'{}' of the gas TABLE must be a TABLE, found {}", key.trim_end(), other.ty().name()))),
+        other => {
+            Err(a.err(format!("'{}' of the gas TABLE must be a TABLE, found {}", key.trim_end(), other.ty().name())))
+        }
     }
 }
 
 fn list(a: &Args, t: &Table, key: &str, what: &str) -> Result<Rc<Vec<f64>>> {
     match req_entry(a, t, key, what)? {
         Value::ListReel(l) => Ok(l),
-        other => Err(a.err(format!("'{}' of the gas TABLE must be a LISTREEL, found {}", key.trim_end(), other.ty().name()))),
+        other => {
+            Err(a.err(format!("'{}' of the gas TABLE must be a LISTREEL, found {}", key.trim_end(), other.ty().name())))
+        }
     }
 }
 
@@ -165,8 +177,12 @@ fn list(a: &Args, t: &Table, key: &str, what: &str) -> Result<Rc<Vec<f64>>> {
 fn species(a: &Args, t: &Table, need_carried: bool) -> Result<(Vec<String>, String)> {
     let carried = match entry(t, "ESPEULE") {
         Some(Value::ListMots(l)) => l.iter().map(|s| s.trim_end().to_string()).collect(),
-        Some(other) => return Err(a.err(format!("'ESPEULE' of the gas TABLE must be a LISTMOTS, found {}", other.ty().name()))),
-        None if need_carried => return Err(a.err("the gas TABLE has no index 'ESPEULE' (the species of the equations)")),
+        Some(other) => {
+            return Err(a.err(format!("'ESPEULE' of the gas TABLE must be a LISTMOTS, found {}", other.ty().name())))
+        }
+        None if need_carried => {
+            return Err(a.err("the gas TABLE has no index 'ESPEULE' (the species of the equations)"))
+        }
         None => vec![],
     };
     let last = match req_entry(a, t, "ESPNEULE", "the species not in the equations")? {
@@ -211,7 +227,9 @@ fn perftemp(a: &mut Args, dim: usize) -> Result<Vec<Value>> {
     }
     let passive: Option<Vec<String>> = match entry(&t, "SCALPASS") {
         Some(Value::ListMots(l)) => Some(l.iter().map(|s| s.trim_end().to_string()).collect()),
-        Some(other) => return Err(a.err(format!("'SCALPASS' of the gas TABLE must be a LISTMOTS, found {}", other.ty().name()))),
+        Some(other) => {
+            return Err(a.err(format!("'SCALPASS' of the gas TABLE must be a LISTMOTS, found {}", other.ty().name())))
+        }
         None => None,
     };
     let rho_s: Option<Rc<Chpoint>> = match passive {
@@ -231,7 +249,12 @@ fn perftemp(a: &mut Args, dim: usize) -> Result<Vec<Value>> {
             let g = g.borrow();
             let coefs = list(a, &g, "A", "cv polynomial")?;
             if coefs.len() != order + 1 {
-                return Err(a.err(format!("'{}'.'A' must hold NORD + 1 = {} coefficients, found {}", s, order + 1, coefs.len())));
+                return Err(a.err(format!(
+                    "'{}'.'A' must hold NORD + 1 = {} coefficients, found {}",
+                    s,
+                    order + 1,
+                    coefs.len()
+                )));
             }
             let r = number(a, req_entry(a, &g, "R", "gas constant")?, &format!("'{}'.'R'", s))?;
             Ok(PolyGas { a: coefs.to_vec(), r })
@@ -274,10 +297,16 @@ fn gfmp(a: &mut Args, dim: usize) -> Result<Vec<Value>> {
     let phases = |g: &str, p: &str| -> Result<Vec<Stiffened>> {
         let (gam, pin) = (list(a, &t, g, "gamma of each species")?, list(a, &t, p, "p-infinity of each species")?);
         if gam.len() != carried.len() + 1 || pin.len() != carried.len() + 1 {
-            return Err(a.err(format!("'{}' and '{}' must hold {} values (the species not in the equations first)", g, p, carried.len() + 1)));
+            return Err(a.err(format!(
+                "'{}' and '{}' must hold {} values (the species not in the equations first)",
+                g,
+                p,
+                carried.len() + 1
+            )));
         }
         // The tables list the uncarried species first; fem::flow wants it last.
-        let mut v: Vec<Stiffened> = gam.iter().zip(pin.iter()).map(|(&gamma, &p_inf)| Stiffened { gamma, p_inf }).collect();
+        let mut v: Vec<Stiffened> =
+            gam.iter().zip(pin.iter()).map(|(&gamma, &p_inf)| Stiffened { gamma, p_inf }).collect();
         v.rotate_left(1);
         Ok(v)
     };
@@ -285,9 +314,14 @@ fn gfmp(a: &mut Args, dim: usize) -> Result<Vec<Value>> {
     f.species = carried;
     let species = f.species.clone();
     let res = f.each(a, |n, s| {
-        let ph = phi.get(n, "SCAL").ok_or_else(|| format!("PHI has no 'SCAL' at node {}", n))?;
+        let ph = phi.get(n, "SCAL").ok_or_else(|| format!("PHI has no 'SCAL' at node {}", n + 1))?;
         let al = match &alpha {
-            Some(c) => species.iter().map(|sp| c.get(n, sp).ok_or_else(|| format!("the volume fractions have no '{}' at node {}", sp, n))).collect::<std::result::Result<Vec<_>, _>>()?,
+            Some(c) => species
+                .iter()
+                .map(|sp| {
+                    c.get(n, sp).ok_or_else(|| format!("the volume fractions have no '{}' at node {}", sp, n + 1))
+                })
+                .collect::<std::result::Result<Vec<_>, _>>()?,
             None => vec![],
         };
         flow::stiffened(s, if ph <= 0.0 { &minus } else { &plus }, &al)

@@ -7,10 +7,7 @@ impl Curve {
     /// The primitive; the abscissae must increase.
     pub fn primitive(&self) -> Result<Curve, String> {
         if let Some(w) = self.x.windows(2).find(|w| w[1] < w[0]) {
-            return Err(format!(
-                "the abscissae of the curve must increase, found {} after {}",
-                w[1], w[0]
-            ));
+            return Err(format!("the abscissae of the curve must increase, found {} after {}", w[1], w[0]));
         }
         let mut y = Vec::with_capacity(self.y.len());
         let mut acc = 0.0;
@@ -20,6 +17,12 @@ impl Curve {
             }
             y.push(acc);
         }
-        Ok(Curve { legend: self.legend.clone(), x_name: self.x_name.clone(), y_name: self.y_name.clone(), x: self.x.clone(), y })
+        Ok(Curve {
+            legend: self.legend.clone(),
+            x_name: self.x_name.clone(),
+            y_name: self.y_name.clone(),
+            x: self.x.clone(),
+            y,
+        })
     }
 }
