@@ -14,7 +14,7 @@ pub(crate) const OPS: &[OpDef] = &[OpDef {
     name: "CHPO",
     signature: "CHPO 'ALEATOIRE' RIGIDITE | CHPO 'UNIFORME' FLOT1 RIGIDITE",
     doc: "A CHPOINT over the primal unknowns of the RIGIDITE (their nodes and component names): 'ALEATOIRE' draws each value uniformly in [0, 1] from the generator BRUI uses; 'UNIFORME' gives every unknown FLOT1.",
-    example: "m = manu 'POI1' (0. 0. 0.) ; k = bloq m 'UX' ; f = chpo 'UNIFORME' 2. k ;",
+    example: "f = chpo 'ALEATOIRE' (k et cl) ;",
     f: chpo,
 }];
 
