@@ -33,7 +33,7 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "SUIT",
-        signature: "SUIT (CHPOINT1 CHPOINT2 …)",
+        signature: "SUIT ('CHPOINT') (CHPOINT1 CHPOINT2 …)",
         doc: "Build a LISTCHPO (ordered list of fields, e.g. load cases for RESO); empty without arguments. Grow it with ET, read it with DIME and EXTR.",
         example: "lf = suit f1 f2 f3 ;",
         f: suit,
@@ -148,6 +148,8 @@ fn mots(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 /// SUIT: the fields in the order written, from the pushed operands then
 /// the right (`SUIT ;` alone is the empty list that `ET` grows).
 fn suit(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    // The type of the list may be named first ('CHPOINT' is the only one).
+    a.keyword_next(&["CHPO"]);
     let mut out = Vec::new();
     while let Some(c) = a.opt::<Rc<Chpoint>>() {
         out.push(c);

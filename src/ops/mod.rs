@@ -12,6 +12,7 @@ mod catalogue_tests;
 mod chan_cham;
 mod chan_support;
 mod chargement;
+mod chpo_rigi;
 mod colour;
 mod config;
 mod contact;
@@ -64,6 +65,7 @@ mod pointwise;
 mod post;
 mod pres_field;
 mod pres_model;
+mod prim;
 mod principal;
 mod products;
 mod reso;
@@ -149,6 +151,8 @@ impl Registry {
             variable::OPS,
             zero::OPS,
             pasapas::OPS,
+            prim::OPS,
+            chpo_rigi::OPS,
         ] {
             for d in table {
                 r.insert(OpSpec::from(d));

@@ -157,6 +157,10 @@ fn exis(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 fn oubl(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    // A name bound to nothing (even an operator's, `OUBL CHPO`) has nothing to forget.
+    if a.unbound_word().is_some() {
+        return Ok(vec![]);
+    }
     if let Some(name) = a.next_name_span().map(|sp| it.source.slice(sp).to_uppercase()) {
         let v = a.req::<Value>()?;
         if let Value::Table(t) = &v {

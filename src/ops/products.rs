@@ -17,7 +17,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef {
         name: "PSCA",
         signature: "PSCA POINT POINT | PSCA CHPOINT CHPOINT LISTMOTS LISTMOTS | PSCA MCHAML MCHAML LISTMOTS LISTMOTS",
-        doc: "Scalar product: of two vectors (FLOTTANT), of two node fields over paired components (FLOTTANT), or of two element fields point by point (MCHAML, component SCAL).",
+        doc: "Scalar product: of two vectors (FLOTTANT), of two node fields over paired components, node by node (CHPOINT, component SCAL), or of two element fields point by point (MCHAML, component SCAL).",
         example: "w = psca u f (mots 'UX' 'UY') (mots 'FX' 'FY') ;",
         f: psca,
     },
@@ -129,7 +129,7 @@ fn psca(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         }
         Pair::Fields(c1) => {
             let c2 = a.req::<Rc<Chpoint>>()?;
-            field_product(a, &c1, &c2)
+            pointwise_product(a, &c1, &c2)
         }
         Pair::Elements(m1) => {
             let m2 = a.req::<Rc<Mchaml>>()?;
@@ -161,17 +161,43 @@ fn comp_lists(a: &mut Args) -> Result<(Comps, Comps)> {
     Ok((l1, l2))
 }
 
-/// Σ over nodes of Σ_i c1[l1_i] c2[l2_i]. A node where either value is
-/// missing adds nothing (a field is zero where it is not defined); a
-/// component that the field does not have at all is a mistake in the deck.
-fn field_product(a: &mut Args, c1: &Chpoint, c2: &Chpoint) -> Result<Vec<Value>> {
-    let (l1, l2) = comp_lists(a)?;
-    for (field, list, which) in [(c1, &l1, "first"), (c2, &l2, "second")] {
+/// The components of the lists must be the fields' own.
+fn check_comps(a: &Args, c1: &Chpoint, c2: &Chpoint, l1: &[String], l2: &[String]) -> Result<()> {
+    for (field, list, which) in [(c1, l1, "first"), (c2, l2, "second")] {
         let have = field.components();
         if let Some(c) = list.iter().find(|c| !have.contains(c)) {
             return Err(a.err(format!("the {} field has no component {} (it has {})", which, c, have.join(" "))));
         }
     }
+    Ok(())
+}
+
+/// PSCA on node fields (psca.notice): at every node, Σ_i c1[l1_i] c2[l2_i]
+/// as a 'SCAL' field, over the nodes where some pair is defined in both.
+fn pointwise_product(a: &mut Args, c1: &Chpoint, c2: &Chpoint) -> Result<Vec<Value>> {
+    let (l1, l2) = comp_lists(a)?;
+    check_comps(a, c1, c2, &l1, &l2)?;
+    let mut out = Chpoint::new(c1.nature);
+    for &n in &c1.nodes {
+        let mut s = None;
+        for (k1, k2) in l1.iter().zip(l2.iter()) {
+            if let (Some(x), Some(y)) = (c1.get(n, k1), c2.get(n, k2)) {
+                s = Some(s.unwrap_or(0.0) + x * y);
+            }
+        }
+        if let Some(s) = s {
+            out.add(n, "SCAL", s, false);
+        }
+    }
+    Ok(vec![Value::Chpo(Rc::new(out))])
+}
+
+/// Σ over nodes of Σ_i c1[l1_i] c2[l2_i]. A node where either value is
+/// missing adds nothing (a field is zero where it is not defined); a
+/// component that the field does not have at all is a mistake in the deck.
+fn field_product(a: &mut Args, c1: &Chpoint, c2: &Chpoint) -> Result<Vec<Value>> {
+    let (l1, l2) = comp_lists(a)?;
+    check_comps(a, c1, c2, &l1, &l2)?;
     let mut s = 0.0;
     for (n, comp, v) in c1.entries() {
         for (k, _) in l1.iter().enumerate().filter(|(_, c)| *c == comp) {

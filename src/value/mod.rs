@@ -6,6 +6,7 @@
 pub mod arith;
 pub mod by_components;
 pub mod chargement;
+mod curve_primitive;
 mod describe;
 mod display;
 pub mod field;

@@ -10,6 +10,7 @@
 
 pub mod algebra;
 pub mod numbering;
+mod primal;
 
 use crate::solve::{Kind, SolverCache};
 use std::cell::RefCell;
