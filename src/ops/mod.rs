@@ -75,6 +75,7 @@ mod transform;
 mod union;
 mod variable;
 mod variable_fields;
+mod zero;
 
 // The machine and the argument reader live in `eval`; the families name
 // them from here, as they always did.
@@ -98,6 +99,7 @@ impl Registry {
             fit::OPS,
             lists_search::OPS,
             empty::OPS,
+            zero::OPS,
             extract::OPS,
             objects::OPS,
             io::OPS,
