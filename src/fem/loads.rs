@@ -35,44 +35,13 @@ pub fn pressure_load_nodal(
     p: &[f64],
     inside: [f64; 3],
 ) -> Result<Vec<[f64; 3]>, FemError> {
-    let edge = matches!(face, ElemType::Seg2 | ElemType::Seg3);
-    let surf = matches!(face, ElemType::Tri3 | ElemType::Tri6 | ElemType::Qua4 | ElemType::Qua8);
-    if !((edge && mode != Mode::Trid) || (surf && mode == Mode::Trid)) {
-        return Err(FemError::Unsupported { form: "pressure", elem: face.name(), mode: mode.name() });
-    }
-    if x.len() != face.nodes() || p.len() != x.len() {
-        return Err(FemError::WrongNodeCount { elem: face.name(), expected: face.nodes(), got: x.len().min(p.len()) });
-    }
-    // Exact for the polynomial integrands of straight/flat faces, including
-    // the extra factor r in AXIS.
-    let rule: Vec<QPoint> = match face {
-        ElemType::Seg2 | ElemType::Seg3 => seg(3),
-        ElemType::Tri3 | ElemType::Tri6 => tri(7),
-        _ => quad(3),
-    };
-    // Area-scaled normal at a reference point, before orientation.
-    let normal = |s: &super::shape::Shape| -> [f64; 3] {
-        let mut t = [[0.0; 3]; 2];
-        for (d, xi) in s.dn.iter().zip(x) {
-            for a in 0..2 {
-                for c in 0..3 {
-                    t[a][c] += d[a] * xi[c];
-                }
-            }
-        }
-        if edge {
-            [t[0][1], -t[0][0], 0.0]
-        } else {
-            let (a, b) = (t[0], t[1]);
-            [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
-        }
-    };
+    let edge = check(face, mode, x, p)?;
     let centre = match face {
         ElemType::Tri3 | ElemType::Tri6 => [1.0 / 3.0, 1.0 / 3.0, 0.0],
         _ => [0.0; 3],
     };
     let sc = eval(face, centre);
-    let nc = normal(&sc);
+    let nc = normal(edge, &sc, x);
     let mut xc = [0.0; 3];
     for (n, xi) in sc.n.iter().zip(x) {
         for c in 0..3 {
@@ -92,11 +61,37 @@ pub fn pressure_load_nodal(
             why: "the point given inside the solid lies on the face plane; the pressure side is undefined".into(),
         });
     }
-    let sign = side.signum();
+    pressure_load_signed(face, mode, x, p, side.signum())
+}
+
+/// As [`pressure_load_nodal`], the side given by the face's own orientation
+/// rather than by a point inside the solid (pressure models, whose faces
+/// must be oriented): the forces are ∫ p · sign · n, n the face's normal,
+/// for an edge (i, j) its direction turned by -90°, for a surface
+/// x_ξ × x_η (right-handed with the node order).
+pub fn pressure_load_signed(
+    face: ElemType,
+    mode: Mode,
+    x: &[[f64; 3]],
+    p: &[f64],
+    sign: f64,
+) -> Result<Vec<[f64; 3]>, FemError> {
+    let edge = check(face, mode, x, p)?;
+    let dims = if edge { 2 } else { 3 };
+    // Exact for the polynomial integrands of straight/flat faces, including
+    // the extra factor r in AXIS.
+    let rule: Vec<QPoint> = match face {
+        ElemType::Seg2 | ElemType::Seg3 => seg(3),
+        ElemType::Tri3 | ElemType::Tri6 => tri(7),
+        _ => quad(3),
+    };
     let mut f = vec![[0.0; 3]; face.nodes()];
     for (pt, w) in rule {
         let s = eval(face, pt);
-        let n = normal(&s);
+        let n = normal(edge, &s, x);
+        if n.iter().all(|v| *v == 0.0) || n.iter().any(|v| !v.is_finite()) {
+            return Err(FemError::Degenerate { elem: face.name(), why: "face of zero length or area".into() });
+        }
         let pt_p: f64 = s.n.iter().zip(p).map(|(a, b)| a * b).sum();
         let mut wt = w * pt_p * sign;
         if mode == Mode::Axis {
@@ -117,4 +112,36 @@ pub fn pressure_load_nodal(
         }
     }
     Ok(f)
+}
+
+/// Edges in the 2D modes, surfaces in TRID; one value per node. Whether
+/// the face is an edge.
+fn check(face: ElemType, mode: Mode, x: &[[f64; 3]], p: &[f64]) -> Result<bool, FemError> {
+    let edge = matches!(face, ElemType::Seg2 | ElemType::Seg3);
+    let surf = matches!(face, ElemType::Tri3 | ElemType::Tri6 | ElemType::Qua4 | ElemType::Qua8);
+    if !((edge && mode != Mode::Trid) || (surf && mode == Mode::Trid)) {
+        return Err(FemError::Unsupported { form: "pressure", elem: face.name(), mode: mode.name() });
+    }
+    if x.len() != face.nodes() || p.len() != x.len() {
+        return Err(FemError::WrongNodeCount { elem: face.name(), expected: face.nodes(), got: x.len().min(p.len()) });
+    }
+    Ok(edge)
+}
+
+/// Area-scaled normal at a reference point, before orientation.
+fn normal(edge: bool, s: &super::shape::Shape, x: &[[f64; 3]]) -> [f64; 3] {
+    let mut t = [[0.0; 3]; 2];
+    for (d, xi) in s.dn.iter().zip(x) {
+        for a in 0..2 {
+            for c in 0..3 {
+                t[a][c] += d[a] * xi[c];
+            }
+        }
+    }
+    if edge {
+        [t[0][1], -t[0][0], 0.0]
+    } else {
+        let (a, b) = (t[0], t[1]);
+        [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+    }
 }

@@ -366,9 +366,9 @@ pub(crate) fn extr_mchaml(a: &mut Args, m: &Mchaml) -> Result<Vec<Value>> {
 }
 
 /// EXTR on a model: its mesh (`'MAIL'`), or the model of the zones of
-/// some formulations or elements (`'FORM' 'MECANIQUE'`, `'ELEM' 'QUA4'`).
+/// some formulations, elements or behaviour words (`'FORM' 'MECANIQUE'`, `'ELEM' 'QUA4'`, `'COMP' 'PRESSION'`).
 pub(crate) fn extr_model(a: &mut Args, m: &Model) -> Result<Vec<Value>> {
-    if let Some((key, words)) = zone_selection(a)? {
+    if let Some((key, words)) = zone_selection(a, "COMP")? {
         return Ok(vec![Value::Model(Rc::new(m.zones_with(key, &words)))]);
     }
     if let Some(k) = a.keyword(&["DEPL", "FORC"]) {
@@ -399,11 +399,14 @@ fn model_components(a: &Args, m: &Model, forces: bool) -> Result<Vec<String>> {
     Ok(out)
 }
 
-/// `'FORM' MOT1 (MOT2 …)` or `'ELEM' MOT1 …` after a model (EXTR, EXIS).
-pub(crate) fn zone_selection(a: &mut Args) -> Result<Option<(ZoneKey, Vec<String>)>> {
-    let key = match a.keyword(&["FORM", "ELEM"]) {
+/// `'FORM' MOT1 (MOT2 …)`, `'ELEM' MOT1 …` or the behaviour keyword and words after a model (EXTR, EXIS).
+/// `behaviour` is the keyword that selects by a behaviour word: EXIS says
+/// 'MATE', EXTR 'COMP' (its 'MATE' lists material component names).
+pub(crate) fn zone_selection(a: &mut Args, behaviour: &'static str) -> Result<Option<(ZoneKey, Vec<String>)>> {
+    let key = match a.keyword(&["FORM", "ELEM", behaviour]) {
         Some("FORM") => ZoneKey::Formulation,
-        Some(_) => ZoneKey::Element,
+        Some("ELEM") => ZoneKey::Element,
+        Some(_) => ZoneKey::Behaviour,
         None => return Ok(None),
     };
     let mut words = Vec::new();

@@ -18,7 +18,7 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "EXIS",
-        signature: "EXIS NAME | TABLE KEY | CHPOINT COMP | CHARGEMENT NAME | LIST VALUE | LISTMOTS LISTMOTS ('ET'|'OU')",
+        signature: "EXIS NAME | TABLE KEY | CHPOINT COMP | CHARGEMENT NAME | LIST VALUE | LISTMOTS LISTMOTS ('ET'|'OU') | MMODEL 'FORM'|'ELEM'|'MATE' MOT…",
         doc: "Whether a name, a table key, a component or a list member exists.",
         example: "si (exis t 'K') ; mess 'yes' ; finsi ;",
         f: exis,
@@ -146,8 +146,9 @@ fn exis(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             Some(name) => c.has(&name.trim().to_uppercase().chars().take(4).collect::<String>()),
             None => true,
         },
-        // Whether some zone has one of the formulations or elements named.
-        Value::Model(m) => match super::fields::zone_selection(a)? {
+        // Whether some zone has one of the formulations, elements or
+        // behaviour words named.
+        Value::Model(m) => match super::fields::zone_selection(a, "MATE")? {
             Some((key, words)) => !m.zones_with(key, &words).zones.is_empty(),
             None => true,
         },

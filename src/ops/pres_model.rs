@@ -6,16 +6,20 @@
 //! The line must be oriented: a positive pressure pushes along the left
 //! normal of each segment (its direction turned by +90°), the side of the
 //! solid for a contour run counter-clockwise, and the normal of COQ2.
-//! Lines (SEG2) in the 2D modes only; in AXIS for the whole ring on COQ2
-//! (as its stiffness, see `fem::coq2`), per radian on massive edges; per unit
-//! thickness in the plane modes (times DIM3 when the fields give one).
+//! Lines (SEG2, SEG3) in the 2D modes, surfaces (TRI3, QUA4, TRI6, QUA8) in
+//! TRID, where a positive pressure pushes along x_ξ × x_η (the normal
+//! right-handed with the node order). The forces are the consistent ones
+//! (∫ p N n over the face, p interpolated from the nodes); in AXIS for the
+//! whole ring, as the stiffness; per unit thickness in the plane modes
+//! (times DIM3 when the fields give one).
 
 use super::model::{material_for, zone_mode};
 use super::Args;
 use crate::error::Result;
 use crate::eval::Interp;
-use crate::fem::coq2;
-use crate::fem::mesh::{ElemType, Mesh};
+use crate::fem::element::Mode;
+use crate::fem::loads;
+use crate::fem::mesh::Mesh;
 use crate::value::model::{MchamlZone, ModelZone};
 use crate::value::{Chpoint, Mchaml, Model, Nature, Value};
 use std::rc::Rc;
@@ -31,8 +35,14 @@ pub(crate) fn is_pressure_model(m: &Model) -> bool {
 pub(crate) fn model(it: &Interp, a: &mut Args, geo: &Mesh) -> Result<Vec<Value>> {
     let mut behaviour = Vec::new();
     let mut element = None;
-    while let Some(w) = a.keyword_next(&["PRESSION"]).map(String::from).or_else(|| a.word_not_operator()) {
+    while let Some(w) = a.keyword_next(&["PRESSION", "CONS"]).map(String::from).or_else(|| a.word_not_operator()) {
         let w = w.trim().to_uppercase();
+        // The constituent's name labels the zone; gibi's zones do not keep
+        // one (REDU and EXTR select by mesh, formulation or behaviour).
+        if w == "CONS" {
+            a.word().ok_or_else(|| a.missing("the constituent's name after 'CONS'"))?;
+            continue;
+        }
         if "PRESSION".starts_with(&w) && w.len() >= 4 {
             behaviour.push("PRESSION".to_string());
         } else {
@@ -103,26 +113,36 @@ pub(crate) fn forces(it: &Interp, a: &Args, model: &Model, fields: &[Rc<Mchaml>]
             super::post::zone_of(model, z).ok_or_else(|| a.err("the pressure field does not belong to this model"))?;
         let mode = zone_mode(mz)?;
         let width = material_for(mz, fields).dim3.unwrap_or(1.0);
-        let names: [&str; 2] = if mode == crate::fem::element::Mode::Axis { ["FR", "FZ"] } else { ["FX", "FY"] };
+        let names: &[&str] = match mode {
+            Mode::Axis => &["FR", "FZ"],
+            Mode::Trid => &["FX", "FY", "FZ"],
+            _ => &["FX", "FY"],
+        };
+        // Edges push along their left normal, surfaces along x_ξ × x_η.
+        let sign = if mode == Mode::Trid { 1.0 } else { -1.0 };
         let mut e = 0;
         for part in &z.mesh.parts {
-            if part.ty != ElemType::Seg2 {
-                return Err(a.err(format!(
-                    "pressure models are available on lines (SEG2) in the 2D modes, not on {} elements",
-                    part.ty.name()
-                )));
-            }
             for nodes in part.elems() {
                 let v =
                     z.values.get(e).ok_or_else(|| a.err(format!("the field has no values on element {}", e + 1)))?;
                 let at =
                     |k: usize| v.get(if z.at_nodes { k } else { 0 }).and_then(|r| r.get(c)).copied().unwrap_or(0.0);
                 let x: Vec<[f64; 3]> = nodes.iter().map(|n| it.nodes.get(*n)).collect();
-                let f = coq2::pressure_load(mode, &x, [at(0), at(1)], width, mz.element == "COQ2")
-                    .map_err(|err| a.err(format!("element {}: {}", e + 1, err)))?;
+                // Per unit thickness in the plane modes, or per DIM3.
+                let scale = if matches!(mode, Mode::Axis | Mode::Trid) { 1.0 } else { width };
+                let p: Vec<f64> = (0..nodes.len()).map(|k| scale * at(k)).collect();
+                let f = loads::pressure_load_signed(part.ty, mode, &x, &p, sign).map_err(|err| {
+                    a.err(format!(
+                        "element {} ({}, pressure models take lines SEG2 SEG3 in the 2D modes, \
+                         surfaces TRI3 QUA4 TRI6 QUA8 in TRID): {}",
+                        e + 1,
+                        part.ty.name(),
+                        err
+                    ))
+                })?;
                 for (k, n) in nodes.iter().enumerate() {
                     for (d, name) in names.iter().enumerate() {
-                        out.add(*n, name, f[3 * k + d], true);
+                        out.add(*n, name, f[k][d], true);
                     }
                 }
                 e += 1;

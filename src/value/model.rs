@@ -173,6 +173,9 @@ pub enum ZoneKey {
     Formulation,
     /// 'ELEM': the finite element (QUA4, POUT, ...).
     Element,
+    /// A word of the behaviour (ELASTIQUE, PRESSION, ...): `EXIS m 'MATE'
+    /// w`, `EXTR m 'COMP' w`.
+    Behaviour,
 }
 
 impl Model {
@@ -185,12 +188,10 @@ impl Model {
         let zones = self
             .zones
             .iter()
-            .filter(|z| {
-                let name = match key {
-                    ZoneKey::Formulation => &z.formulation,
-                    ZoneKey::Element => &z.element,
-                };
-                wanted.contains(&four(name))
+            .filter(|z| match key {
+                ZoneKey::Formulation => wanted.contains(&four(&z.formulation)),
+                ZoneKey::Element => wanted.contains(&four(&z.element)),
+                ZoneKey::Behaviour => z.behaviour.iter().any(|b| wanted.contains(&four(b))),
             })
             .cloned()
             .collect();
