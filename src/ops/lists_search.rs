@@ -201,7 +201,8 @@ fn sauf(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     if std::mem::discriminant(&first) != std::mem::discriminant(&second) {
         return Err(a.err(format!("cannot take a {} from a {}", second.type_name(), first.type_name())));
     }
-    let kept: Vec<usize> = (0..len(&first)).filter(|&i| !(0..len(&second)).any(|j| eq.items(&first, i, &second, j))).collect();
+    let kept: Vec<usize> =
+        (0..len(&first)).filter(|&i| !(0..len(&second)).any(|j| eq.items(&first, i, &second, j))).collect();
     Ok(vec![match &first {
         Value::ListEnti(l) => Value::ListEnti(Rc::new(kept.iter().map(|&i| l[i]).collect())),
         Value::ListReel(l) => Value::ListReel(Rc::new(kept.iter().map(|&i| l[i]).collect())),
