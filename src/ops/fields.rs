@@ -6,7 +6,7 @@ use super::{dofs, Args, OpDef, PointId};
 use crate::error::Result;
 use crate::eval::Interp;
 use crate::fem::mesh::Mesh;
-use crate::value::model::ZoneKey;
+use crate::value::model::{MchamlZone, ZoneKey};
 use crate::value::{Chpoint, Mchaml, Model, Nature, Rigidite, Value};
 use std::rc::Rc;
 
@@ -120,7 +120,9 @@ fn comp_list(a: &mut Args) -> Option<Vec<String>> {
 }
 
 /// EXCO on an element field: the listed components (one alone keeps its
-/// name unless a new one is given; Cast3M renames it SCAL only for nodes).
+/// name unless a new one is given; Cast3M renames it SCAL only for nodes),
+/// point values or constants alike. Zones that hold none of them (another
+/// part of a material) are left out.
 fn exco_mchaml(a: &mut Args, m: &Mchaml) -> Result<Vec<Value>> {
     let comps = comp_list(a).ok_or_else(|| a.missing("a component"))?;
     a.keyword(&["NOID"]);
@@ -131,22 +133,56 @@ fn exco_mchaml(a: &mut Args, m: &Mchaml) -> Result<Vec<Value>> {
     let mut out = Mchaml { subtype: m.subtype.clone(), zones: vec![] };
     for z in &m.zones {
         let idx: Vec<Option<usize>> = comps.iter().map(|c| z.comps.iter().position(|x| x == c)).collect();
-        if idx.iter().any(Option::is_none) && z.constants.is_empty() {
-            return Err(a.err(format!(
-                "the field has no component {} (it has {})",
-                comps.join(" "),
-                z.comps.join(" ")
-            )));
+        let has = |i: usize| {
+            let c = &comps[i];
+            idx[i].is_some() || z.constants.contains_key(c) || z.vectors.contains_key(c) || z.laws.contains_key(c)
+        };
+        let found = (0..comps.len()).filter(|&i| has(i)).count();
+        if found == 0 {
+            continue;
         }
-        let mut nz = z.clone();
-        nz.comps = names.clone();
-        nz.values = z
-            .values
-            .iter()
-            .map(|e| e.iter().map(|p| idx.iter().map(|i| i.map_or(0.0, |i| p[i])).collect()).collect())
-            .collect();
-        nz.constants.retain(|k, _| comps.contains(k));
+        if found < comps.len() {
+            let absent: Vec<&str> = (0..comps.len()).filter(|&i| !has(i)).map(|i| comps[i].as_str()).collect();
+            return Err(a.err(format!("a zone of the field has no component {}", absent.join(" "))));
+        }
+        let point: Vec<usize> = (0..comps.len()).filter(|&i| idx[i].is_some()).collect();
+        let mut nz = MchamlZone {
+            mesh: z.mesh.clone(),
+            element: z.element.clone(),
+            at_nodes: z.at_nodes,
+            comps: point.iter().map(|&i| names[i].clone()).collect(),
+            ..Default::default()
+        };
+        if !point.is_empty() {
+            nz.values = z
+                .values
+                .iter()
+                .map(|e| e.iter().map(|p| point.iter().map(|&i| p[idx[i].unwrap_or(0)]).collect()).collect())
+                .collect();
+        }
+        for (i, c) in comps.iter().enumerate() {
+            if idx[i].is_none() {
+                if let Some(v) = z.constants.get(c) {
+                    nz.constants.insert(names[i].clone(), *v);
+                }
+                if let Some(v) = z.vectors.get(c) {
+                    nz.vectors.insert(names[i].clone(), *v);
+                }
+                if let Some(l) = z.laws.get(c) {
+                    nz.laws.insert(names[i].clone(), l.clone());
+                }
+            }
+        }
         out.zones.push(nz);
+    }
+    if out.zones.is_empty() {
+        let mut present: Vec<&str> = Vec::new();
+        for c in m.zones.iter().flat_map(|z| z.comps.iter().chain(z.constants.keys())) {
+            if !present.contains(&c.as_str()) {
+                present.push(c);
+            }
+        }
+        return Err(a.err(format!("the field has no component {} (it has {})", comps.join(" "), present.join(" "))));
     }
     Ok(vec![Value::Mchaml(Rc::new(out))])
 }

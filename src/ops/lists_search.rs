@@ -2,7 +2,8 @@
 //! and UNIQ (the list without its repeats), which share one notion of
 //! equality: integers exactly, reals within a tolerance (relative to the
 //! machine precision by default, absolute when one is given), words with
-//! or without regard to case ('NOCA').
+//! or without regard to case ('NOCA'); SAUF (the items of a list absent
+//! from another) uses the same equality.
 
 use super::{Args, OpDef};
 use crate::error::Result;
@@ -26,6 +27,13 @@ pub(crate) const OPS: &[OpDef] = &[
         doc: "Each object without its repeats, first occurrences kept in order. Reals are equal within TOL (absolute) if given; 'NOCA' ignores case; elements of a mesh are equal when they have the same type and the same nodes, in any order.",
         example: "l = uniq (lect 1 2 1 3) ;",
         f: uniq,
+    },
+    OpDef {
+        name: "SAUF",
+        signature: "LIST3 = LIST1 SAUF LIST2 (TOL | 'NOCA')   (LIST: LISTENTI|LISTREEL|LISTMOTS)",
+        doc: "The items of LIST1 equal to no item of LIST2, in their order. Reals are equal within TOL (absolute) if given; 'NOCA' ignores case.",
+        example: "l = (mots 'UX' 'UY' 'UZ') sauf (mots 'UY') ;",
+        f: sauf,
     },
 ];
 
@@ -180,6 +188,27 @@ fn uniq(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         return Err(a.missing("LISTENTI, LISTREEL, LISTMOTS or MAILLAGE"));
     }
     Ok(objs.iter().map(|o| unique(o, eq)).collect())
+}
+
+fn sauf(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let is_list = |v: &Value| matches!(v, Value::ListEnti(_) | Value::ListReel(_) | Value::ListMots(_));
+    let take = |a: &mut Args| a.opt_with(|v| is_list(v).then(|| v.clone()));
+    let first = take(a).ok_or_else(|| a.missing("LISTENTI, LISTREEL or LISTMOTS"))?;
+    let eq0 = equality(a);
+    let second = take(a).ok_or_else(|| a.missing("LISTENTI, LISTREEL or LISTMOTS"))?;
+    let eq1 = equality(a);
+    let eq = Equality { tol: eq1.tol.or(eq0.tol), nocase: eq0.nocase || eq1.nocase };
+    if std::mem::discriminant(&first) != std::mem::discriminant(&second) {
+        return Err(a.err(format!("cannot take a {} from a {}", second.type_name(), first.type_name())));
+    }
+    let kept: Vec<usize> =
+        (0..len(&first)).filter(|&i| !(0..len(&second)).any(|j| eq.items(&first, i, &second, j))).collect();
+    Ok(vec![match &first {
+        Value::ListEnti(l) => Value::ListEnti(Rc::new(kept.iter().map(|&i| l[i]).collect())),
+        Value::ListReel(l) => Value::ListReel(Rc::new(kept.iter().map(|&i| l[i]).collect())),
+        Value::ListMots(l) => Value::ListMots(Rc::new(kept.iter().map(|&i| l[i].clone()).collect())),
+        other => other.clone(),
+    }])
 }
 
 /// One object without its repeats.

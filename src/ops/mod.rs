@@ -10,6 +10,7 @@ mod calp;
 #[cfg(test)]
 mod catalogue_tests;
 mod chan_cham;
+mod chan_comp;
 mod chan_support;
 mod chargement;
 mod chpo_rigi;

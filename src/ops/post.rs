@@ -75,9 +75,13 @@ fn gauss_field(it: &Interp, a: &mut Args, subtype: &str, f: PointFn) -> Result<V
             )));
         }
         for part in &zone.mesh.parts {
+            // A property given point by point (a density-scaled YOUN) enters
+            // each element as RIGI takes it.
+            let mats = super::variable_fields::element_materials(a, &mat, part, &fields)?;
             let mut z =
                 MchamlZone { mesh: Mesh::single(part.clone()), element: zone.element.clone(), ..Default::default() };
             for (e, nodes) in part.elems().enumerate() {
+                let mat = if mats.len() == 1 { &mats[0] } else { &mats[e] };
                 let x: Vec<[f64; 3]> = nodes.iter().map(|n| it.nodes.get(*n)).collect();
                 let u = &u;
                 // A missing component reads as 0 (a field given only in UX),
@@ -92,7 +96,7 @@ fn gauss_field(it: &Interp, a: &mut Args, subtype: &str, f: PointFn) -> Result<V
                 }
                 let ue: Vec<f64> =
                     nodes.iter().flat_map(|n| names.iter().map(move |c| u.get(*n, c).unwrap_or(0.0))).collect();
-                let g = f(form, part.ty, mode, &x, &mat, &ue)
+                let g = f(form, part.ty, mode, &x, mat, &ue)
                     .map_err(|err| a.err(format!("element {}: {}", e + 1, fem_err(err).message)))?;
                 if z.comps.is_empty() {
                     z.comps = g.comps.iter().map(|c| c.to_string()).collect();
@@ -265,7 +269,12 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             super::chan_cham::from_chpoint(it, a, &ch)
         }
         "RIGIDITE" | "MASSE" | "STRESSES" => super::chan_support::to_integration_points(a),
-        "COMP" => Err(a.err("CHAN 'COMP' is not supported; use NOMC to rename components")),
+        "COMP" => {
+            if let Some(c) = early {
+                a.unread(Value::Chpo(c));
+            }
+            super::chan_comp::rename_components(a)
+        }
         "TYPE" => {
             // Relabel a field by element (chan.notice): a field built by
             // arithmetic becomes CONTRAINTES again for VMIS or PRIN, which
@@ -296,6 +305,12 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             let mut sum = Chpoint::new(Nature::Diffus);
             let mut count = std::collections::HashMap::<(usize, String), f64>::new();
             let mut out_m = Mchaml { subtype: m.subtype.clone(), zones: vec![] };
+            // The new field's subtype (TYP1), kept when blank.
+            if k != "CHPO" {
+                if let Some(sub) = a.opt::<String>().filter(|s| !s.trim().is_empty()) {
+                    out_m.subtype = sub.trim().to_uppercase();
+                }
+            }
             for z in &m.zones {
                 // Material data (constants, as MATE or EXCO of it give):
                 // the same values at every node.

@@ -168,6 +168,7 @@ fn mchaml_to_model(a: &Args, m: &Mchaml, mo: &Model) -> Result<Mchaml> {
         }
     }
     let mut out = Mchaml { subtype: m.subtype.clone(), zones: Vec::new() };
+    let mut any_covered = false;
     for mz in &mo.zones {
         let elems: Vec<(ElemType, Vec<usize>)> =
             mz.mesh.parts.iter().flat_map(|p| p.elems().map(move |e| key(p.ty, e))).collect();
@@ -198,6 +199,7 @@ fn mchaml_to_model(a: &Args, m: &Mchaml, mo: &Model) -> Result<Mchaml> {
         let mut e = 0;
         for p in &mz.mesh.parts {
             let mut nz: Option<MchamlZone> = None;
+            let mut conn = Vec::new();
             for el in p.elems() {
                 if let Some(&(zi, ze)) = at.get(&key(p.ty, el)) {
                     let src = valued[zi];
@@ -213,22 +215,22 @@ fn mchaml_to_model(a: &Args, m: &Mchaml, mo: &Model) -> Result<Mchaml> {
                     }
                     let v = src.values.get(ze).ok_or_else(|| a.err("the field has fewer values than elements"))?;
                     z.values.push(v.clone());
+                    conn.extend_from_slice(el);
                     covered[e] = true;
-                } else if !valued.is_empty() {
-                    return Err(a.err(format!(
-                        "element {} of the model (a {} on node {}) has no value in the field",
-                        e + 1,
-                        p.ty.name(),
-                        el[0] + 1
-                    )));
                 }
                 e += 1;
             }
+            if let Some(z) = nz.as_mut().filter(|_| conn.len() != p.conn.len()) {
+                z.mesh = Mesh::single(crate::fem::mesh::Part { conn, ..p.clone() });
+            }
             out.zones.extend(nz);
         }
-        if let Some(i) = covered.iter().position(|c| !c) {
-            return Err(a.err(format!("element {} of the model is not in the field", i + 1)));
-        }
+        // A field on part of the model (the elements still active) stays
+        // on that part; one on none of its elements is a mistake.
+        any_covered |= covered.iter().any(|c| *c);
+    }
+    if !any_covered && mo.zones.iter().any(|z| !z.mesh.parts.is_empty()) {
+        return Err(a.err("element 1 of the model is not in the field"));
     }
     Ok(out)
 }

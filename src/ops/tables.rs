@@ -1,5 +1,5 @@
 //! Table utilities: INDE (the keys, so decks can loop over a table), ENLE
-//! of a key, and COPI (a new table with the same entries). The arithmetic
+//! of a key, OTER (the same, in place), and COPI (a new table with the same entries). The arithmetic
 //! of VECTEUR tables is a row of the `+ - * /` table (`arith::table`).
 
 use super::{Args, OpDef};
@@ -26,7 +26,22 @@ pub(crate) const OPS: &[OpDef] = &[
         example: "t2 = copi t ; t2 . 'X' = 1 ;",
         f: copi,
     },
+    OpDef {
+        name: "OTER",
+        signature: "OTER TABLE KEY",
+        doc: "Remove the entry KEY from the table, in place (nothing to do when it has none).",
+        example: "t = tabl ; t . 'A' = 1 ; oter t 'A' ;",
+        f: oter,
+    },
 ];
+
+/// OTER: the table itself changes, as OUBL TABLE KEY does.
+fn oter(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let t = a.req::<Rc<RefCell<Table>>>()?;
+    let k = a.req::<Value>()?;
+    t.borrow_mut().remove(&Key::from_value(&k));
+    Ok(vec![])
+}
 
 /// COPI: `T2 = TABL T` aliases, so decks that change a table and keep the
 /// original (a table of parameters per load case) copy it with COPI.

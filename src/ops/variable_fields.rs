@@ -95,10 +95,74 @@ pub(crate) fn element_materials(
             }
         }
     }
+    // Zones that cover some of the part's elements without holding the
+    // part itself (a material made of pieces, REDU or ET of several, over
+    // a model reduced to another set of elements): element by element.
+    let pieces: Vec<&MchamlZone> = fields
+        .iter()
+        .flat_map(|f| f.zones.iter())
+        .filter(|z| !z.mesh.parts.iter().any(|p| p == part) && z.mesh.parts.iter().any(|p| p.ty == part.ty))
+        .collect();
+    if !pieces.is_empty() {
+        let found = by_element(part, &pieces);
+        if found.iter().any(Option::is_some) {
+            if mats.is_empty() {
+                mats = vec![base.clone(); part.len()];
+            }
+            for (m, hits) in mats.iter_mut().zip(&found) {
+                for (z, k) in hits.iter().flatten() {
+                    take_zone(m, z, *k);
+                }
+            }
+        }
+    }
     if mats.is_empty() {
         mats.push(base.clone());
     }
     Ok(mats)
+}
+
+/// For each element of `part`, the zones among `zones` holding an element
+/// with the same type and nodes, and its index in the zone.
+fn by_element<'a>(part: &Part, zones: &[&'a MchamlZone]) -> Vec<Option<Vec<(&'a MchamlZone, usize)>>> {
+    let key = |ty: ElemType, e: &[usize]| {
+        let mut k = e.to_vec();
+        k.sort_unstable();
+        (ty, k)
+    };
+    let mut found: Vec<Option<Vec<(&MchamlZone, usize)>>> = vec![None; part.len()];
+    let mine: std::collections::HashMap<(ElemType, Vec<usize>), usize> =
+        part.elems().enumerate().map(|(e, n)| (key(part.ty, n), e)).collect();
+    for z in zones {
+        let mut k = 0;
+        for p in &z.mesh.parts {
+            for n in p.elems() {
+                if let Some(&e) = mine.get(&key(p.ty, n)) {
+                    found[e].get_or_insert_with(Vec::new).push((*z, k));
+                }
+                k += 1;
+            }
+        }
+    }
+    found
+}
+
+/// What zone `z` says of its element `k`: its constants, its vector, and
+/// the mean over the element's points of each property given point by point.
+fn take_zone(m: &mut Material, z: &MchamlZone, k: usize) {
+    for (name, v) in &z.constants {
+        m.set(name, *v);
+    }
+    if let Some(v) = z.vectors.get("VECT") {
+        m.vect = Some(*v);
+    }
+    let Some(pts) = z.values.get(k) else { return };
+    for (c, name) in z.comps.iter().enumerate() {
+        if Material::default().set(name, 0.0) {
+            let mean = pts.iter().map(|p| p[c]).sum::<f64>() / pts.len().max(1) as f64;
+            m.set(name, mean);
+        }
+    }
 }
 
 const SUPPORTS: &[&str] = &["NOEUD", "GRAVITE", "RIGIDITE", "MASSE", "STRESSES"];

@@ -72,6 +72,79 @@ impl Mchaml {
         Some(out)
     }
 
+    /// This field laid on the zones of `target` when all its elements are
+    /// among target's, with zeros on the elements it does not have: a sum
+    /// of a field on every element and one on some of them (the elements
+    /// still active in a topology optimisation) adds element by element.
+    pub fn embed_in(&self, target: &Mchaml) -> Option<Mchaml> {
+        let mut at: std::collections::HashMap<Key, (usize, usize)> = std::collections::HashMap::new();
+        let mut total = 0;
+        for (zi, z) in self.zones.iter().enumerate() {
+            if z.values.is_empty() {
+                return None;
+            }
+            let mut e = 0;
+            for p in &z.mesh.parts {
+                for el in p.elems() {
+                    at.entry(key(p.ty, el)).or_insert((zi, e));
+                    e += 1;
+                }
+            }
+            total += e;
+        }
+        let mut found = 0;
+        let mut out = Mchaml { subtype: self.subtype.clone(), zones: Vec::new() };
+        for t in &target.zones {
+            if t.values.is_empty() {
+                return None;
+            }
+            let mut src: Option<usize> = None;
+            let mut hits = Vec::new();
+            let mut e = 0;
+            for p in &t.mesh.parts {
+                for el in p.elems() {
+                    let hit = at.get(&key(p.ty, el)).copied();
+                    if let Some((zi, ze)) = hit {
+                        let s = &self.zones[zi];
+                        match src {
+                            Some(k) if self.zones[k].comps != s.comps || self.zones[k].at_nodes != s.at_nodes => {
+                                return None
+                            }
+                            _ => src = Some(zi),
+                        }
+                        if s.values.get(ze)?.len() != t.values.get(e)?.len() {
+                            return None;
+                        }
+                        found += 1;
+                    }
+                    hits.push(hit);
+                    e += 1;
+                }
+            }
+            let (comps, at_nodes) = match src {
+                Some(k) => (self.zones[k].comps.clone(), self.zones[k].at_nodes),
+                None => (t.comps.clone(), t.at_nodes),
+            };
+            let values = hits
+                .iter()
+                .zip(&t.values)
+                .map(|(h, tv)| match h {
+                    Some((zi, ze)) => self.zones[*zi].values[*ze].clone(),
+                    None => vec![vec![0.0; comps.len()]; tv.len()],
+                })
+                .collect();
+            out.zones.push(MchamlZone {
+                mesh: t.mesh.clone(),
+                element: t.element.clone(),
+                comps,
+                values,
+                at_nodes,
+                ..Default::default()
+            });
+        }
+        (found == total).then_some(out)
+    }
+
     /// `fill`: a zone or component on one side only is kept, as if the
     /// other side held 0 there (sums and differences); otherwise every zone
     /// must find its partner.

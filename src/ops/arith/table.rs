@@ -189,7 +189,11 @@ fn sampled(_: &mut Interp, a: &Args, op: Bin, x: &Value, y: &Value) -> Result<Op
                 Some(n2) => m.combine_union(&n2, f, fill),
                 None => match m.realign(n) {
                     Some(m2) if !fill => m2.combine_union(n, f, fill),
-                    _ if fill => m.combine_union(n, f, fill),
+                    _ if fill => match (n.embed_in(m), m.embed_in(n)) {
+                        (Some(n2), _) => m.combine_union(&n2, f, fill),
+                        (None, Some(m2)) => m2.combine_union(n, f, fill),
+                        _ => m.combine_union(n, f, fill),
+                    },
                     _ => Err(e),
                 },
             });
