@@ -64,6 +64,7 @@ mod pointwise;
 mod post;
 mod pres_field;
 mod pres_model;
+mod pres_shell;
 mod principal;
 mod products;
 mod reso;
