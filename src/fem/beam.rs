@@ -89,9 +89,9 @@ fn section(elem: &'static str, mode: Mode, m: &Material, timo: bool, l: f64) -> 
     let (iy, j) = if d3 { (m.positive(m.inry, "INRY", elem)?, m.positive(m.tors, "TORS", elem)?) } else { (0.0, 0.0) };
     let (mut phi_y, mut phi_z) = (0.0, 0.0);
     if timo {
-        phi_y = 12.0 * e * iz / (g * m.positive(m.secy, "SECY", elem)? * l * l);
+        phi_y = 12.0 * e * iz / (g * m.positive(m.secy.or(m.sect), "SECY", elem)? * l * l);
         if d3 {
-            phi_z = 12.0 * e * iy / (g * m.positive(m.secz, "SECZ", elem)? * l * l);
+            phi_z = 12.0 * e * iy / (g * m.positive(m.secz.or(m.sect), "SECZ", elem)? * l * l);
         }
     }
     Ok(Section { e, g, a, iy, iz, j, phi_y, phi_z })
@@ -322,8 +322,8 @@ pub fn strain(timo: bool, mode: Mode, x: &[[f64; 3]], m: &Material, u: &[f64]) -
     let (s, r) = end_resultants(timo, mode, x, m, u)?;
     let elem = elem_name(timo);
     let (gy, gz) = if timo {
-        let gz = if mode == Mode::Trid { s.g * m.positive(m.secz, "SECZ", elem)? } else { 1.0 };
-        (s.g * m.positive(m.secy, "SECY", elem)?, gz)
+        let gz = if mode == Mode::Trid { s.g * m.positive(m.secz.or(m.sect), "SECZ", elem)? } else { 1.0 };
+        (s.g * m.positive(m.secy.or(m.sect), "SECY", elem)?, gz)
     } else {
         (f64::INFINITY, f64::INFINITY)
     };
@@ -356,8 +356,8 @@ pub fn hooke(timo: bool, mode: Mode, m: &Material, eps: &GaussField) -> Result<G
     let s = section(elem, mode, m, timo, 1.0)?;
     let d3 = mode == Mode::Trid;
     let (gy, gz) = if timo {
-        let gz = if d3 { s.g * m.positive(m.secz, "SECZ", elem)? } else { 0.0 };
-        (s.g * m.positive(m.secy, "SECY", elem)?, gz)
+        let gz = if d3 { s.g * m.positive(m.secz.or(m.sect), "SECZ", elem)? } else { 0.0 };
+        (s.g * m.positive(m.secy.or(m.sect), "SECY", elem)?, gz)
     } else {
         (0.0, 0.0)
     };

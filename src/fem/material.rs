@@ -25,6 +25,8 @@ pub struct Material {
     pub secy: Option<f64>,
     pub secz: Option<f64>,
     pub epai: Option<f64>,
+    /// Offset of a shell's mid-surface from its nodes, along the normal.
+    pub exce: Option<f64>,
     /// Thickness of plane-stress solids (default 1).
     pub dim3: Option<f64>,
     /// Fibre distances used by the beam VMIS formula.
@@ -57,6 +59,7 @@ impl Material {
             "SECZ" => self.secz = v,
             "EPAI" => self.epai = v,
             "DIM3" => self.dim3 = v,
+            "EXCE" => self.exce = v,
             "DX" => self.dx = v,
             "DY" => self.dy = v,
             "DZ" => self.dz = v,

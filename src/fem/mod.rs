@@ -7,6 +7,7 @@
 //! documented at the top of [`element`] and [`quadrature`].
 pub mod bar;
 pub mod beam;
+pub mod beam_skin;
 pub mod colour;
 pub mod constitutive;
 pub mod contact;
@@ -24,6 +25,7 @@ pub mod principal;
 pub mod quadrature;
 pub mod shape;
 pub mod shell;
+pub mod shell_offset;
 pub mod skin;
 pub mod solid;
 pub mod stress;

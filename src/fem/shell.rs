@@ -38,6 +38,7 @@ use super::material::Material;
 use super::mesh::ElemType;
 use super::plate::{self, PlatePoint};
 use super::quadrature::{quad, tri, QPoint};
+use super::shell_offset;
 use super::vec3::{cross, dot, sub, unit};
 
 /// Fictitious drilling stiffness, relative to the bending rotations'.
@@ -197,6 +198,7 @@ pub fn stiffness(f: Formulation, mode: Mode, x: &[[f64; 3]], m: &Material) -> Re
             }
         }
     }
+    shell_offset::stiffness_to_ref(m.exce.unwrap_or(0.0), &mut kl, n);
     // K = Tᵀ K_l T, applied column by column then row by row.
     let mut tmp = vec![0.0; n * n];
     for i in 0..n {
@@ -248,7 +250,8 @@ pub fn stress(f: Formulation, mode: Mode, x: &[[f64; 3]], m: &Material, u: &[f64
     check_u(f, x, u)?;
     let fr = frame(f, x)?;
     let sec = section(f, m)?;
-    let ul = to_local(&fr.r, u);
+    let mut ul = to_local(&fr.r, u);
+    shell_offset::to_mid(m.exce.unwrap_or(0.0), &mut ul);
     let moments = |p: [f64; 3]| {
         let r = resultants(&sec, &strains(&plate::at(&fr.xl, p), &ul));
         [r[3], r[4], r[5]]

@@ -66,6 +66,7 @@ mod pointwise;
 mod post;
 mod pres_field;
 mod pres_model;
+mod pres_shell;
 mod prim;
 mod principal;
 mod products;

@@ -111,6 +111,11 @@ pub(crate) fn forces(it: &Interp, a: &Args, model: &Model, fields: &[Rc<Mchaml>]
         let c = z.comps.iter().position(|c| c == "PRES").unwrap_or(0);
         let mz =
             super::post::zone_of(model, z).ok_or_else(|| a.err("the pressure field does not belong to this model"))?;
+        let form = super::model::formulation(mz);
+        if form.is_shell() && form != crate::fem::element::Formulation::Coq2 {
+            super::pres_shell::forces(it, a, form, z, c, &mut out)?;
+            continue;
+        }
         let mode = zone_mode(mz)?;
         let width = material_for(mz, fields).dim3.unwrap_or(1.0);
         let names: &[&str] = match mode {

@@ -7,7 +7,24 @@ use crate::fem::element::dual_name;
 use crate::value::{Chpoint, Nature};
 use std::collections::{HashMap, HashSet};
 
+/// The dual a condition's reaction lands on: the one the blocks pair
+/// with that unknown (CHAN 'INCO' may have renamed it), else the default.
+fn dual_for(blocks: &HashMap<&str, &str>, comp: &str) -> String {
+    blocks.get(comp).map_or_else(|| dual_name(comp), |d| d.to_string())
+}
+
 impl Rigidite {
+    /// Primal → dual names as the elementary blocks pair them.
+    fn duals_of_blocks(&self) -> HashMap<&str, &str> {
+        let mut m = HashMap::new();
+        for b in &self.blocks {
+            for ((_, c), d) in b.dofs.iter().zip(&b.duals) {
+                m.entry(c.as_str()).or_insert(d.as_str());
+            }
+        }
+        m
+    }
+
     /// Every elementary matrix times `s` (the conditions unchanged). A new
     /// object: it starts with a fresh solver cache.
     pub fn scaled(&self, s: f64) -> Rigidite {
@@ -37,6 +54,7 @@ impl Rigidite {
     /// the conditions c·u on FLX and cᵀλ on the primal rows (λ = LX of the
     /// field).
     pub fn matvec(&self, u: &Chpoint) -> Chpoint {
+        let dual = self.duals_of_blocks();
         let mut out = Chpoint::new(Nature::Discret);
         for b in &self.blocks {
             let nd = b.ndof();
@@ -55,7 +73,7 @@ impl Rigidite {
             out.add(c.mult_node, "FLX", cu, true);
             if let Some(l) = u.get(c.mult_node, "LX") {
                 for (n, comp, k) in c.reaction_terms() {
-                    out.add(*n, &dual_name(comp), k * l, true);
+                    out.add(*n, &dual_for(&dual, comp), k * l, true);
                 }
             }
         }
@@ -65,13 +83,14 @@ impl Rigidite {
     /// REAC: the reactions −Cᵀλ of the conditions, from the LX of a RESO
     /// result (a DISCRET field).
     pub fn reactions(&self, u: &Chpoint) -> Chpoint {
+        let dual = self.duals_of_blocks();
         let mut out = Chpoint::new(Nature::Discret);
         for c in &self.conds {
             // An inactive unilateral condition has no LX: its reaction is 0
             // (reac.notice), written explicitly so EXTR finds it.
             let l = u.get(c.mult_node, "LX").unwrap_or(0.0);
             for (n, comp, coef) in c.reaction_terms() {
-                out.add(*n, &dual_name(comp), -coef * l, true);
+                out.add(*n, &dual_for(&dual, comp), -coef * l, true);
             }
         }
         out
