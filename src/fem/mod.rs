@@ -13,6 +13,7 @@ pub mod contact;
 pub mod contact_weak;
 pub mod coq2;
 pub mod element;
+pub mod enclosed;
 pub mod incomp;
 pub mod integrate;
 pub mod joint;

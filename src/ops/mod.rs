@@ -61,6 +61,7 @@ mod pasapas_fields;
 mod pasapas_model;
 mod poin_field;
 mod pointwise;
+mod nodal_field;
 mod post;
 mod pres_field;
 mod pres_model;

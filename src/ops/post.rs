@@ -56,8 +56,12 @@ type PointFn = fn(
 ) -> std::result::Result<GaussField, element::FemError>;
 
 fn gauss_field(it: &Interp, a: &mut Args, subtype: &str, f: PointFn) -> Result<Vec<Value>> {
-    let (model, fields, u) = model_args(a)?;
-    let u = u.ok_or_else(|| a.missing("CHPOINT (the displacements)"))?;
+    let (model, mut fields, u) = model_args(a)?;
+    let u = match u {
+        Some(u) => u,
+        None => super::nodal_field::take_displacements(&mut fields)
+            .ok_or_else(|| a.missing("CHPOINT (the displacements)"))?,
+    };
     let mut out = Mchaml { subtype: subtype.into(), zones: vec![] };
     let have = u.components();
     for zone in model.zones.iter().filter(|z| z.formulation != super::pres_model::FORMULATION) {
