@@ -401,7 +401,8 @@ pub fn gradient(f: Formulation, ty: ElemType, mode: Mode, x: &[[f64; 3]], u: &[f
     let values = pts
         .iter()
         .map(|p| {
-            let d = |i: usize, j: usize| -> f64 { p.dndx.iter().enumerate().map(|(a, dn)| dn[j] * u[a * nc + i]).sum() };
+            let d =
+                |i: usize, j: usize| -> f64 { p.dndx.iter().enumerate().map(|(a, dn)| dn[j] * u[a * nc + i]).sum() };
             match mode {
                 Mode::Trid => (0..3).flat_map(|i| (0..3).map(move |j| (i, j))).map(|(i, j)| d(i, j)).collect(),
                 Mode::PlanCont | Mode::PlanDefo => vec![d(0, 0), d(0, 1), 0.0, d(1, 0), d(1, 1), 0.0, 0.0, 0.0, 0.0],

@@ -74,7 +74,11 @@ fn mesu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     } else if want == 3 && highest == 2 {
         crate::fem::enclosed::volume_inside(&pieces(2))
     } else {
-        return Err(a.err(format!("a mesh of dimension {} has no {} measure", highest, ["", "LONG", "SURF", "VOLU"][want])));
+        return Err(a.err(format!(
+            "a mesh of dimension {} has no {} measure",
+            highest,
+            ["", "LONG", "SURF", "VOLU"][want]
+        )));
     };
     Ok(vec![Value::Float(total)])
 }

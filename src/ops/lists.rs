@@ -121,7 +121,14 @@ fn sequence(a: &mut Args, int: bool) -> Result<Vec<f64>> {
 /// The values strictly between a pending PAS's start and `end`. A step
 /// that does not divide the gap becomes the nearest one that does
 /// (prog.notice); a step going the wrong way adds nothing.
-fn fill_gap(a: &Args, out: &mut Vec<f64>, pending: &mut Option<(f64, f64)>, end: f64, int: bool, has: bool) -> Result<()> {
+fn fill_gap(
+    a: &Args,
+    out: &mut Vec<f64>,
+    pending: &mut Option<(f64, f64)>,
+    end: f64,
+    int: bool,
+    has: bool,
+) -> Result<()> {
     let Some((x, step)) = pending.take() else { return Ok(()) };
     if !has {
         *pending = Some((x, step));
