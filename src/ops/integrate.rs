@@ -85,7 +85,8 @@ fn mesu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 
 /// The component to integrate: the one named, else the field's only one.
 fn component(a: &mut Args, available: Vec<String>) -> Result<String> {
-    if let Some(c) = a.word_not_operator() {
+    // A blank word (`TEXT '        '`, no characteristics) names nothing.
+    if let Some(c) = a.word_not_operator().filter(|c| !c.is_empty()) {
         if !available.contains(&c) {
             return Err(a.err(format!("the field has no component {} (it has {})", c, available.join(" "))));
         }
