@@ -455,12 +455,14 @@ impl Args<'_> {
         }
     }
 
-    /// A word on the right that is not an unquoted operator name.
+    /// A word on the right that is not an unquoted operator name. Such
+    /// words name components and options: Cast3M pads names to 4
+    /// characters, so trailing blanks (`'NU  '`) are dropped.
     pub fn word_not_operator(&mut self) -> Option<String> {
         match self.st.right.front().map(|t| &t.kind)? {
             TokKind::Word(w) if self.registry.find(w).is_some() => None,
             TokKind::Sym(_) => None,
-            _ => self.word(),
+            _ => self.word().map(|w| w.trim_end().to_string()),
         }
     }
 

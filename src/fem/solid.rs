@@ -387,8 +387,9 @@ pub fn field(
 }
 
 /// Displacement gradient (GRAD) at the points of [`rule`]: ∂u_i/∂x_j,
-/// row by row (UX,X UX,Y UY,X UY,Y in the plane; UR,R UR,Z UZ,R UZ,Z and
-/// the hoop term UR/R in AXIS; nine terms in TRID).
+/// row by row, always the nine terms of the 3×3 tensor as Cast3M names
+/// them ([`gradient_comps`]): in the plane the terms along Z are zero; in
+/// AXIS the only term along θ is the hoop one, UT,T = UR/R.
 pub fn gradient(f: Formulation, ty: ElemType, mode: Mode, x: &[[f64; 3]], u: &[f64]) -> Result<GaussField, FemError> {
     let names = dofs(mode);
     let nc = names.len();
@@ -397,26 +398,31 @@ pub fn gradient(f: Formulation, ty: ElemType, mode: Mode, x: &[[f64; 3]], u: &[f
         return Err(FemError::WrongDofCount { elem: ty.name(), expected: nd, got: u.len() });
     }
     let pts = points(ty, mode, x, &rule(f, ty), 1.0)?;
-    let dim = nc;
     let values = pts
         .iter()
         .map(|p| {
-            let mut g: Vec<f64> = (0..nc)
-                .flat_map(|i| (0..dim).map(move |j| (i, j)))
-                .map(|(i, j)| p.dndx.iter().enumerate().map(|(a, d)| d[j] * u[a * nc + i]).sum())
-                .collect();
-            if mode == Mode::Axis {
-                g.push(p.n.iter().enumerate().map(|(a, n)| n * u[a * nc]).sum::<f64>() / p.r);
+            let d =
+                |i: usize, j: usize| -> f64 { p.dndx.iter().enumerate().map(|(a, dn)| dn[j] * u[a * nc + i]).sum() };
+            match mode {
+                Mode::Trid => (0..3).flat_map(|i| (0..3).map(move |j| (i, j))).map(|(i, j)| d(i, j)).collect(),
+                Mode::PlanCont | Mode::PlanDefo => vec![d(0, 0), d(0, 1), 0.0, d(1, 0), d(1, 1), 0.0, 0.0, 0.0, 0.0],
+                Mode::Axis => {
+                    let hoop = p.n.iter().enumerate().map(|(a, n)| n * u[a * nc]).sum::<f64>() / p.r;
+                    vec![d(0, 0), d(0, 1), 0.0, d(1, 0), d(1, 1), 0.0, 0.0, 0.0, hoop]
+                }
             }
-            g
         })
         .collect();
-    let comps = match mode {
-        Mode::PlanCont | Mode::PlanDefo => vec!["UX,X", "UX,Y", "UY,X", "UY,Y"],
-        Mode::Axis => vec!["UR,R", "UR,Z", "UZ,R", "UZ,Z", "UT,T"],
-        Mode::Trid => vec!["UX,X", "UX,Y", "UX,Z", "UY,X", "UY,Y", "UY,Z", "UZ,X", "UZ,Y", "UZ,Z"],
-    };
-    Ok(GaussField { comps, values })
+    Ok(GaussField { comps: gradient_comps(mode), values })
+}
+
+/// Names of the GRAD terms: UX,X … UZ,Z, or UR,R UR,Z UR,T UZ,R … UT,T in
+/// AXIS.
+pub fn gradient_comps(mode: Mode) -> Vec<&'static str> {
+    match mode {
+        Mode::Axis => vec!["UR,R", "UR,Z", "UR,T", "UZ,R", "UZ,Z", "UZ,T", "UT,R", "UT,Z", "UT,T"],
+        _ => vec!["UX,X", "UX,Y", "UX,Z", "UY,X", "UY,Y", "UY,Z", "UZ,X", "UZ,Y", "UZ,Z"],
+    }
 }
 
 /// Integration weights (w·|J|·thickness, ·2πr in AXIS) of the points of

@@ -53,18 +53,18 @@ fn q8ri_uses_four_points_and_passes_the_patch_test() {
 fn gradient_of_a_linear_field_is_constant() {
     let (x, m) = (qua8(), mat(1000.0, 0.25));
     let g = gradient(Formulation::Solid, ElemType::Qua8, Mode::PlanDefo, &x, &m, &linear(&x)).unwrap();
-    assert_eq!(g.comps, vec!["UX,X", "UX,Y", "UY,X", "UY,Y"]);
+    assert_eq!(g.comps, vec!["UX,X", "UX,Y", "UX,Z", "UY,X", "UY,Y", "UY,Z", "UZ,X", "UZ,Y", "UZ,Z"]);
     for p in &g.values {
-        for (v, w) in p.iter().zip([2e-3, -1e-3, 3e-3, 4e-3]) {
+        for (v, w) in p.iter().zip([2e-3, -1e-3, 0.0, 3e-3, 4e-3, 0.0, 0.0, 0.0, 0.0]) {
             assert!((v - w).abs() < 1e-12, "{p:?}");
         }
     }
-    // AXIS adds the hoop term u_r / r.
+    // AXIS adds the hoop term UT,T = u_r / r, the ninth.
     let shifted: Vec<[f64; 3]> = x.iter().map(|p| [p[0] + 1.0, p[1], 0.0]).collect();
     let u: Vec<f64> = shifted.iter().flat_map(|p| [0.5 * p[0], 0.0]).collect();
     let g = gradient(Formulation::Solid, ElemType::Qua8, Mode::Axis, &shifted, &m, &u).unwrap();
     for p in &g.values {
-        assert!((p[0] - 0.5).abs() < 1e-12 && (p[4] - 0.5).abs() < 1e-12, "{p:?}");
+        assert!((p[0] - 0.5).abs() < 1e-12 && (p[8] - 0.5).abs() < 1e-12, "{p:?}");
     }
     assert!(gradient(Formulation::Barr, ElemType::Seg2, Mode::PlanCont, &x[..2], &m, &[0.0; 4]).is_err());
 }

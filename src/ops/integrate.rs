@@ -18,8 +18,8 @@ use std::rc::Rc;
 pub(crate) const OPS: &[OpDef] = &[
     OpDef {
         name: "MESU",
-        signature: "MESU GEO",
-        doc: "Measure of a mesh: the length of a line, the area of a surface, the volume of a volume (of its elements of highest dimension, geometric in every mode).",
+        signature: "MESU GEO ('LONG'|'SURF'|'VOLU')",
+        doc: "Measure of a mesh: the length of a line, the area of a surface, the volume of a volume (of its elements of highest dimension, geometric in every mode). 'LONG', 'SURF', 'VOLU' measure the elements of that dimension; 'SURF' of a closed line is the area it encloses (projected on its mean plane in 3D), 'VOLU' of a closed surface the volume it encloses.",
         example: "a = mesu s ;",
         f: mesu,
     },
@@ -49,19 +49,44 @@ fn coords(it: &Interp, nodes: &[usize]) -> Vec<[f64; 3]> {
 
 fn mesu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let m = req_geo(a)?;
-    let dim = m.parts.iter().filter(|p| !p.is_empty()).map(|p| p.ty.dim()).max().unwrap_or(0);
-    let mut total = 0.0;
-    for p in m.parts.iter().filter(|p| p.ty.dim() == dim) {
-        for e in p.elems() {
-            total += integrate::measure(p.ty, &coords(it, e));
+    let highest = m.parts.iter().filter(|p| !p.is_empty()).map(|p| p.ty.dim()).max().unwrap_or(0);
+    // 'LONG' / 'SURF' / 'VOLU' name the measure; one dimension below it,
+    // the mesh is a closed boundary and the measure is what it encloses.
+    let want = match a.keyword(&["LONG", "SURF", "VOLU"]) {
+        Some("LONG") => 1,
+        Some("SURF") => 2,
+        Some(_) => 3,
+        None => highest,
+    };
+    let pieces = |d: usize| -> Vec<Vec<[f64; 3]>> {
+        m.parts.iter().filter(|p| p.ty.dim() == d).flat_map(|p| p.elems().map(|e| coords(it, e))).collect()
+    };
+    let total = if highest >= want {
+        let mut total = 0.0;
+        for p in m.parts.iter().filter(|p| p.ty.dim() == want) {
+            for e in p.elems() {
+                total += integrate::measure(p.ty, &coords(it, e));
+            }
         }
-    }
+        total
+    } else if want == 2 && highest == 1 {
+        crate::fem::enclosed::area_inside(&pieces(1))
+    } else if want == 3 && highest == 2 {
+        crate::fem::enclosed::volume_inside(&pieces(2))
+    } else {
+        return Err(a.err(format!(
+            "a mesh of dimension {} has no {} measure",
+            highest,
+            ["", "LONG", "SURF", "VOLU"][want]
+        )));
+    };
     Ok(vec![Value::Float(total)])
 }
 
 /// The component to integrate: the one named, else the field's only one.
 fn component(a: &mut Args, available: Vec<String>) -> Result<String> {
-    if let Some(c) = a.word_not_operator() {
+    // A blank word (`TEXT '        '`, no characteristics) names nothing.
+    if let Some(c) = a.word_not_operator().filter(|c| !c.is_empty()) {
         if !available.contains(&c) {
             return Err(a.err(format!("the field has no component {} (it has {})", c, available.join(" "))));
         }

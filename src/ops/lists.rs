@@ -62,50 +62,93 @@ pub(crate) const OPS: &[OpDef] = &[
 ];
 
 /// Sequence builder shared by PROG and LECT. Everything is read in the
-/// order written, from the next token (`PAS` belongs to the value just
-/// before it, not to one further on), and every count is checked before
-/// it is allocated ([`limits`]).
+/// order written. `PAS DX` fills the gap between the value just before it
+/// and the next value written (`PROG 1. PAS 2. 7.` is 1 3 5 7), so steps
+/// chain (`0. PAS 0.1 1. PAS 0.25 2.`) and mix with `N * X`
+/// (`3 * 9. PAS 2. 3 * 13.` is 9 9 9 11 13 13 13); `PAS DX NPAS N` adds N
+/// values after the previous one. Every count is checked before it is
+/// allocated ([`limits`]).
 fn sequence(a: &mut Args, int: bool) -> Result<Vec<f64>> {
-    let mut out = Vec::new();
+    let mut out: Vec<f64> = Vec::new();
+    // A `PAS` waiting for the value that ends its gap: (start, step).
+    let mut pending: Option<(f64, f64)> = None;
     loop {
+        let first_new = out.len();
         if let Some(x) = a.opt_num_right() {
             if a.sign_like_star() {
                 let v = a.opt_num_right().ok_or_else(|| a.missing("a value after '*'"))?;
                 let n = limits::room(a, out.len(), x)?;
+                fill_gap(a, &mut out, &mut pending, v, int, n > 0)?;
                 out.extend(std::iter::repeat_n(v, n));
-            } else if a.keyword_next(&["PAS"]).is_some() {
-                let step = a.opt_num_right().ok_or_else(|| a.missing("the step after PAS"))?;
-                if a.keyword_next(&["NPAS"]).is_some() {
-                    let n = a.opt_num_right().ok_or_else(|| a.missing("the count after NPAS"))?;
-                    let n = limits::room(a, out.len(), n.max(0.0) + 1.0)?;
-                    out.extend((0..n).map(|k| x + k as f64 * step));
-                } else {
-                    let end = a.opt_num_right().ok_or_else(|| a.missing("the last value after PAS"))?;
-                    if step == 0.0 || (end - x) * step < 0.0 {
-                        return Err(a.err(format!("PAS {} cannot go from {} to {}", step, x, end)));
-                    }
-                    let n = ((end - x) / step + 1e-9).floor();
-                    if int && ((end - x) / step - n).abs() > 1e-9 {
-                        return Err(a.err(format!("PAS {} does not divide the interval from {} to {}", step, x, end)));
-                    }
-                    let n = limits::room(a, out.len(), n + 1.0)?;
-                    out.extend((0..n).map(|k| x + k as f64 * step));
-                }
             } else {
+                fill_gap(a, &mut out, &mut pending, x, int, true)?;
                 limits::room(a, out.len(), 1.0)?;
                 out.push(x);
             }
         } else if let Some(l) = a.opt_right::<Rc<Vec<f64>>>() {
+            fill_gap(a, &mut out, &mut pending, l.first().copied().unwrap_or(0.0), int, !l.is_empty())?;
             limits::room(a, out.len(), l.len() as f64)?;
             out.extend(l.iter());
         } else if let Some(l) = a.opt_right::<Rc<Vec<i64>>>() {
+            fill_gap(a, &mut out, &mut pending, l.first().map_or(0.0, |&i| i as f64), int, !l.is_empty())?;
             limits::room(a, out.len(), l.len() as f64)?;
             out.extend(l.iter().map(|&i| i as f64));
         } else {
             break;
         }
+        if out.len() == first_new || a.keyword_next(&["PAS"]).is_none() {
+            continue;
+        }
+        let x = out[out.len() - 1];
+        let step = a.opt_num_right().ok_or_else(|| a.missing("the step after PAS"))?;
+        if a.keyword_next(&["NPAS"]).is_some() {
+            let n = a.opt_num_right().ok_or_else(|| a.missing("the count after NPAS"))?;
+            if n < 0.0 {
+                return Err(a.err(format!("NPAS must be positive or zero, found {}", n)));
+            }
+            let n = limits::room(a, out.len(), n)?;
+            out.extend((1..=n).map(|k| x + k as f64 * step));
+        } else {
+            pending = Some((x, step));
+        }
+    }
+    if pending.is_some() {
+        return Err(a.missing("the value that ends the PAS"));
     }
     Ok(out)
+}
+
+/// The values strictly between a pending PAS's start and `end`. A step
+/// that does not divide the gap becomes the nearest one that does
+/// (prog.notice); a step going the wrong way adds nothing.
+fn fill_gap(
+    a: &Args,
+    out: &mut Vec<f64>,
+    pending: &mut Option<(f64, f64)>,
+    end: f64,
+    int: bool,
+    has: bool,
+) -> Result<()> {
+    let Some((x, step)) = pending.take() else { return Ok(()) };
+    if !has {
+        *pending = Some((x, step));
+        return Ok(());
+    }
+    if step == 0.0 {
+        return Err(a.err("PAS 0 cannot reach another value"));
+    }
+    let ratio = (end - x) / step;
+    if ratio <= 0.0 {
+        return Ok(());
+    }
+    let n = ratio.round().max(1.0);
+    if int && (ratio - n).abs() > 1e-9 {
+        return Err(a.err(format!("PAS {} does not divide the interval from {} to {}", step, x, end)));
+    }
+    let dx = (end - x) / n;
+    let n = limits::room(a, out.len(), n - 1.0)?;
+    out.extend((1..=n).map(|k| x + k as f64 * dx));
+    Ok(())
 }
 
 fn prog(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {

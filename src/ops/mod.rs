@@ -52,6 +52,7 @@ mod mesh_repair;
 mod mesh_ruled;
 mod mesh_select;
 mod model;
+mod nodal_field;
 mod noise;
 mod nuage;
 mod objects;

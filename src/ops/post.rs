@@ -15,7 +15,7 @@ use std::rc::Rc;
 pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "SIGM", signature: "SIGM ('LINE') MMODEL MCHAML (MCHAML) CHPOINT", doc: "Elastic stresses (SMXX … for massive elements, EFFX … MOMZ resultants for bars and beams, N11 N22 N12 M11 M22 M12 V1 V2 for shells) at the element points.", example: "sig = sigm mo ma u ;", f: sigm },
     OpDef { name: "EPSI", signature: "EPSI ('LINE') MMODEL (MCHAML) CHPOINT", doc: "Strains (EPXX … GAXY; generalised strains for bars and beams; EPSS EPTT GAST RTSS RTTT RTST for shells).", example: "eps = epsi mo ma u ;", f: epsi },
-    OpDef { name: "GRAD", signature: "GRAD MMODEL CHPOINT (MCHAML)", doc: "Gradient of the displacements of a massive model at its stress points (UX,X UX,Y UY,X UY,Y …; UR,R UR,Z UZ,R UZ,Z UT,T in AXIS).", example: "g = grad mo u ;", f: grad },
+    OpDef { name: "GRAD", signature: "GRAD MMODEL (MCHAML) CHPOINT|MCHAML_NOEUD (MCHAML)", doc: "Gradient of the displacements of a massive model at its stress points: the nine terms UX,X UX,Y UX,Z UY,X … UZ,Z (those along Z zero in the plane; UR,R UR,Z UR,T UZ,R … UT,T in AXIS, UT,T = UR/R). The displacements may be a CHPOINT or an element field at the nodes (CHAN 'CHAM' … 'NOEUD').", example: "g = grad mo u ;", f: grad },
     OpDef { name: "VMIS", signature: "VMIS MMODEL MCHAML_STRESS (MCHAML)", doc: "Von Mises equivalent stress (the beam formula for bars and beams).", example: "vm = vmis mo sig ma ;", f: vmis },
     OpDef { name: "CHAN", signature: "CHAN 'POI1'|QUA8|TRI6|SEG3|QUA4|TRI3|SEG2 GEO | CHAN 'CHPO'|'NOEUD'|'GRAVITE' MMODEL MCHAML ('MOYE'|'SOMM') | CHAN 'RIGIDITE'|'MASSE'|'STRESSES' MMODEL MCHAML (subtype) | CHAN 'INCO' RIGIDITE LISTMOTS LISTMOTS | CHAN 'ATTRIBUT' CHPOINT 'NATURE' word | CHAN 'CHAM' CHPOINT GEO|MMODEL ('NOEUD'|'GRAVITE'|'RIGIDITE'|'MASSE'|'STRESSES') (subtype) | CHAN 'TYPE' MCHAML word | CHAN 'MAJU'|'MINU' MOT", doc: "Change the type or attributes of an object.", example: "pts = chan 'POI1' l ;", f: chan },
     OpDef { name: "PRES", signature: "PRES 'MASS' MMODEL (MCHAML) VALUE GEO | PRES 'COQU' MMODEL VALUE ('NORM') | PRES MMODEL_PRESSION 'PRES' VALUE|CHPOINT", doc: "Of a pressure model (MODE … 'CHARGEMENT' 'PRESSION'): the pressure at the element nodes, an MCHAML for BSIG (positive along the left normal of each oriented line SEG2 SEG3 in 2D, along x_xi ^ x_eta of each surface TRI3 QUA4 TRI6 QUA8 in TRID). Otherwise: Nodal forces equivalent to a pressure on edges/faces of a massive model (positive towards the solid; in plane stress for the DIM3 thickness of the characteristics MCHAML when given, else per unit thickness), or on every element of a shell model (positive along the element normal).", example: "f = pres 'MASS' mo 10. haut ;", f: pres },
@@ -56,8 +56,12 @@ type PointFn = fn(
 ) -> std::result::Result<GaussField, element::FemError>;
 
 fn gauss_field(it: &Interp, a: &mut Args, subtype: &str, f: PointFn) -> Result<Vec<Value>> {
-    let (model, fields, u) = model_args(a)?;
-    let u = u.ok_or_else(|| a.missing("CHPOINT (the displacements)"))?;
+    let (model, mut fields, u) = model_args(a)?;
+    let u = match u {
+        Some(u) => u,
+        None => super::nodal_field::take_displacements(&mut fields)
+            .ok_or_else(|| a.missing("CHPOINT (the displacements)"))?,
+    };
     let mut out = Mchaml { subtype: subtype.into(), zones: vec![] };
     let have = u.components();
     for zone in model.zones.iter().filter(|z| z.formulation != super::pres_model::FORMULATION) {

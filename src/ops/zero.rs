@@ -127,11 +127,7 @@ fn stress_point_comps(
     let v: Vec<&str> = match kind {
         "CONTRAIN" if massive => solid::stress_comps(m),
         "DEFORMAT" | "DEFINELA" if massive => solid::strain_comps(m),
-        "GRADIENT" if massive => match m {
-            Mode::PlanCont | Mode::PlanDefo => vec!["UX,X", "UX,Y", "UY,X", "UY,Y"],
-            Mode::Axis => vec!["UR,R", "UR,Z", "UZ,R", "UZ,Z", "UT,T"],
-            Mode::Trid => vec!["UX,X", "UX,Y", "UX,Z", "UY,X", "UY,Y", "UY,Z", "UZ,X", "UZ,Y", "UZ,Z"],
-        },
+        "GRADIENT" if massive => solid::gradient_comps(m),
         "PRINCIPA" if massive && m == Mode::Trid => {
             vec!["SI11", "SI22", "SI33", "COX1", "COY1", "COZ1", "COX2", "COY2", "COZ2", "COX3", "COY3", "COZ3"]
         }

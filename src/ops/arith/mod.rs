@@ -117,7 +117,13 @@ fn operands(a: &mut Args) -> Result<(Value, Value)> {
 /// refused before it is computed, the rule comes from the table, and a
 /// result that is not finite is an error naming the operation.
 fn binary(it: &mut Interp, a: &mut Args, op: Bin) -> Result<Vec<Value>> {
-    let (x, y) = operands(a)?;
+    let (x, mut y) = operands(a)?;
+    // `OBJ1 * MODL1 OBJ2` (aaa2.notice): the model names the support of
+    // two element fields; the product itself is the same, so the model
+    // is read and set aside.
+    if op == Bin::Mul && matches!(x, Value::Mchaml(_)) && matches!(y, Value::Model(_)) {
+        y = a.right_any().ok_or_else(|| a.missing("the MCHAML after the model"))?;
+    }
     if let Some(e) = arith::divides_by_zero(op, &x, &y) {
         return Err(a.err(e));
     }
