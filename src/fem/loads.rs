@@ -26,6 +26,45 @@ pub fn pressure_load(
     pressure_load_nodal(face, mode, x, &vec![p; x.len()], inside)
 }
 
+/// Nodal forces of a pressure on an oriented face, without a solid beside
+/// it (pressure models, `MODE geo 'CHARGEMENT' 'PRESSION'`). On a surface
+/// a positive pressure pushes along the face's right-hand normal, as in
+/// Cast3M: on a skin oriented outward (ENVE) it pulls, which is how decks
+/// apply a remote traction; a surface run against the solid's outward
+/// normal (a DALL contour turning clockwise seen from outside) is pushed
+/// into the solid. On a line of the plane it pushes to the left of the
+/// line's direction (inward for a contour run counter-clockwise), as the
+/// SEG2 pressure models do.
+pub fn oriented_pressure_load(face: ElemType, mode: Mode, x: &[[f64; 3]], p: &[f64]) -> Result<Vec<[f64; 3]>, FemError> {
+    if x.len() != face.nodes() {
+        return Err(FemError::WrongNodeCount { elem: face.name(), expected: face.nodes(), got: x.len() });
+    }
+    let centre = match face {
+        ElemType::Tri3 | ElemType::Tri6 => [1.0 / 3.0, 1.0 / 3.0, 0.0],
+        _ => [0.0; 3],
+    };
+    let s = eval(face, centre);
+    let mut t = [[0.0; 3]; 2];
+    let mut xc = [0.0; 3];
+    for ((d, xi), ni) in s.dn.iter().zip(x).zip(&s.n) {
+        for c in 0..3 {
+            t[0][c] += d[0] * xi[c];
+            t[1][c] += d[1] * xi[c];
+            xc[c] += ni * xi[c];
+        }
+    }
+    let n = if face.dim() == 1 {
+        [t[0][1], -t[0][0], 0.0]
+    } else {
+        let (a, b) = (t[0], t[1]);
+        [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+    };
+    // A point on the side the pressure pushes towards.
+    let sign = if face.dim() == 1 { -1.0 } else { 1.0 };
+    let inside = [xc[0] + sign * n[0], xc[1] + sign * n[1], xc[2] + sign * n[2]];
+    pressure_load_nodal(face, mode, x, p, inside)
+}
+
 /// As [`pressure_load`] for a pressure given at the face nodes and
 /// interpolated with the face's shape functions.
 pub fn pressure_load_nodal(

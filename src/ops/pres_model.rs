@@ -105,19 +105,42 @@ pub(crate) fn forces(it: &Interp, a: &Args, model: &Model, fields: &[Rc<Mchaml>]
         let width = material_for(mz, fields).dim3.unwrap_or(1.0);
         let names: [&str; 2] = if mode == crate::fem::element::Mode::Axis { ["FR", "FZ"] } else { ["FX", "FY"] };
         let mut e = 0;
+        let trid = mode == crate::fem::element::Mode::Trid;
         for part in &z.mesh.parts {
-            if part.ty != ElemType::Seg2 {
-                return Err(a.err(format!(
-                    "pressure models are available on lines (SEG2) in the 2D modes, not on {} elements",
-                    part.ty.name()
-                )));
-            }
+            // SEG2 (and COQ2) keep their own integration; other lines of
+            // the plane modes and surfaces in TRID use the face loads.
+            let general = match part.ty {
+                ElemType::Seg2 if !trid => false,
+                ElemType::Seg3 if !trid && mode != crate::fem::element::Mode::Axis => true,
+                t if trid && t.dim() == 2 && t.joint_face().is_none() => true,
+                t => {
+                    return Err(a.err(format!(
+                        "pressure models are available on lines (SEG2, SEG3) in the plane modes, SEG2 in AXIS and surfaces in TRID, not on {} elements in mode {}",
+                        t.name(),
+                        mode.name()
+                    )))
+                }
+            };
             for nodes in part.elems() {
                 let v =
                     z.values.get(e).ok_or_else(|| a.err(format!("the field has no values on element {}", e + 1)))?;
                 let at =
                     |k: usize| v.get(if z.at_nodes { k } else { 0 }).and_then(|r| r.get(c)).copied().unwrap_or(0.0);
                 let x: Vec<[f64; 3]> = nodes.iter().map(|n| it.nodes.get(*n)).collect();
+                if general {
+                    let scale = if trid { 1.0 } else { width };
+                    let p: Vec<f64> = (0..nodes.len()).map(|k| at(k) * scale).collect();
+                    let f = crate::fem::loads::oriented_pressure_load(part.ty, mode, &x, &p)
+                        .map_err(|err| a.err(format!("element {}: {}", e + 1, err)))?;
+                    let names: &[&str] = if trid { &["FX", "FY", "FZ"] } else { &names };
+                    for (n, fk) in nodes.iter().zip(&f) {
+                        for (d, name) in names.iter().enumerate() {
+                            out.add(*n, name, fk[d], true);
+                        }
+                    }
+                    e += 1;
+                    continue;
+                }
                 let f = coq2::pressure_load(mode, &x, [at(0), at(1)], width, mz.element == "COQ2")
                     .map_err(|err| a.err(format!("element {}: {}", e + 1, err)))?;
                 for (k, n) in nodes.iter().enumerate() {

@@ -1,6 +1,6 @@
 //! Sweeps: TRAN (translation), ROTA (rotation) and VOLU (between two
 //! surfaces). A sweep turns points into SEG2, SEG2 into QUA4, SEG3 into
-//! QUA8, TRI3 into PRI6 and QUA4 into CUB8.
+//! QUA8, TRI3 into PRI6, QUA4 into CUB8, TRI6 into PR15 and QUA8 into CU20.
 //!
 //! Common conventions of the three operators:
 //!
@@ -107,7 +107,18 @@ pub fn between(
 ) -> Result<Mesh, MeshError> {
     check_nodes(op, nodes, s1)?;
     check_nodes(op, nodes, s2)?;
-    let types = |m: &Mesh| m.parts.iter().filter(|p| !p.is_empty()).map(|p| (p.ty, p.len())).collect::<Vec<_>>();
+    // Element types in order, consecutive parts of one type (colours)
+    // counted together: elements face each other one by one.
+    let types = |m: &Mesh| {
+        let mut v: Vec<(ElemType, usize)> = Vec::new();
+        for p in m.parts.iter().filter(|p| !p.is_empty()) {
+            match v.last_mut() {
+                Some((t, n)) if *t == p.ty => *n += p.len(),
+                _ => v.push((p.ty, p.len())),
+            }
+        }
+        v
+    };
     if types(s1) != types(s2) {
         let show = |m: &Mesh| types(m).iter().map(|(t, n)| format!("{n} {}", t.name())).collect::<Vec<_>>().join(" + ");
         return fail(
@@ -173,6 +184,11 @@ fn sweep_to(
         match p.ty {
             ElemType::Poi1 | ElemType::Seg2 | ElemType::Tri3 | ElemType::Qua4 => {}
             ElemType::Seg3 => halves_needed.extend(p.elems().flat_map(|e| [e[0], e[2]])),
+            // Quadratic volumes have mid-height nodes above the corners only.
+            ElemType::Tri6 | ElemType::Qua8 => {
+                let nc = p.ty.nodes() / 2;
+                halves_needed.extend(p.elems().flat_map(|e| (0..nc).map(move |k| e[2 * k])))
+            }
             other => return fail(op, format!("cannot sweep {} elements (no matching element type)", other.name())),
         }
     }
@@ -219,6 +235,8 @@ fn sweep_to(
             ElemType::Seg2 => ElemType::Qua4,
             ElemType::Seg3 => ElemType::Qua8,
             ElemType::Tri3 => ElemType::Pri6,
+            ElemType::Tri6 => ElemType::Pr15,
+            ElemType::Qua8 => ElemType::Cu20,
             _ => ElemType::Cub8,
         };
         let pos = match out.iter().position(|(t, _)| *t == ty) {
@@ -239,6 +257,23 @@ fn sweep_to(
                     ElemType::Seg3 => {
                         let h = |a: usize| halves[l][index[&a]];
                         conn.extend([lo[0], lo[1], lo[2], h(e[2]), hi[2], hi[1], hi[0], h(e[0])]);
+                    }
+                    ElemType::Tri6 | ElemType::Qua8 => {
+                        // The base face around its contour, the mid-height
+                        // nodes above its corners, the top face.
+                        let nc = e.len() / 2;
+                        let cl: Vec<usize> = (0..nc).map(|k| lo[2 * k]).collect();
+                        let ch: Vec<usize> = (0..nc).map(|k| hi[2 * k]).collect();
+                        let perm: &[usize] = if positive_order(nodes, &cl, &ch)[1] == 1 {
+                            &[0, 1, 2, 3, 4, 5, 6, 7][..e.len()]
+                        } else if nc == 3 {
+                            &[0, 5, 4, 3, 2, 1]
+                        } else {
+                            &[0, 7, 6, 5, 4, 3, 2, 1]
+                        };
+                        conn.extend(perm.iter().map(|&i| lo[i]));
+                        conn.extend(perm.iter().step_by(2).map(|&i| halves[l][index[&e[i]]]));
+                        conn.extend(perm.iter().map(|&i| hi[i]));
                     }
                     _ => {
                         let order = positive_order(nodes, &lo, &hi);
