@@ -130,14 +130,30 @@ pub fn between(
             ),
         );
     }
-    let mut map: HashMap<usize, usize> = HashMap::new();
-    let c1 = s1.parts.iter().flat_map(|p| p.conn.iter().copied());
-    let c2 = s2.parts.iter().flat_map(|p| p.conn.iter().copied());
-    for (a, b) in c1.zip(c2) {
-        if *map.entry(a).or_insert(b) != b {
-            return fail(op, format!("node {} of the first mesh faces two different nodes of the second", a + 1));
+    // Node k of element e of s1 faces node k of element e of s2; failing
+    // that, every element of s1 turned over (the face 2 of a volume whose
+    // sweep listed its base reversed, see `sweep_to`).
+    let pairing = |turned: bool| -> Result<HashMap<usize, usize>, usize> {
+        let mut map: HashMap<usize, usize> = HashMap::new();
+        let e1 = s1.parts.iter().flat_map(|p| p.elems().map(move |e| (p.ty, e)));
+        let e2 = s2.parts.iter().flat_map(|p| p.elems());
+        for ((ty, a), b) in e1.zip(e2) {
+            let perm = super::symmetry::turn_over(ty);
+            for k in 0..a.len() {
+                let ak = if turned { a[perm[k]] } else { a[k] };
+                if *map.entry(ak).or_insert(b[k]) != b[k] {
+                    return Err(ak);
+                }
+            }
         }
-    }
+        Ok(map)
+    };
+    let map = match pairing(false).or_else(|_| pairing(true)) {
+        Ok(m) => m,
+        Err(a) => {
+            return fail(op, format!("node {} of the first mesh faces two different nodes of the second", a + 1))
+        }
+    };
     let targets: Vec<(usize, V3, f64)> = map.iter().map(|(&a, &b)| (a, nodes.get(b), nodes.density[b])).collect();
     let gap = targets.iter().map(|(a, x, _)| dist(nodes.get(*a), *x)).sum::<f64>() / targets.len().max(1) as f64;
     let t = fractions(op, spacing, gap, mean_density(nodes, s1), mean_density(nodes, s2))?;
