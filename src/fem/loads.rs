@@ -35,7 +35,12 @@ pub fn pressure_load(
 /// into the solid. On a line of the plane it pushes to the left of the
 /// line's direction (inward for a contour run counter-clockwise), as the
 /// SEG2 pressure models do.
-pub fn oriented_pressure_load(face: ElemType, mode: Mode, x: &[[f64; 3]], p: &[f64]) -> Result<Vec<[f64; 3]>, FemError> {
+pub fn oriented_pressure_load(
+    face: ElemType,
+    mode: Mode,
+    x: &[[f64; 3]],
+    p: &[f64],
+) -> Result<Vec<[f64; 3]>, FemError> {
     if x.len() != face.nodes() {
         return Err(FemError::WrongNodeCount { elem: face.name(), expected: face.nodes(), got: x.len() });
     }

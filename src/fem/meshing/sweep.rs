@@ -150,9 +150,7 @@ pub fn between(
     };
     let map = match pairing(false).or_else(|_| pairing(true)) {
         Ok(m) => m,
-        Err(a) => {
-            return fail(op, format!("node {} of the first mesh faces two different nodes of the second", a + 1))
-        }
+        Err(a) => return fail(op, format!("node {} of the first mesh faces two different nodes of the second", a + 1)),
     };
     let targets: Vec<(usize, V3, f64)> = map.iter().map(|(&a, &b)| (a, nodes.get(b), nodes.density[b])).collect();
     let gap = targets.iter().map(|(a, x, _)| dist(nodes.get(*a), *x)).sum::<f64>() / targets.len().max(1) as f64;
