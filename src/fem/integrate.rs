@@ -62,6 +62,9 @@ fn measure_rule(ty: ElemType) -> Vec<QPoint> {
         ElemType::Cub8 => hexa(3),
         ElemType::Tet4 => tet(4),
         ElemType::Pri6 => prism(7, 3),
+        // Degree 5 in each direction covers curved quadratic volumes well.
+        ElemType::Cu20 => hexa(3),
+        ElemType::Pr15 => prism(7, 3),
         // The face's measure, on the mid-surface (t = 0).
         ElemType::Rac2 => seg(3),
         ElemType::Rac3 => measure_rule(ElemType::Seg3),

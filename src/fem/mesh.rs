@@ -22,6 +22,11 @@ pub enum ElemType {
     Cub8,
     Tet4,
     Pri6,
+    /// Quadratic volumes: nodes of the bottom face around its contour
+    /// (as QUA8/TRI6), then the mid-height nodes of the vertical edges
+    /// (under each bottom corner in turn), then the top face as the bottom.
+    Cu20,
+    Pr15,
     /// Joint elements (RACC, LIAI): the nodes of a face on side 1, then
     /// the facing nodes of side 2 in the same order.
     Rac2,
@@ -32,7 +37,7 @@ pub enum ElemType {
 
 impl ElemType {
     /// Every geometry, in Cast3M's usual listing order.
-    pub const ALL: [ElemType; 14] = [
+    pub const ALL: [ElemType; 16] = [
         ElemType::Poi1,
         ElemType::Seg2,
         ElemType::Seg3,
@@ -43,6 +48,8 @@ impl ElemType {
         ElemType::Cub8,
         ElemType::Tet4,
         ElemType::Pri6,
+        ElemType::Cu20,
+        ElemType::Pr15,
         ElemType::Rac2,
         ElemType::Rac3,
         ElemType::Lia3,
@@ -62,6 +69,8 @@ impl ElemType {
             ElemType::Cub8 => 8,
             ElemType::Tet4 => 4,
             ElemType::Pri6 => 6,
+            ElemType::Cu20 => 20,
+            ElemType::Pr15 => 15,
             ElemType::Rac2 => 4,
             ElemType::Rac3 | ElemType::Lia3 => 6,
             ElemType::Lia4 => 8,
@@ -74,7 +83,7 @@ impl ElemType {
             ElemType::Poi1 => 0,
             ElemType::Seg2 | ElemType::Seg3 | ElemType::Rac2 | ElemType::Rac3 => 1,
             ElemType::Tri3 | ElemType::Tri6 | ElemType::Qua4 | ElemType::Qua8 | ElemType::Lia3 | ElemType::Lia4 => 2,
-            ElemType::Cub8 | ElemType::Tet4 | ElemType::Pri6 => 3,
+            ElemType::Cub8 | ElemType::Tet4 | ElemType::Pri6 | ElemType::Cu20 | ElemType::Pr15 => 3,
         }
     }
 
@@ -91,6 +100,8 @@ impl ElemType {
             ElemType::Cub8 => "CUB8",
             ElemType::Tet4 => "TET4",
             ElemType::Pri6 => "PRI6",
+            ElemType::Cu20 => "CU20",
+            ElemType::Pr15 => "PR15",
             ElemType::Rac2 => "RAC2",
             ElemType::Rac3 => "RAC3",
             ElemType::Lia3 => "LIA3",

@@ -45,6 +45,8 @@ pub fn ref_nodes(ty: ElemType) -> Vec<[f64; 3]> {
             v.extend(t.iter().map(|p| [p[0], p[1], 1.]));
             v
         }
+        ElemType::Cu20 => layered(&ref_nodes(ElemType::Qua8), &[0, 2, 4, 6]),
+        ElemType::Pr15 => layered(&ref_nodes(ElemType::Tri6), &[0, 2, 4]),
         // A joint is its face drawn twice: side 1 at t = -1, side 2 at
         // t = +1, t the coordinate after the face's own (y on a line, z
         // on a surface).
@@ -56,6 +58,15 @@ pub fn ref_nodes(ty: ElemType) -> Vec<[f64; 3]> {
             v
         }
     }
+}
+
+/// A quadratic volume's reference nodes: its base face at ζ = -1, the
+/// mid-height nodes above the base's corners at ζ = 0, the top face at 1.
+fn layered(face: &[[f64; 3]], corners: &[usize]) -> Vec<[f64; 3]> {
+    let mut v: Vec<_> = face.iter().map(|p| [p[0], p[1], -1.]).collect();
+    v.extend(corners.iter().map(|&k| [face[k][0], face[k][1], 0.]));
+    v.extend(face.iter().map(|p| [p[0], p[1], 1.]));
+    v
 }
 
 /// The face of a joint geometry and the reference coordinate across it.
@@ -152,6 +163,67 @@ pub fn eval(ty: ElemType, p: [f64; 3]) -> Shape {
             }
             Shape { n, dn }
         }
+        ElemType::Cu20 => {
+            // Serendipity: corners (1+aξ)(1+bη)(1+cζ)(aξ+bη+cζ-2)/8, an
+            // edge node (1-ξ_d²)·Π(1+a_e ξ_e)/4 over the two other axes.
+            let mut n = Vec::with_capacity(20);
+            let mut dn = Vec::with_capacity(20);
+            for a in ref_nodes(ty) {
+                let f: [f64; 3] = std::array::from_fn(|d| 1. + a[d] * p[d]);
+                match (0..3).find(|&d| a[d] == 0.) {
+                    None => {
+                        let s = a[0] * x + a[1] * y + a[2] * z - 2.;
+                        n.push(0.125 * f[0] * f[1] * f[2] * s);
+                        dn.push(std::array::from_fn(|d| {
+                            let (e, g) = ((d + 1) % 3, (d + 2) % 3);
+                            0.125 * a[d] * f[e] * f[g] * (s + f[d])
+                        }));
+                    }
+                    Some(d) => {
+                        let (e, g) = ((d + 1) % 3, (d + 2) % 3);
+                        let q = 1. - p[d] * p[d];
+                        n.push(0.25 * q * f[e] * f[g]);
+                        let mut di = [0.; 3];
+                        di[d] = -0.5 * p[d] * f[e] * f[g];
+                        di[e] = 0.25 * q * a[e] * f[g];
+                        di[g] = 0.25 * q * f[e] * a[g];
+                        dn.push(di);
+                    }
+                }
+            }
+            Shape { n, dn }
+        }
+        ElemType::Pr15 => {
+            let l = [1. - x - y, x, y];
+            let dl = [[-1., -1.], [1., 0.], [0., 1.]];
+            let (mut n, mut dn) = (vec![0.; 15], vec![[0.; 3]; 15]);
+            for c in [-1., 1.] {
+                let base = if c < 0. { 0 } else { 9 };
+                let fz = 1. + c * z;
+                for i in 0..3 {
+                    let j = (i + 1) % 3;
+                    // Corner: L(2L-1)(1+cζ)/2 - L(1-ζ²)/2.
+                    let g = (2. * l[i] - 1.) * fz - (1. - z * z);
+                    n[base + 2 * i] = 0.5 * l[i] * g;
+                    let dg_dl = 2. * fz;
+                    let dlg = 0.5 * (g + l[i] * dg_dl);
+                    dn[base + 2 * i] = [dlg * dl[i][0], dlg * dl[i][1], 0.5 * l[i] * ((2. * l[i] - 1.) * c + 2. * z)];
+                    // Mid-side of the triangle: 2 Li Lj (1+cζ).
+                    n[base + 2 * i + 1] = 2. * l[i] * l[j] * fz;
+                    dn[base + 2 * i + 1] = [
+                        2. * fz * (dl[i][0] * l[j] + l[i] * dl[j][0]),
+                        2. * fz * (dl[i][1] * l[j] + l[i] * dl[j][1]),
+                        2. * l[i] * l[j] * c,
+                    ];
+                }
+            }
+            for i in 0..3 {
+                let q = 1. - z * z;
+                n[6 + i] = l[i] * q;
+                dn[6 + i] = [dl[i][0] * q, dl[i][1] * q, -2. * z * l[i]];
+            }
+            Shape { n, dn }
+        }
         ElemType::Rac2 | ElemType::Rac3 | ElemType::Lia3 | ElemType::Lia4 => {
             let (face, t) = joint_axes(ty);
             let s = eval(face, with(p, t, 0.));
@@ -193,9 +265,27 @@ pub fn faces(ty: ElemType) -> Vec<(ElemType, Vec<usize>)> {
             v.extend(f(Qua4, &[&[0, 1, 4, 3], &[1, 2, 5, 4], &[2, 0, 3, 5]]));
             v
         }
+        Cu20 => {
+            let mut v = f(Qua8, &[&[0, 7, 6, 5, 4, 3, 2, 1], &[12, 13, 14, 15, 16, 17, 18, 19]]);
+            v.extend((0..4).map(|k| (Qua8, side(k, 4))));
+            v
+        }
+        Pr15 => {
+            let mut v = f(Tri6, &[&[0, 5, 4, 3, 2, 1], &[9, 10, 11, 12, 13, 14]]);
+            v.extend((0..3).map(|k| (Qua8, side(k, 3))));
+            v
+        }
         // A joint has no boundary of its own: it lies between two.
         Rac2 | Rac3 | Lia3 | Lia4 => vec![],
     }
+}
+
+/// Side face k (between base corners k and k + 1) of a quadratic volume
+/// whose base has `nc` corners: a QUA8 turning outward.
+fn side(k: usize, nc: usize) -> Vec<usize> {
+    let k1 = (k + 1) % nc;
+    let top = 2 * nc + nc;
+    vec![2 * k, 2 * k + 1, 2 * k1, 2 * nc + k1, top + 2 * k1, top + 2 * k + 1, top + 2 * k, 2 * nc + k]
 }
 
 #[cfg(test)]

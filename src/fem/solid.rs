@@ -12,6 +12,7 @@
 //!   that is never spuriously singular and exact on rectangles, as Cast3M
 //!   does for QUA8.
 //! * CUB8: 2×2×2; PRI6: 3-point triangle × 2 Gauss points along ζ.
+//! * CU20: 3×3×3 (full, as QUA8); PR15: 7-point triangle × 3 along ζ.
 //!
 //! Mass uses richer rules so that the consistent mass is exact for
 //! undistorted shapes (its integrand is of higher degree than B'DB).
@@ -41,6 +42,8 @@ pub fn rule(f: Formulation, ty: ElemType) -> Vec<QPoint> {
         (_, ElemType::Cub8) => hexa(2),
         (_, ElemType::Tet4) => tet(1),
         (_, ElemType::Pri6) => prism(3, 2),
+        (_, ElemType::Cu20) => hexa(3),
+        (_, ElemType::Pr15) => prism(7, 3),
         _ => vec![],
     }
 }
@@ -53,6 +56,8 @@ fn mass_rule(ty: ElemType) -> Vec<QPoint> {
         ElemType::Cub8 => hexa(3),
         ElemType::Tet4 => tet(4),
         ElemType::Pri6 => prism(7, 3),
+        ElemType::Cu20 => hexa(3),
+        ElemType::Pr15 => prism(7, 3),
         _ => vec![],
     }
 }
@@ -108,6 +113,8 @@ fn check(ty: ElemType, mode: Mode, x: &[[f64; 3]]) -> Result<usize, FemError> {
                 | ElemType::Cub8
                 | ElemType::Tet4
                 | ElemType::Pri6
+                | ElemType::Cu20
+                | ElemType::Pr15
         )
     {
         return Err(FemError::Unsupported { form: "massive", elem: ty.name(), mode: mode.name() });

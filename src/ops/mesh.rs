@@ -152,6 +152,8 @@ fn dall(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     };
     let ty = match ElemType::from_name(&it.opts.elem) {
         Some(t @ (ElemType::Qua4 | ElemType::Tri3 | ElemType::Qua8 | ElemType::Tri6)) => t,
+        Some(ElemType::Cu20) => ElemType::Qua8,
+        Some(ElemType::Pr15) => ElemType::Tri6,
         _ => ElemType::Qua4,
     };
     let first = it.nodes.len();
@@ -210,7 +212,8 @@ fn volu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 Some(s) => s,
                 None => a.req::<Rc<Mesh>>()?,
             };
-            Ok(mesh_val(mg::tran(&mut it.nodes, &s, &sp, v)?))
+            let m = mg::tran(&mut it.nodes, &from_face(&s, 2)?, &sp, v)?;
+            Ok(mesh_val(grown(&s, m, None)))
         }
         Some(_) => {
             more_spacing(a, &mut sp)?;
@@ -222,7 +225,8 @@ fn volu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 Some(s) => s,
                 None => a.req::<Rc<Mesh>>()?,
             };
-            Ok(mesh_val(mg::rota(&mut it.nodes, &s, &sp, angle, c, axis)?))
+            let m = mg::rota(&mut it.nodes, &from_face(&s, 2)?, &sp, angle, c, axis)?;
+            Ok(mesh_val(grown(&s, m, None)))
         }
         None => {
             let s1 = match s1 {
@@ -231,8 +235,34 @@ fn volu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             };
             let s2 = a.req::<Rc<Mesh>>()?;
             more_spacing(a, &mut sp)?;
-            Ok(mesh_val(mg::volu(&mut it.nodes, &s1, &s2, &sp)?))
+            let m = mg::volu(&mut it.nodes, &from_face(&s1, 2)?, &from_face(&s2, 1)?, &sp)?;
+            Ok(mesh_val(grown(&s1, m, Some(&s2))))
         }
+    }
+}
+
+fn is_volume(m: &Mesh) -> bool {
+    m.n_elements() > 0 && m.parts.iter().filter(|p| !p.is_empty()).all(|p| p.ty.dim() == 3)
+}
+
+/// What VOLU sweeps from: a surface as given, or face `n` of a volume
+/// (volu.notice: a volume grows from its face 2, towards the face 1 of a
+/// second volume).
+fn from_face(m: &Mesh, n: i64) -> std::result::Result<Mesh, mg::MeshError> {
+    if is_volume(m) {
+        mg::face(m, n)
+    } else {
+        Ok(m.clone())
+    }
+}
+
+/// The swept elements, after the first volume and before the second
+/// when they were volumes.
+fn grown(s1: &Mesh, m: Mesh, s2: Option<&Mesh>) -> Mesh {
+    let m = if is_volume(s1) { s1.union(&m) } else { m };
+    match s2 {
+        Some(s2) if is_volume(s2) => m.union(s2),
+        _ => m,
     }
 }
 

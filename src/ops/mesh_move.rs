@@ -70,8 +70,10 @@ fn depl(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             let p1 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
             let p2 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
             Motion::Map(if dim >= 3 {
-                let p3 = vector(it, a).ok_or_else(|| a.missing("POINT"))?;
-                PointMap::affinity_3d(ratio, p1, p2, p3)?
+                match vector(it, a) {
+                    Some(p3) => PointMap::affinity_3d(ratio, p1, p2, p3)?,
+                    None => PointMap::affinity_along(ratio, p1, p2)?,
+                }
             } else {
                 PointMap::affinity_2d(ratio, p1, p2)?
             })

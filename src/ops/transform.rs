@@ -84,8 +84,10 @@ fn affi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let p1 = point(it, a, "the first point of the base")?;
     let p2 = point(it, a, "the second point of the base")?;
     let map = if it.opts.dime >= 3 {
-        let p3 = point(it, a, "the third point of the base plane")?;
-        PointMap::affinity_3d(ratio, p1, p2, p3)?
+        match vector(it, a) {
+            Some(p3) => PointMap::affinity_3d(ratio, p1, p2, p3)?,
+            None => PointMap::affinity_along(ratio, p1, p2)?,
+        }
     } else {
         PointMap::affinity_2d(ratio, p1, p2)?
     };
@@ -100,7 +102,8 @@ fn proj(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 
 /// PROJ's arguments after the object (DEPL 'PROJ' reads the same).
 pub(crate) fn read_proj(it: &Interp, a: &mut Args) -> Result<PointMap> {
-    let how = a.req_keyword(&["CYLI", "CONI"])?;
+    // proj.notice: 'CYLI' (along a vector) is the default.
+    let how = a.keyword(&["CYLI", "CONI"]).unwrap_or("CYLI");
     let v = point(it, a, if how == "CYLI" { "the direction" } else { "the apex" })?;
     let target = match a.req_keyword(&["PLAN", "DROI", "SPHE", "CYLI", "CONI", "TORI"])? {
         "PLAN" => {

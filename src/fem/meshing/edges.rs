@@ -79,6 +79,8 @@ fn corners(ty: ElemType, e: &[usize]) -> Vec<usize> {
     match ty {
         ElemType::Tri6 => vec![e[0], e[2], e[4]],
         ElemType::Qua8 => vec![e[0], e[2], e[4], e[6]],
+        ElemType::Cu20 => [0, 2, 4, 6, 12, 14, 16, 18].iter().map(|&k| e[k]).collect(),
+        ElemType::Pr15 => [0, 2, 4, 9, 11, 13].iter().map(|&k| e[k]).collect(),
         _ => e.to_vec(),
     }
 }

@@ -208,6 +208,7 @@ pub fn inve(mesh: &Mesh) -> Result<Mesh, MeshError> {
             ElemType::Qua4 => &[0, 3, 2, 1],
             ElemType::Tri6 => &[0, 5, 4, 3, 2, 1],
             ElemType::Qua8 => &[0, 7, 6, 5, 4, 3, 2, 1],
+            t if t.dim() == 3 && t.joint_face().is_none() => super::symmetry::turn_over(t),
             other => return fail("INVE", format!("cannot reverse {} elements", other.name())),
         };
         let mut elems: Vec<Vec<usize>> = p.elems().map(|e| perm.iter().map(|&k| e[k]).collect()).collect();

@@ -227,8 +227,10 @@ pub fn face(mesh: &Mesh, n: i64) -> Result<Mesh, MeshError> {
         return fail(OP, format!("the face number must be 1, 2 or 3 (got {n})"));
     }
     let parts: Vec<&Part> = mesh.parts.iter().filter(|p| !p.is_empty()).collect();
-    if parts.is_empty() || parts.iter().any(|p| !matches!(p.ty, ElemType::Cub8 | ElemType::Pri6)) {
-        return fail(OP, "needs a volume of CUB8 or PRI6 elements, as VOLU, TRAN or ROTA make");
+    if parts.is_empty()
+        || parts.iter().any(|p| !matches!(p.ty, ElemType::Cub8 | ElemType::Pri6 | ElemType::Cu20 | ElemType::Pr15))
+    {
+        return fail(OP, "needs a volume of CUB8, PRI6, CU20 or PR15 elements, as VOLU, TRAN or ROTA make");
     }
     let sorted = |mut k: Vec<usize>| {
         k.sort_unstable();
@@ -239,6 +241,8 @@ pub fn face(mesh: &Mesh, n: i64) -> Result<Mesh, MeshError> {
     for p in &parts {
         let (bottom, top, face_ty): (&[usize], &[usize], _) = match p.ty {
             ElemType::Cub8 => (&[0, 1, 2, 3], &[4, 5, 6, 7], ElemType::Qua4),
+            ElemType::Cu20 => (&[0, 1, 2, 3, 4, 5, 6, 7], &[12, 13, 14, 15, 16, 17, 18, 19], ElemType::Qua8),
+            ElemType::Pr15 => (&[0, 1, 2, 3, 4, 5], &[9, 10, 11, 12, 13, 14], ElemType::Tri6),
             _ => (&[0, 1, 2], &[3, 4, 5], ElemType::Tri3),
         };
         let count = p.len();

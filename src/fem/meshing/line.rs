@@ -18,7 +18,7 @@ use crate::fem::mesh::{ElemType, Mesh, Nodes, Part};
 /// which is how Cast3M's line generators read `OPTI ELEM`.
 pub fn line_type(ty: ElemType) -> ElemType {
     match ty {
-        ElemType::Seg3 | ElemType::Tri6 | ElemType::Qua8 => ElemType::Seg3,
+        ElemType::Seg3 | ElemType::Tri6 | ElemType::Qua8 | ElemType::Cu20 | ElemType::Pr15 => ElemType::Seg3,
         _ => ElemType::Seg2,
     }
 }

@@ -27,7 +27,7 @@ pub fn surface_type(elem: &str) -> ElemType {
     match elem {
         "QUA4" | "CUB8" => ElemType::Qua4,
         "QUA8" | "CU20" => ElemType::Qua8,
-        "TRI6" | "SEG3" | "TE10" => ElemType::Tri6,
+        "TRI6" | "SEG3" | "TE10" | "PR15" => ElemType::Tri6,
         _ => ElemType::Tri3,
     }
 }

@@ -1,6 +1,6 @@
 //! Sweeps: TRAN (translation), ROTA (rotation) and VOLU (between two
 //! surfaces). A sweep turns points into SEG2, SEG2 into QUA4, SEG3 into
-//! QUA8, TRI3 into PRI6 and QUA4 into CUB8.
+//! QUA8, TRI3 into PRI6, QUA4 into CUB8, TRI6 into PR15 and QUA8 into CU20.
 //!
 //! Common conventions of the three operators:
 //!
@@ -107,7 +107,18 @@ pub fn between(
 ) -> Result<Mesh, MeshError> {
     check_nodes(op, nodes, s1)?;
     check_nodes(op, nodes, s2)?;
-    let types = |m: &Mesh| m.parts.iter().filter(|p| !p.is_empty()).map(|p| (p.ty, p.len())).collect::<Vec<_>>();
+    // Element types in order, consecutive parts of one type (colours)
+    // counted together: elements face each other one by one.
+    let types = |m: &Mesh| {
+        let mut v: Vec<(ElemType, usize)> = Vec::new();
+        for p in m.parts.iter().filter(|p| !p.is_empty()) {
+            match v.last_mut() {
+                Some((t, n)) if *t == p.ty => *n += p.len(),
+                _ => v.push((p.ty, p.len())),
+            }
+        }
+        v
+    };
     if types(s1) != types(s2) {
         let show = |m: &Mesh| types(m).iter().map(|(t, n)| format!("{n} {}", t.name())).collect::<Vec<_>>().join(" + ");
         return fail(
@@ -119,14 +130,28 @@ pub fn between(
             ),
         );
     }
-    let mut map: HashMap<usize, usize> = HashMap::new();
-    let c1 = s1.parts.iter().flat_map(|p| p.conn.iter().copied());
-    let c2 = s2.parts.iter().flat_map(|p| p.conn.iter().copied());
-    for (a, b) in c1.zip(c2) {
-        if *map.entry(a).or_insert(b) != b {
-            return fail(op, format!("node {} of the first mesh faces two different nodes of the second", a + 1));
+    // Node k of element e of s1 faces node k of element e of s2; failing
+    // that, every element of s1 turned over (the face 2 of a volume whose
+    // sweep listed its base reversed, see `sweep_to`).
+    let pairing = |turned: bool| -> Result<HashMap<usize, usize>, usize> {
+        let mut map: HashMap<usize, usize> = HashMap::new();
+        let e1 = s1.parts.iter().flat_map(|p| p.elems().map(move |e| (p.ty, e)));
+        let e2 = s2.parts.iter().flat_map(|p| p.elems());
+        for ((ty, a), b) in e1.zip(e2) {
+            let perm = super::symmetry::turn_over(ty);
+            for k in 0..a.len() {
+                let ak = if turned { a[perm[k]] } else { a[k] };
+                if *map.entry(ak).or_insert(b[k]) != b[k] {
+                    return Err(ak);
+                }
+            }
         }
-    }
+        Ok(map)
+    };
+    let map = match pairing(false).or_else(|_| pairing(true)) {
+        Ok(m) => m,
+        Err(a) => return fail(op, format!("node {} of the first mesh faces two different nodes of the second", a + 1)),
+    };
     let targets: Vec<(usize, V3, f64)> = map.iter().map(|(&a, &b)| (a, nodes.get(b), nodes.density[b])).collect();
     let gap = targets.iter().map(|(a, x, _)| dist(nodes.get(*a), *x)).sum::<f64>() / targets.len().max(1) as f64;
     let t = fractions(op, spacing, gap, mean_density(nodes, s1), mean_density(nodes, s2))?;
@@ -173,6 +198,11 @@ fn sweep_to(
         match p.ty {
             ElemType::Poi1 | ElemType::Seg2 | ElemType::Tri3 | ElemType::Qua4 => {}
             ElemType::Seg3 => halves_needed.extend(p.elems().flat_map(|e| [e[0], e[2]])),
+            // Quadratic volumes have mid-height nodes above the corners only.
+            ElemType::Tri6 | ElemType::Qua8 => {
+                let nc = p.ty.nodes() / 2;
+                halves_needed.extend(p.elems().flat_map(|e| (0..nc).map(move |k| e[2 * k])))
+            }
             other => return fail(op, format!("cannot sweep {} elements (no matching element type)", other.name())),
         }
     }
@@ -219,6 +249,8 @@ fn sweep_to(
             ElemType::Seg2 => ElemType::Qua4,
             ElemType::Seg3 => ElemType::Qua8,
             ElemType::Tri3 => ElemType::Pri6,
+            ElemType::Tri6 => ElemType::Pr15,
+            ElemType::Qua8 => ElemType::Cu20,
             _ => ElemType::Cub8,
         };
         let pos = match out.iter().position(|(t, _)| *t == ty) {
@@ -239,6 +271,23 @@ fn sweep_to(
                     ElemType::Seg3 => {
                         let h = |a: usize| halves[l][index[&a]];
                         conn.extend([lo[0], lo[1], lo[2], h(e[2]), hi[2], hi[1], hi[0], h(e[0])]);
+                    }
+                    ElemType::Tri6 | ElemType::Qua8 => {
+                        // The base face around its contour, the mid-height
+                        // nodes above its corners, the top face.
+                        let nc = e.len() / 2;
+                        let cl: Vec<usize> = (0..nc).map(|k| lo[2 * k]).collect();
+                        let ch: Vec<usize> = (0..nc).map(|k| hi[2 * k]).collect();
+                        let perm: &[usize] = if positive_order(nodes, &cl, &ch)[1] == 1 {
+                            &[0, 1, 2, 3, 4, 5, 6, 7][..e.len()]
+                        } else if nc == 3 {
+                            &[0, 5, 4, 3, 2, 1]
+                        } else {
+                            &[0, 7, 6, 5, 4, 3, 2, 1]
+                        };
+                        conn.extend(perm.iter().map(|&i| lo[i]));
+                        conn.extend(perm.iter().step_by(2).map(|&i| halves[l][index[&e[i]]]));
+                        conn.extend(perm.iter().map(|&i| hi[i]));
                     }
                     _ => {
                         let order = positive_order(nodes, &lo, &hi);

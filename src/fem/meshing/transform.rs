@@ -65,6 +65,16 @@ impl PointMap {
         Ok(PointMap::Affinity { ratio, origin: a, normal: t.normal })
     }
 
+    /// `AFFI ratio P1 P2` in 3D (affi.notice): distances along the
+    /// direction P1 → P2, from the plane through P1 across it, scaled.
+    pub fn affinity_along(ratio: f64, a: V3, b: V3) -> Result<PointMap, MeshError> {
+        let d = sub(b, a);
+        if norm(d) == 0.0 {
+            return fail("AFFI", "the two points giving the direction coincide");
+        }
+        Ok(PointMap::Affinity { ratio, origin: a, normal: scale(d, 1.0 / norm(d)) })
+    }
+
     /// `AFFI` in 3D: base plane P1 P2 P3.
     pub fn affinity_3d(ratio: f64, a: V3, b: V3, c: V3) -> Result<PointMap, MeshError> {
         let t = Target::plane("AFFI", a, b, c)?;

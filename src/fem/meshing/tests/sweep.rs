@@ -144,9 +144,12 @@ fn cote_of_a_qua8_tran_surface_and_sweep_errors() {
     let c3 = cote(&s, 3).unwrap();
     assert_eq!(c3.parts[0].ty, ElemType::Seg3);
     assert!(close(n.get(poin_init(&c3).unwrap())[0], 1.0));
-    // Quadratic surfaces have no quadratic volume to sweep into.
-    let e = tran(&mut n, &s, &Spacing::count(1), [0.0, 0.0, 1.0]).unwrap_err();
-    assert_eq!(e.to_string(), "TRAN: cannot sweep QUA8 elements (no matching element type)");
+    // Quadratic surfaces sweep into quadratic volumes: the base, the
+    // mid-height nodes above its corners, the top.
+    let v = tran(&mut n, &s, &Spacing::count(1), [0.0, 0.0, 1.0]).unwrap();
+    assert_eq!(v.parts[0].ty, ElemType::Cu20);
+    let e0 = v.parts[0].elem(0);
+    assert!(close(n.get(e0[8])[2], 0.5) && close(n.get(e0[12])[2], 1.0));
     let e = rota(&mut n, &l, &Spacing::count(1), 400.0, [0.0; 3], None).unwrap_err();
     assert!(e.to_string().starts_with("ROTA: the angle"));
     let other = droi(&mut n, a, b, &Spacing::count(3), ElemType::Seg2).unwrap();
