@@ -18,7 +18,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "ENVE", signature: "ENVE VOLUME", doc: "The envelope of a volume mesh: the faces that belong to one element only (TRI3/QUA4), oriented outwards as in their elements.", example: "peau = enve v ;", f: enve },
     OpDef { name: "CONT", signature: "CONT ('NOID') ('EXTE'|'INTE'|'TOUT') GEO", doc: "Contour: boundary edges of a surface, end points of a line.", example: "c = cont s ;", f: cont },
     OpDef { name: "ELIM", signature: "ELIM (crit) GEO (GEO2 …)", doc: "Merge nodes closer than crit, in every object (several meshes: their nodes with each other's).", example: "elim 1.e-5 l ;", f: elim },
-    OpDef { name: "INTE", signature: "GEO1 INTE GEO2 ('NOVERIF')", doc: "Elements common to two meshes.", example: "c = s1 inte s2 ;", f: inte },
+    OpDef { name: "INTE", signature: "GEO1 INTE GEO2 ('NOVERIF')", doc: "Elements common to two meshes (an empty mesh when there are none).", example: "c = s1 inte s2 ;", f: inte },
     OpDef { name: "DIFF", signature: "DIFF GEO1 GEO2", doc: "Symmetric difference of two meshes.", example: "d = diff s1 s2 ;", f: diff },
     OpDef { name: "PLUS", signature: "OBJ PLUS VECTOR | GEO PLUS CHPOINT", doc: "A translated copy (geometric, not arithmetic), or the mesh moved by a displacement field.", example: "l2 = l plus (0. 1.) ;", f: plus },
     OpDef { name: "MOIN", signature: "OBJ MOIN VECTOR", doc: "A copy translated by minus the vector.", example: "l2 = l moin (0. 1.) ;", f: moin },
@@ -158,14 +158,11 @@ fn renumber(v: &mut Value, map: &mg::NodeMap, seen: &mut std::collections::HashS
 fn inte(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let x = req_geo(a)?;
     let y = req_geo(a)?;
-    // An empty intersection is an error unless 'NOVERIF' asks for an
-    // empty mesh (inte.notice).
-    let noverif = a.keyword(&["NOVERIF"]).is_some();
-    let m = mg::inte(&x, &y);
-    if m.n_elements() == 0 && !noverif {
-        return Err(a.err("the intersection is empty (add 'NOVERIF' to get an empty mesh)"));
-    }
-    Ok(mesh_val(m))
+    // No common element gives an empty mesh: Cast3M's procedures
+    // (G_THETA) intersect and then test the element count. 'NOVERIF'
+    // (a check of the geometric form) is read and changes nothing here.
+    a.keyword(&["NOVERIF"]);
+    Ok(mesh_val(mg::inte(&x, &y)))
 }
 
 fn diff(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
