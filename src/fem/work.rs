@@ -113,3 +113,68 @@ mod tests {
         assert!(err.to_string().contains("UR,Z"), "{err}");
     }
 }
+
+/// The gradient names of `comps` (UX,X … or UR,R … in AXIS) as a mode, or
+/// None when `comps` is not a gradient field.
+pub fn gradient_mode(comps: &[String]) -> Option<Mode> {
+    if comps.iter().any(|c| c == "UR,R") {
+        Some(Mode::Axis)
+    } else if comps.iter().any(|c| c == "UX,X") {
+        Some(Mode::Trid)
+    } else {
+        None
+    }
+}
+
+/// The matrix product A·B of two gradient tensors at each point,
+/// (A·B)_ij = Σ_k A_ik B_kj, written under the nine names of GRAD.
+pub fn gradient_product(
+    mode: Mode,
+    elem: &'static str,
+    a_comps: &[String],
+    a: &[Vec<f64>],
+    b_comps: &[String],
+    b: &[Vec<f64>],
+) -> Result<(Vec<&'static str>, Vec<Vec<f64>>), FemError> {
+    if a.len() != b.len() {
+        return Err(FemError::WrongPointCount { elem, expected: a.len(), got: b.len() });
+    }
+    let cols = |comps: &[String]| -> Result<Vec<usize>, FemError> {
+        (0..9)
+            .map(|k| {
+                let n = gradient_name(mode, k / 3, k % 3);
+                comps.iter().position(|c| c == n).ok_or(FemError::MissingComponent { comp: n, elem })
+            })
+            .collect()
+    };
+    let (ca, cb) = (cols(a_comps)?, cols(b_comps)?);
+    let names = (0..9).map(|k| gradient_name(mode, k / 3, k % 3)).collect();
+    let values = a
+        .iter()
+        .zip(b)
+        .map(|(pa, pb)| {
+            let at = |i: usize, j: usize| pa.get(ca[3 * i + j]).copied().unwrap_or(0.0);
+            let bt = |i: usize, j: usize| pb.get(cb[3 * i + j]).copied().unwrap_or(0.0);
+            (0..9).map(|k| (0..3).map(|m| at(k / 3, m) * bt(m, k % 3)).sum()).collect()
+        })
+        .collect();
+    Ok((names, values))
+}
+
+#[cfg(test)]
+mod product_tests {
+    use super::*;
+
+    #[test]
+    fn product_is_the_matrix_product() {
+        let gc: Vec<String> = gradient_name_list(Mode::Trid);
+        let a = vec![vec![1.0, 2.0, 0.0, 3.0, 4.0, 0.0, 0.0, 0.0, 1.0]];
+        let b = vec![vec![0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 2.0]];
+        let (_, p) = gradient_product(Mode::Trid, "QUA4", &gc, &a, &gc, &b).unwrap();
+        assert_eq!(p, vec![vec![2.0, 1.0, 0.0, 4.0, 3.0, 0.0, 0.0, 0.0, 2.0]]);
+    }
+
+    fn gradient_name_list(mode: Mode) -> Vec<String> {
+        (0..9).map(|k| gradient_name(mode, k / 3, k % 3).to_string()).collect()
+    }
+}

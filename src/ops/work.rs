@@ -102,3 +102,38 @@ fn work(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     }
     Ok(vec![Value::Mchaml(Rc::new(out))])
 }
+
+/// `G1 * MODL G2` of two gradient fields (aaa2.notice, remark 5): the
+/// matrix product point by point, as the G-theta procedures chain
+/// ∇u·∇θ. None when the fields are not both gradient fields, for the
+/// component-wise product to apply.
+pub(crate) fn gradient_product(a: &Args, x: &Value, y: &Value) -> Result<Option<Value>> {
+    let (Value::Mchaml(x), Value::Mchaml(y)) = (x, y) else { return Ok(None) };
+    let mode_of = |f: &Mchaml| f.zones.first().and_then(|z| crate::fem::work::gradient_mode(&z.comps));
+    let Some(mode) = mode_of(x) else { return Ok(None) };
+    if mode_of(y).is_none() {
+        return Ok(None);
+    }
+    let mut out = Mchaml { subtype: x.subtype.clone(), zones: vec![] };
+    for z in &x.zones {
+        let w = y
+            .zones
+            .iter()
+            .find(|w| w.mesh == z.mesh && w.values.len() == z.values.len())
+            .ok_or_else(|| a.err("the two gradient fields are not on the same zones and elements"))?;
+        let mut nz =
+            MchamlZone { mesh: z.mesh.clone(), element: z.element.clone(), at_nodes: z.at_nodes, ..Default::default() };
+        let types = z.mesh.parts.iter().flat_map(|p| p.elems().map(move |_| p.ty));
+        for (e, ty) in types.enumerate().take(z.values.len()) {
+            let (names, v) =
+                crate::fem::work::gradient_product(mode, ty.name(), &z.comps, &z.values[e], &w.comps, &w.values[e])
+                    .map_err(|err| a.err(format!("element {}: {}", e + 1, err)))?;
+            if nz.comps.is_empty() {
+                nz.comps = names.iter().map(|n| n.to_string()).collect();
+            }
+            nz.values.push(v);
+        }
+        out.zones.push(nz);
+    }
+    Ok(Some(Value::Mchaml(Rc::new(out))))
+}
