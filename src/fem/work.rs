@@ -110,7 +110,7 @@ mod tests {
         let sc = names(&["SMRR", "SMZZ", "SMTT", "SMRZ"]);
         let gc = names(&["UR,R"]);
         let err = stress_gradient_trace(Mode::Axis, "QUA4", &sc, &[vec![0.0; 4]], &gc, &[vec![0.0]]).unwrap_err();
-        assert!(err.to_string().contains("UR,Z"), "{err}");
+        assert!(err.to_string().contains("UZ,R"), "{err}");
     }
 }
 
