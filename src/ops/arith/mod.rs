@@ -126,14 +126,10 @@ fn binary(it: &mut Interp, a: &mut Args, op: Bin) -> Result<Vec<Value>> {
         y = a.right_any().ok_or_else(|| a.missing("the MCHAML after the model"))?;
         with_model = true;
     }
-    // `MODL1 G1 * G2`: the model may also stand before the first field.
-    if op == Bin::Mul && !with_model {
-        if let Some(m) = a.left_top::<std::rc::Rc<crate::value::Model>>() {
-            if let Some(r) = crate::ops::work::gradient_product(a, &x, &y)? {
-                return Ok(vec![r]);
-            }
-            a.unread(Value::Model(m));
-        }
+    // `(MODL1) MCHAML * MCHAML` (aaa2.notice): the model may also stand
+    // before the first field.
+    if op == Bin::Mul && !with_model && matches!((&x, &y), (Value::Mchaml(_), Value::Mchaml(_))) {
+        with_model = a.left_top::<std::rc::Rc<crate::value::Model>>().is_some();
     }
     if with_model {
         if let Some(r) = crate::ops::work::gradient_product(a, &x, &y)? {
