@@ -31,6 +31,7 @@ pub mod skin;
 pub mod solid;
 pub mod stress;
 pub mod vec3;
+pub mod work;
 
 #[cfg(test)]
 mod test_support;

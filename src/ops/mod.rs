@@ -83,6 +83,7 @@ mod transform;
 mod union;
 mod variable;
 mod variable_fields;
+mod work;
 mod zero;
 
 // The machine and the argument reader live in `eval`; the families name
@@ -156,6 +157,7 @@ impl Registry {
             pasapas::OPS,
             prim::OPS,
             chpo_rigi::OPS,
+            work::OPS,
         ] {
             for d in table {
                 r.insert(OpSpec::from(d));

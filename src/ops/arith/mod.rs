@@ -121,8 +121,20 @@ fn binary(it: &mut Interp, a: &mut Args, op: Bin) -> Result<Vec<Value>> {
     // `OBJ1 * MODL1 OBJ2` (aaa2.notice): the model names the support of
     // two element fields; the product itself is the same, so the model
     // is read and set aside.
+    let mut with_model = false;
     if op == Bin::Mul && matches!(x, Value::Mchaml(_)) && matches!(y, Value::Model(_)) {
         y = a.right_any().ok_or_else(|| a.missing("the MCHAML after the model"))?;
+        with_model = true;
+    }
+    // `(MODL1) MCHAML * MCHAML` (aaa2.notice): the model may also stand
+    // before the first field.
+    if op == Bin::Mul && !with_model && matches!((&x, &y), (Value::Mchaml(_), Value::Mchaml(_))) {
+        with_model = a.left_top::<std::rc::Rc<crate::value::Model>>().is_some();
+    }
+    if with_model {
+        if let Some(r) = crate::ops::work::gradient_product(a, &x, &y)? {
+            return Ok(vec![r]);
+        }
     }
     if let Some(e) = arith::divides_by_zero(op, &x, &y) {
         return Err(a.err(e));
