@@ -98,11 +98,11 @@ const STRAIN_NAMES: &[&str] = &[
     "RTSS", "RTTT", "RTST",
 ];
 
-fn holds(f: &Mchaml, names: &[&str]) -> bool {
+pub(crate) fn holds(f: &Mchaml, names: &[&str]) -> bool {
     f.zones.iter().any(|z| z.comps.iter().any(|c| names.contains(&c.as_str())))
 }
 
-fn comps_of(f: &Mchaml) -> String {
+pub(crate) fn comps_of(f: &Mchaml) -> String {
     let mut v: Vec<&str> = Vec::new();
     for c in f.zones.iter().flat_map(|z| z.comps.iter()) {
         if !v.contains(&c.as_str()) {

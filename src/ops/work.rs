@@ -25,22 +25,11 @@ pub(crate) const OPS: &[OpDef] = &[OpDef {
 const STRESS_FIRST: &[&str] = &["SMXX", "SMRR"];
 
 fn is_stress(f: &Mchaml) -> bool {
-    f.zones.iter().any(|z| z.comps.iter().any(|c| STRESS_FIRST.contains(&c.as_str())))
+    super::thermo::holds(f, STRESS_FIRST)
 }
 
-fn comps_of(f: &Mchaml) -> String {
-    let mut v: Vec<&str> = Vec::new();
-    for c in f.zones.iter().flat_map(|z| z.comps.iter()) {
-        if !v.contains(&c.as_str()) {
-            v.push(c);
-        }
-    }
-    if v.is_empty() {
-        "no point values".into()
-    } else {
-        v.join(" ")
-    }
-}
+// One wording of "these are the components" for every field operator.
+use super::thermo::comps_of;
 
 fn work(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let model = a.req::<Rc<Model>>()?;
