@@ -68,6 +68,11 @@ impl TimeFunction {
         &self.x
     }
 
+    /// The values at [`times`](Self::times).
+    pub fn values(&self) -> &[f64] {
+        &self.y
+    }
+
     /// The value at `t`, linear between points. At a repeated abscissa (a
     /// jump) the last value given there wins.
     pub fn at(&self, t: f64) -> Result<f64, TimeError> {

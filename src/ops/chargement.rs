@@ -139,7 +139,7 @@ pub(crate) fn at(it: &mut Interp, a: &Args, ch: &Chargement, name: Option<&str>,
     weighted_sum(it, a, &terms)
 }
 
-fn keyword4(s: &str) -> String {
+pub(super) fn keyword4(s: &str) -> String {
     s.trim().to_uppercase().chars().take(4).collect()
 }
 

@@ -23,7 +23,7 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "ENLE",
-        signature: "ENLE CHPOINT COMP|LISTMOTS | ENLE LISTREEL|LISTENTI|LISTMOTS I|LISTENTI | ENLE TABLE KEY",
+        signature: "ENLE CHPOINT COMP|LISTMOTS | ENLE LISTREEL|LISTENTI|LISTMOTS|LISTCHPO I|LISTENTI | ENLE TABLE KEY",
         doc:
             "Remove components of a field, the items of a list at the given places, or a key (in a copy of the table).",
         example: "u2 = enle u 'LX' ;",
@@ -56,6 +56,9 @@ fn extr(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     if let Some(m) = a.opt::<Rc<Model>>() {
         return fields::extr_model(a, &m);
     }
+    if let Some(c) = a.opt_with(|v| if let Value::Charge(c) = v { Some(c.clone()) } else { None }) {
+        return super::chargement_extr::extr(a, &c);
+    }
     if let Some(AnyList(l)) = a.opt::<AnyList>() {
         return lists::extr_list(a, l);
     }
@@ -76,6 +79,10 @@ fn extr(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 fn enle(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     if let Some(ch) = a.find::<Rc<Chpoint>>() {
         return fields::enle_components(a, &ch);
+    }
+    // Before the other lists: the places are a LISTENTI too.
+    if let Some(l) = a.opt::<Rc<Vec<Rc<Chpoint>>>>() {
+        return lists::enle(a, Value::ListChpo(l));
     }
     if let Some(AnyList(l)) = a.opt::<AnyList>() {
         return lists::enle(a, l);

@@ -226,8 +226,10 @@ fn exco(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 fn nomc(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let ch = a.req_find::<Rc<Chpoint>>()?;
     let first = comp_list(a).ok_or_else(|| a.missing("new component names"))?;
+    // A second list is read before 'NATU' (which may come after it).
+    let second = a.opt::<Rc<Vec<String>>>().map(|l| l.to_vec());
     let mut nature = nature_word(a)?;
-    let (old, new) = match comp_list(a).filter(|_| nature.is_none()) {
+    let (old, new) = match second.or_else(|| comp_list(a).filter(|_| nature.is_none())) {
         Some(second) => (first, second),
         None => (ch.components(), first),
     };
@@ -237,6 +239,8 @@ fn nomc(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     if old.len() != new.len() {
         return Err(a.err(format!("{} component(s) to rename with {} name(s)", old.len(), new.len())));
     }
+    // Names of the first list that the field lacks rename nothing (a
+    // procedure renames whichever of a set of components a field has).
     let mut out = Chpoint::new(nature.unwrap_or(ch.nature));
     for (n, c, v) in ch.entries() {
         let name = old.iter().position(|x| x == c).map_or(c, |i| new[i].as_str());

@@ -388,7 +388,10 @@ fn sublist<T: Clone>(a: &Args, l: &[T], idx: &[i64]) -> Result<Vec<T>> {
 
 /// `ENLE LIST I|LISTENTI`: the list without the items at those places.
 pub(crate) fn enle(a: &mut Args, l: Value) -> Result<Vec<Value>> {
-    let n = list_len(&l).unwrap_or(0);
+    let n = match &l {
+        Value::ListChpo(c) => c.len(),
+        l => list_len(l).unwrap_or(0),
+    };
     let places: Vec<i64> = match a.opt::<i64>() {
         Some(i) => vec![i],
         None => a.req::<Rc<Vec<i64>>>()?.to_vec(),
@@ -405,6 +408,7 @@ pub(crate) fn enle(a: &mut Args, l: Value) -> Result<Vec<Value>> {
         Value::ListReel(l) => Value::ListReel(Rc::new((0..n).filter(pick).map(|k| l[k]).collect())),
         Value::ListEnti(l) => Value::ListEnti(Rc::new((0..n).filter(pick).map(|k| l[k]).collect())),
         Value::ListMots(l) => Value::ListMots(Rc::new((0..n).filter(pick).map(|k| l[k].clone()).collect())),
+        Value::ListChpo(l) => Value::ListChpo(Rc::new((0..n).filter(pick).map(|k| l[k].clone()).collect())),
         other => other,
     }])
 }

@@ -13,6 +13,7 @@ mod chan_cham;
 mod chan_comp;
 mod chan_support;
 mod chargement;
+mod chargement_extr;
 mod chpo_rigi;
 mod colour;
 mod config;
@@ -83,6 +84,7 @@ mod transform;
 mod union;
 mod variable;
 mod variable_fields;
+mod vector_product;
 mod work;
 mod zero;
 

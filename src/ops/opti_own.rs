@@ -41,7 +41,7 @@ pub(super) fn set(it: &mut Interp, a: &mut Args, key: &'static str) -> Result<()
         }
         // As Cast3M does, a negative density counts by its size.
         "DENS" => it.opts.dens = a.req_num()?.abs(),
-        "ERRE" => it.opts.erre = word_of(a, key, &["FATAL", "NORMAL", "IGNORE", "CONTROLE"])?.into(),
+        "ERRE" => it.opts.erre = word_of(a, key, &["FATAL", "NORMAL", "IGNORE", "CONTROLE", "CONTINUER"])?.into(),
         "RESO" => it.opts.reso = word_of(a, key, &["DIRECTE", "ITERATIVE"])?.into(),
         "ERMA" => return Err(a.err("ERMA (the highest error level reached) is read with VALE, never set")),
         "FTRA" => {

@@ -30,10 +30,10 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "PVEC",
-        signature: "PVEC POINT POINT",
-        doc: "Vector product of two vectors (OPTI DIME 3), as a new point.",
+        signature: "PVEC POINT (POINT in 3D) | PVEC CHPOINT LISTMOTS (CHPOINT LISTMOTS in 3D) LISTMOTS",
+        doc: "Vector product of n-1 vectors in dimension n (in 2D the vector turned a quarter turn), of points or of node fields over listed components.",
         example: "n = pvec (1. 0. 0.) (0. 1. 0.) ;",
-        f: pvec,
+        f: super::vector_product::pvec,
     },
     OpDef {
         name: "NORM",
@@ -61,18 +61,6 @@ pub(crate) const OPS: &[OpDef] = &[
 fn norm(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let p = a.req::<PointId>()?;
     Ok(vec![Value::Float(it.nodes.get(p.0).iter().map(|x| x * x).sum::<f64>().sqrt())])
-}
-
-fn pvec(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let p = a.req::<PointId>()?;
-    let q = a.req::<PointId>()?;
-    if it.opts.dime < 3 {
-        return Err(a.err("the vector product of two points needs OPTI DIME 3"));
-    }
-    let (x, y) = (it.nodes.get(p.0), it.nodes.get(q.0));
-    let w = [x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]];
-    let d = it.opts.dens;
-    Ok(vec![Value::Point(it.nodes.push(w, d))])
 }
 
 fn dist(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {

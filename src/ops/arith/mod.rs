@@ -242,6 +242,16 @@ fn equal(it: &Interp, a: &mut Args) -> Result<bool> {
         (ListEnti(l), ListEnti(m)) => l == m,
         (ListReel(l), ListReel(m)) => l == m,
         (ListMots(l), ListMots(m)) => l == m,
+        // Other objects are equal when they are the same object (two names
+        // of it, or an item taken back from a list that holds it).
+        (Chpo(p), Chpo(q)) => std::rc::Rc::ptr_eq(p, q),
+        (Mesh(p), Mesh(q)) => std::rc::Rc::ptr_eq(p, q),
+        (Mchaml(p), Mchaml(q)) => std::rc::Rc::ptr_eq(p, q),
+        (Rigi(p), Rigi(q)) => std::rc::Rc::ptr_eq(p, q),
+        (Model(p), Model(q)) => std::rc::Rc::ptr_eq(p, q),
+        (Evol(p), Evol(q)) => std::rc::Rc::ptr_eq(p, q),
+        (Table(p), Table(q)) => std::rc::Rc::ptr_eq(p, q),
+        (ListChpo(p), ListChpo(q)) => std::rc::Rc::ptr_eq(p, q),
         _ => {
             return Err(a.err(format!("cannot compare {} with {}", x.type_name(), y.type_name())));
         }
