@@ -16,6 +16,7 @@ mod chargement;
 mod chpo_rigi;
 mod colour;
 mod config;
+mod coor_field;
 mod contact;
 mod curves;
 mod dofs;
