@@ -66,6 +66,7 @@ mod pasapas_model;
 mod poin_field;
 mod pointwise;
 mod post;
+mod pres_chel;
 mod pres_field;
 mod pres_model;
 mod pres_shell;
