@@ -66,7 +66,9 @@ pub(crate) fn coor_of_mchaml(it: &Interp, a: &Args, which: Option<i64>, m: &Mcha
     let ks: Vec<i64> = match which {
         None => (1..=dim).collect(),
         Some(k) if (1..=dim).contains(&k) => vec![k],
-        Some(k) => return Err(a.err(format!("coordinate {} of an element field does not exist in dimension {}", k, dim))),
+        Some(k) => {
+            return Err(a.err(format!("coordinate {} of an element field does not exist in dimension {}", k, dim)))
+        }
     };
     let mut per_zone = Vec::new();
     for z in &m.zones {

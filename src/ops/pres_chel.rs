@@ -7,10 +7,10 @@
 use super::Args;
 use crate::error::Result;
 use crate::fem::element::GaussField;
+use crate::fem::mesh::ElemType;
 use crate::fem::stress::to_nodes;
 use crate::value::model::MchamlZone;
 use crate::value::{Mchaml, Model, Value};
-use crate::fem::mesh::ElemType;
 use std::collections::HashMap;
 use std::rc::Rc;
 
