@@ -90,6 +90,9 @@ pub fn point_weights(
     match f {
         Formulation::Barr | Formulation::Pout | Formulation::Timo => line_weights(x),
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => {
+            if let Some(w) = surface_in_space(ty, mode, x, &solid::rule(f, ty), false)? {
+                return Ok(w);
+            }
             solid::point_weights(f, ty, mode, x, m)
         }
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => super::shell::point_weights(f, x),
@@ -110,12 +113,44 @@ pub fn node_weights(
     match f {
         Formulation::Barr | Formulation::Pout | Formulation::Timo => line_weights(x),
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => {
+            if let Some(w) = surface_in_space(ty, mode, x, &measure_rule(ty), true)? {
+                return Ok(w);
+            }
             solid::node_weights(ty, mode, x, m)
         }
         Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => super::shell::node_weights(f, x),
         Formulation::Coq2 => super::coq2::node_weights(mode, x),
         Formulation::Joint => Err(FemError::NotFor { what: "integrating a nodal field", form: f.name() }),
     }
+}
+
+/// A massive model on surface elements in 3D (a crack face) only
+/// measures: its weights are those of the area, without thickness. `None`
+/// when the element is not a surface in space.
+fn surface_in_space(
+    ty: ElemType,
+    mode: Mode,
+    x: &[[f64; 3]],
+    rule: &[QPoint],
+    at_nodes: bool,
+) -> Result<Option<Vec<f64>>, FemError> {
+    if mode != Mode::Trid || ty.dim() != 2 {
+        return Ok(None);
+    }
+    if x.len() != ty.nodes() {
+        return Err(FemError::WrongNodeCount { elem: ty.name(), expected: ty.nodes(), got: x.len() });
+    }
+    if !at_nodes {
+        return Ok(Some(rule.iter().map(|&(p, w)| w * jacobian(ty, x, p)).collect()));
+    }
+    let mut w = vec![0.0; ty.nodes()];
+    for &(p, wp) in rule {
+        let j = wp * jacobian(ty, x, p);
+        for (wi, ni) in w.iter_mut().zip(eval(ty, p).n) {
+            *wi += ni * j;
+        }
+    }
+    Ok(Some(w))
 }
 
 /// Bars and beams carry values at both ends: the trapezoidal rule along

@@ -55,6 +55,12 @@ fn depl(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     }
     let dim = it.opts.dime.max(2);
     let motion = match kind {
+        "PLUS" | "MOIN" if matches!(a.peek_right(), Some(Value::Chpo(_))) => {
+            let field: Rc<crate::value::Chpoint> = a.req()?;
+            let sign = if kind == "MOIN" { -1.0 } else { 1.0 };
+            translate_by_field(it, &objs, &field, sign);
+            return Ok(vec![]);
+        }
         "PLUS" | "MOIN" => {
             let v = vector(it, a).ok_or_else(|| a.missing("a vector (POINT)"))?;
             Motion::Translate(if kind == "MOIN" { v.map(|c| -c) } else { v })
@@ -95,6 +101,23 @@ fn depl(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let refs: Vec<&Mesh> = objs.iter().collect();
     move_in_place(&mut it.nodes, &refs, motion, dim)?;
     Ok(vec![])
+}
+
+/// `DEPL GEO 'PLUS' CHPO1` (depl.notice): each node moves by its own
+/// displacement, the field's translation components (UX UY UZ, UR UZ in
+/// AXIS); a node the field does not hold stays (a field is zero there).
+fn translate_by_field(it: &mut Interp, objs: &[Mesh], field: &crate::value::Chpoint, sign: f64) {
+    let comps = super::dofs::translations(it);
+    let mut list: Vec<usize> = objs.iter().flat_map(|m| m.node_list()).collect();
+    list.sort_unstable();
+    list.dedup();
+    for n in list {
+        for (k, c) in comps.iter().enumerate().take(3) {
+            if let Some(v) = field.get(n, c) {
+                it.nodes.coords[n][k] += sign * v;
+            }
+        }
+    }
 }
 
 /// `angle P1 (P2)`: P2 (the axis) in 3D only.

@@ -11,7 +11,7 @@ use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "NOEU", signature: "NOEUD n | NOEUD POINT", doc: "The point (node) number n, as numbered by gibi (LIST shows node numbers); given a point, its number.", example: "p = noeud 5 ; n = noeud p ;", f: noeu },
-    OpDef { name: "COOR", signature: "COOR POINT | COOR n POINT | COOR (n) MAILLAGE", doc: "Coordinates of a point (one result per dimension), one of them, or coordinate fields (SCAL) on a mesh: one per dimension, or the n-th.", example: "x y = coor p ;", f: coor },
+    OpDef { name: "COOR", signature: "COOR POINT | COOR n POINT | COOR (n) MAILLAGE | COOR (n) MCHAML", doc: "Coordinates of a point (one result per dimension), one of them, or coordinate fields (SCAL) on a mesh: one per dimension, or the n-th; of an element field, its points' coordinates as element fields.", example: "x y = coor p ;", f: coor },
     OpDef { name: "NBNO", signature: "NBNO MAILLAGE", doc: "Number of nodes of a mesh.", example: "n = nbno l ;", f: nbno },
     OpDef { name: "NBEL", signature: "NBEL MAILLAGE", doc: "Number of elements of a mesh.", example: "n = nbel s ;", f: nbel },
     OpDef { name: "POIN", signature: "POIN x (y) (z) | POIN LISTREEL (LISTREEL) (LISTREEL) | MAILLAGE POIN n | MAILLAGE POIN ('INIT'|'FINAL') | MAILLAGE POIN 'PROC' POINT | MAILLAGE POIN ('DROIT' P1 P2 | 'PLAN' P1 P2 P3) (crit) | CHPOINT|MCHAML POIN ('ABS') ('AVEC'|'SANS' LISTMOTS) 'MAXI'|'MINI'|'SUPE'|'INFE'|'EGSU'|'EGIN'|'EGAL'|'DIFF' v|'COMP' v1 v2", doc: "A point, or nodes of a mesh, or the points where a field's values meet a test (a POI1 mesh; for an MCHAML at centres or Gauss points, new points there, in element order).", example: "p = l poin 'FINAL' ;", f: poin },
@@ -58,7 +58,10 @@ fn coor(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             Some(k) => Err(a.err(format!("coordinate {} does not exist in dimension {}", k, dim))),
         };
     }
-    Err(a.missing("POINT or MAILLAGE"))
+    if let Some(m) = a.opt::<Rc<crate::value::Mchaml>>() {
+        return super::coor_field::coor_of_mchaml(it, a, which, &m);
+    }
+    Err(a.missing("POINT, MAILLAGE or MCHAML"))
 }
 
 fn nbno(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {

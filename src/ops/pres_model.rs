@@ -68,6 +68,9 @@ pub(crate) fn model(it: &Interp, a: &mut Args, geo: &Mesh) -> Result<Vec<Value>>
 
 /// PRES mop 'PRES' p|CHPOINT: the pressure at every element node.
 pub(crate) fn field(a: &mut Args, model: &Model) -> Result<Vec<Value>> {
+    if let Some(chel) = a.opt::<Rc<Mchaml>>() {
+        return super::pres_chel::field(a, model, &chel);
+    }
     a.req_keyword(&["PRES"])?;
     let chpo = a.opt::<Rc<Chpoint>>();
     let p = match &chpo {

@@ -15,7 +15,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef {
         name: "INDE",
         signature: "INDE TABLE",
-        doc: "The keys of a table, as a TABLE indexed 1..n: ENTIER keys increasing, then FLOTTANT, then MOT in alphabetical order, then the others as inserted.",
+        doc: "The keys of a table, as a TABLE indexed 1..n: ENTIER keys increasing, then FLOTTANT, then objects as inserted, then MOT in alphabetical order.",
         example: "ind = inde t ; repeter b (dime ind) ; mess (t . (ind . &b)) ; fin b ;",
         f: inde,
     },
@@ -84,9 +84,11 @@ fn rank(k: &Key) -> u8 {
     match k {
         Key::Int(_) => 0,
         Key::Float(_) => 1,
-        Key::Mot(_) => 2,
-        Key::Bool(_) => 3,
-        Key::Point(_) | Key::Object(_) => 4,
+        // Objects before words: G_CALCUL loops over a table keyed by the
+        // crack-front points then 'GLOBAL', and takes the last key as it.
+        Key::Point(_) | Key::Object(_) => 2,
+        Key::Mot(_) => 3,
+        Key::Bool(_) => 4,
     }
 }
 

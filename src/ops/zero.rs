@@ -43,7 +43,10 @@ fn zero(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         return Err(a.err(format!("{}: gibi's fields by element hold numbers, not Hooke matrices", kind)));
     }
     let mut out = Mchaml { subtype: subtype(kind).into(), zones: vec![] };
-    for zone in model.zones.iter().filter(|z| z.formulation != super::pres_model::FORMULATION) {
+    // A pressure model's zones have a geometry only: the scalar layouts
+    // (a field to give PRES mop CHEL1) but no mechanical components.
+    let scalar = matches!(kind, "NOEUD" | "GRAVITE" | "RIGIDITE" | "MASSE" | "STRESSES");
+    for zone in model.zones.iter().filter(|z| scalar || z.formulation != super::pres_model::FORMULATION) {
         let (points, comps) = layout(kind, zone).map_err(|m| a.err(m))?;
         for part in &zone.mesh.parts {
             out.zones.push(zeros(zone, part, points, &comps));

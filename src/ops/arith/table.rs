@@ -185,7 +185,17 @@ fn sampled(_: &mut Interp, a: &Args, op: Bin, x: &Value, y: &Value) -> Result<Op
             // not drop the elements one side has alone.
             let count = |x: &crate::value::Mchaml| x.zones.iter().map(|z| z.values.len()).sum::<usize>();
             let same = count(m) == count(n);
-            let r = m.combine(n, f).or_else(|e| match n.realign(m).filter(|_| same || !fill) {
+            // A product or quotient by a one-component field (a norm)
+            // scales every component, on the first field's layout.
+            let scaled = || {
+                crate::value::mchaml_scale::scale(m, n, f)
+                    .or_else(|| n.realign(m).and_then(|n2| crate::value::mchaml_scale::scale(m, &n2, f)))
+            };
+            let r = m.combine(n, f).or_else(|e| match (!fill).then(scaled).flatten() {
+                Some(r) => Ok(r),
+                None => Err(e),
+            });
+            let r = r.or_else(|e| match n.realign(m).filter(|_| same || !fill) {
                 Some(n2) => m.combine_union(&n2, f, fill),
                 None => match m.realign(n) {
                     Some(m2) if !fill => m2.combine_union(n, f, fill),
