@@ -5,11 +5,15 @@
 //! element, y from CARA 'VECT', z = x × y), INRY/INRZ about local y/z and
 //! torsion G·TORS.
 //!
-//! TIMO uses the exact ("interdependent interpolation") two-node stiffness,
-//! which has no shear locking and makes a single element exact for end
-//! loads: with Φ = 12EI/(G·As·L²) the bending block is the Euler–Bernoulli
-//! one with 4 → 4+Φ, 2 → 2−Φ and a 1/(1+Φ) factor. SECY is the shear area
-//! for deflection along local y (bending with INRZ), SECZ along local z.
+//! TIMO is Cast3M's Timoshenko element: linear deflection and rotation,
+//! bending and shear energies integrated at the element's middle (one
+//! point, which keeps it free of shear locking). A tip force F on one
+//! element of length L therefore deflects it by F·L/(G·As) + F·L³/(4EI)
+//! (the exact beam has L³/3). Its stiffness is the "interdependent
+//! interpolation" formula with Φ = 12EI/(G·As·L²) − 1: the bending block
+//! is the Euler–Bernoulli one with 4 → 4+Φ, 2 → 2−Φ and a 1/(1+Φ) factor
+//! (1 + Φ > 0 for any section). SECY is the shear area for deflection
+//! along local y (bending with INRZ), SECZ along local z.
 //!
 //! Stress output (SIGM) is given at the two element ends ("points" 1 and 2):
 //! the section resultants EFFX EFFY (EFFZ) (MOMX MOMY) MOMZ in local axes,
@@ -89,9 +93,10 @@ fn section(elem: &'static str, mode: Mode, m: &Material, timo: bool, l: f64) -> 
     let (iy, j) = if d3 { (m.positive(m.inry, "INRY", elem)?, m.positive(m.tors, "TORS", elem)?) } else { (0.0, 0.0) };
     let (mut phi_y, mut phi_z) = (0.0, 0.0);
     if timo {
-        phi_y = 12.0 * e * iz / (g * m.positive(m.secy.or(m.sect), "SECY", elem)? * l * l);
+        // Φ − 1: the reduced-integration element (see the module notes).
+        phi_y = 12.0 * e * iz / (g * m.positive(m.secy.or(m.sect), "SECY", elem)? * l * l) - 1.0;
         if d3 {
-            phi_z = 12.0 * e * iy / (g * m.positive(m.secz.or(m.sect), "SECZ", elem)? * l * l);
+            phi_z = 12.0 * e * iy / (g * m.positive(m.secz.or(m.sect), "SECZ", elem)? * l * l) - 1.0;
         }
     }
     Ok(Section { e, g, a, iy, iz, j, phi_y, phi_z })

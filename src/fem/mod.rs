@@ -54,3 +54,4 @@ mod tests_traction;
 
 pub mod mesh;
 pub mod meshing;
+pub mod midside;

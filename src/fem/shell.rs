@@ -8,11 +8,9 @@
 //!
 //! Local frame of an element: x3 along the normal n = (x2 − x1) × (x3 − x1)
 //! (TRI3) or (x3 − x1) × (x4 − x2) (QUA4), so it follows the node order; x1
-//! is the global X axis projected on the element plane, or the global Y
-//! axis when the element is nearly perpendicular to X (|n·X| > 0.995);
-//! x2 = x3 × x1. A warped QUA4 is projected on its mean plane. Resultants
-//! and strains are given in this frame, so on a plate in the XY plane
-//! "1" is X and "2" is Y.
+//! is the first side x2 − x1 projected on the element plane (Cast3M's
+//! convention for thin shells); x2 = x3 × x1. A warped QUA4 is projected
+//! on its mean plane. Resultants and strains are given in this frame.
 //!
 //! Drilling: a flat element has no stiffness for the rotation θ3 about
 //! its normal, so a plane mesh would be singular in RZ. As in Cast3M, a
@@ -93,7 +91,9 @@ fn frame(f: Formulation, x: &[[f64; 3]]) -> Result<Frame, FemError> {
         return Err(FemError::Degenerate { elem: f.name(), why: "zero area (aligned or coincident nodes)".into() });
     }
     let e3 = [n[0] / nn, n[1] / nn, n[2] / nn];
-    let axis = if e3[0].abs() > 0.995 { [0.0, 1.0, 0.0] } else { [1.0, 0.0, 0.0] };
+    // x1 along the first side, as Cast3M's thin shells (RTEN's notice):
+    // resultants are read in this frame, so decks name them after it.
+    let axis = sub(x[1], x[0]);
     let p = dot(axis, e3);
     let e1 = unit([axis[0] - p * e3[0], axis[1] - p * e3[1], axis[2] - p * e3[2]]);
     let e2 = cross(e3, e1);

@@ -22,8 +22,8 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "RELA",
-        signature: "RELA ('MINI'|'MAXI') (c1) comp1 GEO1 (+|-) (c2) comp2 GEO2 … | RELA ('MINI'|'MAXI') CHPOINT ('DUAL' CHPOINT) | RELA 'ENSE' comp… GEO",
-        doc: "Linear relations between unknowns, node by node (MINI: >= d, MAXI: <= d). From a field, one relation whose coefficients are the field's values; 'DUAL' gives a non-associated reaction direction (the system is then solved as non-symmetric). 'ENSE': each listed component takes one common value on all the nodes.",
+        signature: "RELA ('MINI'|'MAXI') (c1) comp1 GEO1 (+|-) (c2) comp2 GEO2 … | RELA ('MINI'|'MAXI') CHPOINT ('DUAL' CHPOINT) | RELA 'ENSE' comp… GEO | RELA 'MILI' (LISTMOTS) GEO",
+        doc: "Linear relations between unknowns, node by node (MINI: >= d, MAXI: <= d). From a field, one relation whose coefficients are the field's values; 'DUAL' gives a non-associated reaction direction (the system is then solved as non-symmetric). 'ENSE': each listed component takes one common value on all the nodes. 'MILI': mid-side nodes of quadratic elements follow the mean of their edge's vertices (default: the displacements).",
         example: "r = rela 'MINI' 1. 'UX' pb - 1. 'UX' pa ;",
         f: rela,
     },
@@ -162,6 +162,9 @@ fn rela(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let kind = kind_keyword(a);
     if a.keyword(&["ENSE"]).is_some() {
         return rela_ense(it, a, kind);
+    }
+    if a.keyword(&["MILI"]).is_some() {
+        return super::rela_mili::rela_mili(it, a, kind);
     }
     if let Some(ch) = a.opt::<Rc<Chpoint>>() {
         let terms = field_terms(&ch);

@@ -74,6 +74,7 @@ mod pres_shell;
 mod prim;
 mod principal;
 mod products;
+mod rela_mili;
 mod reso;
 mod restrict;
 mod special;

@@ -234,7 +234,12 @@ fn solve_direct(it: &mut Interp, r: &Rigidite, asm: &Assembled, loads: &[Load], 
         }
         other => other,
     };
-    let sols = sols.map_err(|e| explain(it, r, asm, e, loads));
+    let sols = sols.map_err(|e| explain(it, r, asm, e, loads)).map(|mut v| {
+        for (s, l) in v.iter_mut().zip(loads) {
+            s.snap_blocked(&asm.problem, l);
+        }
+        v
+    });
     let solve_s = t.elapsed().as_secs_f64();
     if phase != Phase::Reused {
         it.timers.phase(&format!("RESO {}", phase.name()), fact_s);

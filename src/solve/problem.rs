@@ -85,3 +85,18 @@ pub struct Solution {
     pub lambda: Vec<f64>,
     pub active: Vec<bool>,
 }
+
+impl Solution {
+    /// An unknown fixed alone by an equality (a BLOQ) takes its imposed
+    /// value exactly rather than to rounding: a blocked displacement then
+    /// reads as 0., not 1e-19, as in Cast3M.
+    pub fn snap_blocked(&mut self, p: &Problem, load: &Load) {
+        for (c, d) in p.conditions.iter().zip(&load.d) {
+            if let (Kind::Equal, [(j, a)]) = (c.kind, c.terms.as_slice()) {
+                if *a != 0.0 && c.dual.is_none() && *j < self.u.len() {
+                    self.u[*j] = d / a;
+                }
+            }
+        }
+    }
+}
