@@ -72,6 +72,7 @@ mod prim;
 mod principal;
 mod products;
 mod reso;
+mod projection;
 mod restrict;
 mod special;
 mod superele;
@@ -140,6 +141,7 @@ impl Registry {
             products::OPS,
             masq::OPS,
             born::OPS,
+            projection::OPS,
             restrict::OPS,
             reso::OPS,
             post::OPS,

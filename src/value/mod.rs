@@ -15,6 +15,7 @@ mod mchaml_broadcast;
 pub mod model;
 mod model_union;
 pub mod nuage;
+pub mod projection;
 pub mod rigidity;
 pub mod signal;
 pub mod table;
