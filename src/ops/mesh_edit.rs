@@ -219,7 +219,9 @@ fn syme(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     // m1 f1 syme …`), else the first value after it, else what follows the
     // symmetry element.
     let mut objs = Vec::new();
-    while let Some(v) = a.opt_with(|v| matches!(v, Value::Point(_) | Value::Mesh(_) | Value::Chpo(_)).then(|| v.clone())) {
+    while let Some(v) =
+        a.opt_with(|v| matches!(v, Value::Point(_) | Value::Mesh(_) | Value::Chpo(_)).then(|| v.clone()))
+    {
         objs.push(v);
     }
     let mirror = match a.req_keyword(&["DROIT", "PLAN", "POINT"])? {

@@ -114,7 +114,9 @@ fn read_turn(it: &Interp, a: &mut Args) -> Result<Motion> {
 /// axis). Returns the objects and those points.
 pub(crate) fn gather(a: &mut Args, first: Value, tail: usize, what: &str) -> Result<(Vec<Value>, Vec<usize>)> {
     let mut all = vec![first];
-    while let Some(v) = a.opt_with(|v| matches!(v, Value::Point(_) | Value::Mesh(_) | Value::Chpo(_)).then(|| v.clone())) {
+    while let Some(v) =
+        a.opt_with(|v| matches!(v, Value::Point(_) | Value::Mesh(_) | Value::Chpo(_)).then(|| v.clone()))
+    {
         all.push(v);
     }
     let mut pts = Vec::with_capacity(tail);

@@ -24,7 +24,12 @@ fn proi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         let centre = match a.keyword(&["NOEUD", "GRAVITE", "RIGIDITE", "MASSE", "STRESSES"]) {
             None | Some("NOEUD") => false,
             Some("GRAVITE") => true,
-            Some(w) => return Err(a.err(format!("projects onto the nodes ('NOEUD') or centres ('GRAVITE'), not onto the '{}' points", w))),
+            Some(w) => {
+                return Err(a.err(format!(
+                    "projects onto the nodes ('NOEUD') or centres ('GRAVITE'), not onto the '{}' points",
+                    w
+                )))
+            }
         };
         let out = projection::onto_model(&field, &model, centre, &it.nodes).map_err(|m| a.err(m))?;
         return Ok(vec![Value::Mchaml(Rc::new(out))]);
