@@ -64,8 +64,8 @@ fn image(s: &shape::Shape, xs: &[[f64; 3]]) -> ([f64; 3], [[f64; 3]; 3]) {
     for (k, p) in xs.iter().enumerate() {
         for c in 0..3 {
             img[c] += s.n[k] * p[c];
-            for r in 0..3 {
-                jac[c][r] += s.dn[k][r] * p[c];
+            for (j, d) in jac[c].iter_mut().zip(&s.dn[k]) {
+                *j += d * p[c];
             }
         }
     }
@@ -96,8 +96,9 @@ fn solve(a: &[[f64; 3]; 3], b: &[f64; 3], n: usize) -> Option<[f64; 3]> {
         r.swap(c, p);
         for i in c + 1..n {
             let f = m[i][c] / m[c][c];
-            for j in c..n {
-                m[i][j] -= f * m[c][j];
+            let pivot = m[c];
+            for (x, y) in m[i][c..n].iter_mut().zip(&pivot[c..n]) {
+                *x -= f * y;
             }
             r[i] -= f * r[c];
         }

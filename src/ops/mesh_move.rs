@@ -143,7 +143,7 @@ pub(crate) fn copies(it: &mut Interp, a: &Args, objs: &[Value], motion: Motion) 
     let meshes = supports(a, objs)?;
     let refs: Vec<&Mesh> = meshes.iter().collect();
     let turn = match &motion {
-        Motion::Rotate { .. } => Some(motion.clone()),
+        Motion::Rotate { .. } => Some(motion),
         _ => None,
     };
     let out = copy_together(&mut it.nodes, &refs, motion, it.opts.dime.max(2))?;

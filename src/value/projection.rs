@@ -9,6 +9,9 @@ use crate::fem::mesh::{ElemType, Mesh, Nodes};
 use crate::fem::shape;
 use std::collections::HashMap;
 
+/// Component names and their values at a point.
+type Named = (Vec<String>, Vec<f64>);
+
 /// One element of the field: its type, nodes, and where its values are.
 struct Cell<'a> {
     ty: ElemType,
@@ -72,7 +75,7 @@ impl<'a> Locator<'a> {
 
     /// The field's components and values at `x`, from the first element
     /// that contains it; None when no element does.
-    pub fn values_at(&self, x: [f64; 3], nodes: &Nodes) -> Result<Option<(Vec<String>, Vec<f64>)>, String> {
+    pub fn values_at(&self, x: [f64; 3], nodes: &Nodes) -> Result<Option<Named>, String> {
         let Some(cands) = self.grid.get(&self.key(x)) else { return Ok(None) };
         for &i in cands {
             let c = &self.cells[i];

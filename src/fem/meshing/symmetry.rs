@@ -102,9 +102,8 @@ pub fn syme_together(nodes: &mut Nodes, meshes: &[&Mesh], mirror: Mirror, dim: u
     for mesh in meshes {
         check_nodes("SYME", nodes, mesh)?;
         for n in mesh.node_list() {
-            if !map.map.contains_key(&n) {
-                let m = nodes.push(mirror.image(nodes.get(n)), nodes.density[n]);
-                map.map.insert(n, m);
+            if let std::collections::hash_map::Entry::Vacant(e) = map.map.entry(n) {
+                e.insert(nodes.push(mirror.image(nodes.get(n)), nodes.density[n]));
             }
         }
     }
