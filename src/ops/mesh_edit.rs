@@ -218,11 +218,18 @@ fn syme(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     // The objects are the operands before SYME (`s2 = s1 syme …`, `m2 f2 =
     // m1 f1 syme …`), else the first value after it, else what follows the
     // symmetry element.
+    let geo_or_field = |v: &Value| matches!(v, Value::Point(_) | Value::Mesh(_) | Value::Chpo(_));
     let mut objs = Vec::new();
-    while let Some(v) =
-        a.opt_with(|v| matches!(v, Value::Point(_) | Value::Mesh(_) | Value::Chpo(_)).then(|| v.clone()))
-    {
+    while let Some(v) = a.left_value() {
+        if !geo_or_field(&v) {
+            a.unread(v);
+            break;
+        }
         objs.push(v);
+    }
+    objs.reverse();
+    if objs.is_empty() && a.peek_right().is_some_and(|v| geo_or_field(&v)) {
+        objs.extend(a.right_any());
     }
     let mirror = match a.req_keyword(&["DROIT", "PLAN", "POINT"])? {
         "DROIT" => {
