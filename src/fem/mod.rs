@@ -20,6 +20,7 @@ pub mod incomp;
 pub mod integrate;
 pub mod joint;
 pub mod loads;
+pub mod locate;
 pub mod material;
 pub mod plate;
 pub mod principal;

@@ -180,14 +180,17 @@ fn diff(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 fn translate(it: &mut Interp, a: &mut Args, sign: f64) -> Result<Vec<Value>> {
     // The object comes first; the vector after it (both may be points).
     let obj = a.req::<Value>()?;
-    if let (Value::Mesh(m), Some(u)) = (&obj, a.opt::<Rc<Chpoint>>()) {
-        return Ok(mesh_val(moved_by_field(it, m, &u, sign)));
+    // Several objects move together (`a b = a b PLUS v`); the last operand
+    // is the vector (a POINT) or, after a mesh alone, a displacement field.
+    let (mut objs, _) = super::mesh_move::gather(a, obj, 0, "")?;
+    if let [Value::Mesh(m), Value::Chpo(u)] = objs.as_slice() {
+        return Ok(mesh_val(moved_by_field(it, m, u, sign)));
     }
-    // Several objects move together (`a b = a b PLUS v`); the last POINT
-    // is the vector.
-    let (mut objs, tail) = super::mesh_move::gather(a, obj, 1, "a vector (POINT)")?;
-    let v = it.nodes.get(tail[0]).map(|c| c * sign);
-    if objs.len() > 1 {
+    let v = match objs.pop() {
+        Some(Value::Point(p)) if !objs.is_empty() => it.nodes.get(p).map(|c| c * sign),
+        _ => return Err(a.missing("a vector (POINT)")),
+    };
+    if objs.len() > 1 || matches!(objs[0], Value::Chpo(_)) {
         return super::mesh_move::copies(it, a, &objs, mg::motion::Motion::Translate(v));
     }
     Ok(match objs.remove(0) {
@@ -212,11 +215,21 @@ fn moin(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 fn syme(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    // The object is the operand before SYME (`s2 = s1 syme …`), else the
-    // first value after it, else what follows the symmetry element.
-    let mut obj = a.left_value();
-    if obj.is_none() && a.peek_right().is_some_and(|v| matches!(v, Value::Point(_) | Value::Mesh(_))) {
-        obj = a.right_any();
+    // The objects are the operands before SYME (`s2 = s1 syme …`, `m2 f2 =
+    // m1 f1 syme …`), else the first value after it, else what follows the
+    // symmetry element.
+    let geo_or_field = |v: &Value| matches!(v, Value::Point(_) | Value::Mesh(_) | Value::Chpo(_));
+    let mut objs = Vec::new();
+    while let Some(v) = a.left_value() {
+        if !geo_or_field(&v) {
+            a.unread(v);
+            break;
+        }
+        objs.push(v);
+    }
+    objs.reverse();
+    if objs.is_empty() && a.peek_right().is_some_and(|v| geo_or_field(&v)) {
+        objs.extend(a.right_any());
     }
     let mirror = match a.req_keyword(&["DROIT", "PLAN", "POINT"])? {
         "DROIT" => {
@@ -230,9 +243,23 @@ fn syme(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         }
         _ => mg::Mirror::Point(vector(it, a).ok_or_else(|| a.missing("POINT"))?),
     };
-    let obj = match obj {
-        Some(v) => v,
-        None => a.right_any().ok_or_else(|| a.missing("POINT or MAILLAGE"))?,
+    let obj = match objs.len() {
+        0 => a.right_any().ok_or_else(|| a.missing("POINT or MAILLAGE"))?,
+        1 if !matches!(objs[0], Value::Chpo(_)) => objs.remove(0),
+        _ => {
+            // Several objects (a field with its support): one image per node.
+            let meshes = super::mesh_move::supports(a, &objs)?;
+            let refs: Vec<&Mesh> = meshes.iter().collect();
+            let out = mg::syme_together(&mut it.nodes, &refs, mirror, it.opts.dime.max(2))?;
+            return Ok(objs
+                .iter()
+                .zip(out)
+                .map(|(o, m)| match o {
+                    Value::Chpo(c) => Value::Chpo(Rc::new(super::mesh_move::carried(c, &m))),
+                    _ => super::mesh_move::image_value(o, m),
+                })
+                .collect());
+        }
     };
     let dim = it.opts.dime.max(2);
     match obj {
@@ -250,7 +277,7 @@ fn syme(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 fn tour(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     // The object is the operand before TOUR (`s2 = s1 tour 90. p`; the
     // first of several), else the first value after it.
-    let first = a.opt_with(|v| matches!(v, Value::Point(_) | Value::Mesh(_)).then(|| v.clone()));
+    let first = a.opt_with(|v| matches!(v, Value::Point(_) | Value::Mesh(_) | Value::Chpo(_)).then(|| v.clone()));
     let obj = match first.or_else(|| a.left_value()) {
         Some(v) => v,
         None => a.right_any().ok_or_else(|| a.missing("POINT or MAILLAGE"))?,
@@ -262,7 +289,7 @@ fn tour(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let (mut objs, tail) = super::mesh_move::gather(a, obj, n, "POINT (the centre, and the axis in 3D)")?;
     let centre = it.nodes.get(tail[0]);
     let axis_end = tail.get(1).map(|&p| it.nodes.get(p));
-    if objs.len() > 1 {
+    if objs.len() > 1 || matches!(objs[0], Value::Chpo(_)) {
         let turn = mg::motion::Motion::Rotate { angle_deg: angle, centre, axis_end };
         return super::mesh_move::copies(it, a, &objs, turn);
     }

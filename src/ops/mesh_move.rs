@@ -10,7 +10,7 @@ use crate::fem::mesh::Mesh;
 use crate::fem::meshing::motion::{copy_together, move_in_place, Motion};
 use crate::fem::meshing::transform::PointMap;
 use crate::fem::meshing::Mirror;
-use crate::value::Value;
+use crate::value::{Chpoint, Value};
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[OpDef {
@@ -24,6 +24,7 @@ pub(crate) const OPS: &[OpDef] = &[OpDef {
 /// A POINT (as a POI1 mesh) or a MAILLAGE.
 fn geo(v: &Value) -> Option<Mesh> {
     match v {
+        Value::Chpo(_) => None,
         Value::Point(p) => Some(Mesh::points(&[*p])),
         Value::Mesh(m) => Some((**m).clone()),
         _ => None,
@@ -136,7 +137,9 @@ fn read_turn(it: &Interp, a: &mut Args) -> Result<Motion> {
 /// axis). Returns the objects and those points.
 pub(crate) fn gather(a: &mut Args, first: Value, tail: usize, what: &str) -> Result<(Vec<Value>, Vec<usize>)> {
     let mut all = vec![first];
-    while let Some(v) = a.opt_with(|v| matches!(v, Value::Point(_) | Value::Mesh(_)).then(|| v.clone())) {
+    while let Some(v) =
+        a.opt_with(|v| matches!(v, Value::Point(_) | Value::Mesh(_) | Value::Chpo(_)).then(|| v.clone()))
+    {
         all.push(v);
     }
     let mut pts = Vec::with_capacity(tail);
@@ -156,20 +159,86 @@ pub(crate) fn gather(a: &mut Args, first: Value, tail: usize, what: &str) -> Res
     Ok((all, pts))
 }
 
-/// The copies of `objs` moved together; a POINT alone becomes a new point.
+/// The copies of `objs` moved together; a POINT alone becomes a new point,
+/// a CHPOINT is carried to the images of its nodes (its vector components
+/// turned with a rotation, tour.notice).
 pub(crate) fn copies(it: &mut Interp, a: &Args, objs: &[Value], motion: Motion) -> Result<Vec<Value>> {
-    let mut meshes = Vec::with_capacity(objs.len());
-    for o in objs {
-        meshes.push(geo(o).ok_or_else(|| a.err(format!("cannot move a {}", o.type_name())))?);
-    }
+    let meshes = supports(a, objs)?;
     let refs: Vec<&Mesh> = meshes.iter().collect();
+    let turn = match &motion {
+        Motion::Rotate { .. } => Some(motion),
+        _ => None,
+    };
     let out = copy_together(&mut it.nodes, &refs, motion, it.opts.dime.max(2))?;
-    Ok(objs
-        .iter()
-        .zip(out)
-        .map(|(o, m)| match o {
-            Value::Point(_) => Value::Point(m.parts[0].conn[0]),
-            _ => Value::Mesh(Rc::new(m)),
+    let mut vals = Vec::with_capacity(objs.len());
+    for (o, m) in objs.iter().zip(out) {
+        vals.push(match o {
+            Value::Chpo(c) => {
+                let turned = match &turn {
+                    Some(t) => turn_components(c, t).map_err(|e| a.err(e))?,
+                    None => (**c).clone(),
+                };
+                Value::Chpo(Rc::new(carried(&turned, &m)))
+            }
+            _ => image_value(o, m),
+        });
+    }
+    Ok(vals)
+}
+
+/// The mesh each object moves: a CHPOINT's is its nodes, in its order.
+pub(crate) fn supports(a: &Args, objs: &[Value]) -> Result<Vec<Mesh>> {
+    objs.iter()
+        .map(|o| match o {
+            Value::Chpo(c) => Ok(Mesh::points(&c.nodes)),
+            _ => geo(o).ok_or_else(|| a.err(format!("cannot move a {}", o.type_name()))),
         })
-        .collect())
+        .collect()
+}
+
+/// The moved object: a POINT alone is a new point, a mesh a MAILLAGE.
+pub(crate) fn image_value(o: &Value, m: Mesh) -> Value {
+    match o {
+        Value::Point(_) => Value::Point(m.parts[0].conn[0]),
+        _ => Value::Mesh(Rc::new(m)),
+    }
+}
+
+/// The field on the images of its nodes: `image` is its nodes' POI1 mesh
+/// moved, node k of the field going to the k-th point of it.
+pub(crate) fn carried(c: &Chpoint, image: &Mesh) -> Chpoint {
+    let to: std::collections::HashMap<usize, usize> =
+        c.nodes.iter().copied().zip(image.parts.iter().flat_map(|p| p.conn.iter().copied())).collect();
+    Chpoint::from_entries(c.nature, c.entries().map(|(n, comp, v)| (to[&n], comp, v)))
+}
+
+/// The vector components (UX UY UZ, FX FY FZ, RX RY RZ, MX MY MZ) turned
+/// by the rotation's linear part; the others unchanged.
+fn turn_components(c: &Chpoint, t: &Motion) -> std::result::Result<Chpoint, String> {
+    let o = [0.0; 3];
+    let o2 = t.image(o).map_err(|e| e.to_string())?;
+    let lin = |v: [f64; 3]| -> std::result::Result<[f64; 3], String> {
+        let p = t.image(v).map_err(|e| e.to_string())?;
+        Ok([p[0] - o2[0], p[1] - o2[1], p[2] - o2[2]])
+    };
+    let mut out = c.clone();
+    for pre in ["U", "F", "R", "M"] {
+        let names: Vec<String> = ["X", "Y", "Z"].iter().map(|x| format!("{pre}{x}")).collect();
+        if !names.iter().any(|n| c.comps.contains(n)) {
+            continue;
+        }
+        for &n in &c.nodes {
+            let v = [0, 1, 2].map(|k| c.get(n, &names[k]));
+            if v.iter().all(|x| x.is_none()) {
+                continue;
+            }
+            let w = lin(v.map(|x| x.unwrap_or(0.0)))?;
+            for k in 0..3 {
+                if v[k].is_some() || w[k] != 0.0 {
+                    out.add(n, &names[k], w[k], false);
+                }
+            }
+        }
+    }
+    Ok(out)
 }

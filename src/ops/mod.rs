@@ -74,6 +74,7 @@ mod pres_shell;
 mod prim;
 mod principal;
 mod products;
+mod projection;
 mod rela_mili;
 mod reso;
 mod restrict;
@@ -145,6 +146,7 @@ impl Registry {
             products::OPS,
             masq::OPS,
             born::OPS,
+            projection::OPS,
             restrict::OPS,
             reso::OPS,
             post::OPS,

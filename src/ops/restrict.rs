@@ -50,11 +50,15 @@ fn redu(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             Value::Rigi(Rc::new(rigidity_on(&r, &keep)))
         }
         Value::Model(mo) => {
-            let keep: HashSet<usize> = geo(a, other)?.node_list().into_iter().collect();
+            let g = geo(a, other)?;
+            let keep: HashSet<usize> = g.node_list().into_iter().collect();
+            let own: HashSet<(ElemType, Vec<usize>)> =
+                g.parts.iter().flat_map(|p| p.elems().map(move |e| key(p.ty, e))).collect();
+            let types: HashSet<ElemType> = g.parts.iter().map(|p| p.ty).collect();
             let zones: Vec<ModelZone> = mo
                 .zones
                 .iter()
-                .map(|z| ModelZone { mesh: elements_on(&z.mesh, &keep), ..z.clone() })
+                .map(|z| ModelZone { mesh: model_elements_on(&z.mesh, &own, &types, &keep), ..z.clone() })
                 .filter(|z| z.mesh.n_elements() > 0)
                 .collect();
             // No element on the mesh: an empty model, as Cast3M gives
@@ -65,13 +69,29 @@ fn redu(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     }])
 }
 
-/// The elements of `mesh` whose nodes all lie in `keep`, in their order.
-fn elements_on(mesh: &Mesh, keep: &HashSet<usize>) -> Mesh {
+/// The elements of a model's mesh kept by `REDU MMODEL GEO`: where the mesh
+/// has elements of a part's type, those of them that are elements of the
+/// mesh (an element of a hole whose nodes all lie on the mesh stays out,
+/// so the model pairs with a field reduced to the same mesh); otherwise
+/// (a mesh of points, of lines on a surface model) those whose nodes all
+/// lie on the mesh.
+fn model_elements_on(
+    mesh: &Mesh,
+    own: &HashSet<(ElemType, Vec<usize>)>,
+    types: &HashSet<ElemType>,
+    keep: &HashSet<usize>,
+) -> Mesh {
     let parts = mesh
         .parts
         .iter()
         .map(|p| {
-            let conn = p.elems().filter(|e| e.iter().all(|n| keep.contains(n))).flatten().copied().collect();
+            let by_elem = types.contains(&p.ty);
+            let conn = p
+                .elems()
+                .filter(|e| if by_elem { own.contains(&key(p.ty, e)) } else { e.iter().all(|n| keep.contains(n)) })
+                .flatten()
+                .copied()
+                .collect();
             crate::fem::mesh::Part { conn, ..p.clone() }
         })
         .filter(|p| !p.is_empty())

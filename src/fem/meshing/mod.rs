@@ -63,7 +63,7 @@ pub use query::{
     line_chain, nbel, nbel_of_type, nbno, poin_droit, poin_final, poin_init, poin_nth, poin_plan, poin_proc,
 };
 pub use sweep::{rota, tran, volu};
-pub use symmetry::{syme, Mirror};
+pub use symmetry::{syme, syme_together, Mirror};
 pub use transform::{barycentre, map_copy, map_point, PointMap, Target};
 
 use crate::fem::mesh::{ElemType, Mesh, Nodes, Part};

@@ -91,27 +91,41 @@ pub(crate) fn turn_over(ty: ElemType) -> &'static [usize] {
 
 /// `GEO SYME …`: the image of `mesh` on new nodes (see the module doc).
 pub fn syme(nodes: &mut Nodes, mesh: &Mesh, mirror: Mirror, dim: usize) -> Result<Mesh, MeshError> {
-    check_nodes("SYME", nodes, mesh)?;
+    Ok(syme_together(nodes, &[mesh], mirror, dim)?.remove(0))
+}
+
+/// The mirror images of several meshes at once (`m2 f2 = m1 f1 SYME …`):
+/// a node they share has one image.
+pub fn syme_together(nodes: &mut Nodes, meshes: &[&Mesh], mirror: Mirror, dim: usize) -> Result<Vec<Mesh>, MeshError> {
     mirror.check(dim)?;
     let mut map = NodeMap::default();
-    for n in mesh.node_list() {
-        let m = nodes.push(mirror.image(nodes.get(n)), nodes.density[n]);
-        map.map.insert(n, m);
+    for mesh in meshes {
+        check_nodes("SYME", nodes, mesh)?;
+        for n in mesh.node_list() {
+            if let std::collections::hash_map::Entry::Vacant(e) = map.map.entry(n) {
+                e.insert(nodes.push(mirror.image(nodes.get(n)), nodes.density[n]));
+            }
+        }
     }
-    let image = map.apply(mesh);
-    if !mirror.reverses(dim) {
-        return Ok(image);
-    }
-    let parts = image
-        .parts
-        .into_iter()
-        .map(|p| {
-            let perm = turn_over(p.ty);
-            let conn = p.elems().flat_map(|e| perm.iter().map(move |&k| e[k])).collect();
-            Part { conn, ..p }
+    Ok(meshes
+        .iter()
+        .map(|mesh| {
+            let image = map.apply(mesh);
+            if !mirror.reverses(dim) {
+                return image;
+            }
+            let parts = image
+                .parts
+                .into_iter()
+                .map(|p| {
+                    let perm = turn_over(p.ty);
+                    let conn = p.elems().flat_map(|e| perm.iter().map(move |&k| e[k])).collect();
+                    Part { conn, ..p }
+                })
+                .collect();
+            Mesh { parts }
         })
-        .collect();
-    Ok(Mesh { parts })
+        .collect())
 }
 
 #[cfg(test)]
