@@ -45,6 +45,7 @@ mod math;
 mod mesh;
 mod mesh_edit;
 mod mesh_free;
+mod mesh_delaunay;
 mod mesh_lines;
 mod mesh_move;
 mod mesh_query;
@@ -119,6 +120,7 @@ impl Registry {
             mesh::OPS,
             mesh_query::OPS,
             mesh_free::OPS,
+            mesh_delaunay::OPS,
             mesh_lines::OPS,
             mesh_ruled::OPS,
             joint_mesh::OPS,

@@ -23,6 +23,8 @@ pub mod between;
 pub mod contour;
 pub mod couture;
 pub mod dall;
+pub mod dall_unequal;
+pub mod delaunay;
 pub mod dall_support;
 pub mod edges;
 pub mod edit;
