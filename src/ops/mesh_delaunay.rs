@@ -54,11 +54,9 @@ fn tria(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 let pts: Vec<[f64; 2]> = coords.iter().map(|c| [c[0], c[1]]).collect();
                 mg::delaunay::points_2d("TRIA", &pts)?.iter().flat_map(|t| t.map(|k| ids[k])).collect()
             }
-            _ => {
-                return Err(a.err(
-                    "the Delaunay tetrahedrisation of points in 3D is not available: gibi triangulates points in 1D and 2D",
-                ))
-            }
+            _ => return Err(a.err(
+                "the Delaunay tetrahedrisation of points in 3D is not available: gibi triangulates points in 1D and 2D",
+            )),
         };
         let ty = if dim == 1 { ElemType::Seg2 } else { ElemType::Tri3 };
         return Ok(vec![Value::Mesh(Rc::new(Mesh::single(Part::with(ty, conn))))]);

@@ -48,7 +48,11 @@ pub fn points_2d(op: &'static str, pts: &[[f64; 2]]) -> Result<Vec<[usize; 3]>, 
         if v.index() < input_of.len() {
             return fail(
                 op,
-                format!("points {} and {} are at the same place (merge them with ELIM)", input_of[v.index()] + 1, i + 1),
+                format!(
+                    "points {} and {} are at the same place (merge them with ELIM)",
+                    input_of[v.index()] + 1,
+                    i + 1
+                ),
             );
         }
         input_of.push(i);
