@@ -105,6 +105,10 @@ pub(super) fn connect(it: &mut Interp, a: &mut Args) -> Result<Option<Vec<Value>
             a.unread(Value::Mesh(geo));
             return Ok(None);
         }
+        if ty == ElemType::Tet4 {
+            // `CHAN 'TET4' volume`: the elements cut into tetrahedra.
+            return Ok(Some(vec![Value::Mesh(Rc::new(crate::fem::meshing::tetra::to_tet4(&it.nodes, &geo)?))]));
+        }
         return Err(a.missing("LISTENTI (the connectivity)"));
     };
     let pts: Vec<usize> = geo.parts.iter().flat_map(|p| p.conn.iter().copied()).collect();

@@ -45,10 +45,12 @@ mod manu;
 mod masq;
 mod math;
 mod mesh;
+mod mesh_delaunay;
 mod mesh_edit;
 mod mesh_free;
 mod mesh_lines;
 mod mesh_move;
+mod mesh_partition;
 mod mesh_query;
 mod mesh_repair;
 mod mesh_ruled;
@@ -125,6 +127,8 @@ impl Registry {
             mesh::OPS,
             mesh_query::OPS,
             mesh_free::OPS,
+            mesh_partition::OPS,
+            mesh_delaunay::OPS,
             mesh_lines::OPS,
             mesh_ruled::OPS,
             joint_mesh::OPS,

@@ -14,9 +14,9 @@ const OP: &str = "DALL";
 ///
 /// The sides must follow each other around the contour, each one in either
 /// direction: as Cast3M does, a side that runs the other way is read
-/// reversed (see [`orient_sides`]). Opposite sides must have the same
-/// number of elements. Linear elements need SEG2 sides, quadratic ones
-/// SEG3 sides.
+/// reversed (see [`orient_sides`]). Opposite sides may
+/// have different numbers of elements (see [`super::dall_unequal`]).
+/// Linear elements need SEG2 sides, quadratic ones SEG3 sides.
 ///
 /// Think of the surface as a grid `N(i, j)`, `i` running along side 1 (from
 /// its start `A`) and `j` from side 1 towards side 3; side 2 is `i = max`,
@@ -69,6 +69,10 @@ pub fn dall(nodes: &mut Nodes, sides: [&Mesh; 4], ty: ElemType) -> Result<Mesh, 
     orient_sides(&mut chains);
     check_contour(nodes, &chains)?;
     let per_elem = if quadratic { 2 } else { 1 };
+    let unequal = [(2, 0), (3, 1)].iter().any(|&(k, opp)| chains[k].len() != chains[opp].len());
+    if unequal {
+        return super::dall_unequal::dall_unequal(nodes, &chains, ty);
+    }
     for (k, opp) in [(2, 0), (3, 1)] {
         if chains[k].len() != chains[opp].len() {
             return fail(

@@ -30,7 +30,7 @@ use super::{fail, MeshError};
 use spade::handles::FixedFaceHandle;
 use spade::{ConstrainedDelaunayTriangulation, FloatTriangulation, Point2, PositionInTriangulation, Triangulation};
 
-type Cdt = ConstrainedDelaunayTriangulation<Point2<f64>>;
+pub(crate) type Cdt = ConstrainedDelaunayTriangulation<Point2<f64>>;
 
 /// A triangulated region: `points` starts with the input points, in their
 /// order; `sizes` is the target size at each point; `triangles` are
@@ -89,7 +89,7 @@ pub fn triangulate(
     Ok(Planar { points, sizes, triangles })
 }
 
-fn load(op: &'static str, points: &[[f64; 2]], edges: &[[usize; 2]]) -> Result<Cdt, MeshError> {
+pub(crate) fn load(op: &'static str, points: &[[f64; 2]], edges: &[[usize; 2]]) -> Result<Cdt, MeshError> {
     let verts: Vec<Point2<f64>> = points.iter().map(|p| Point2::new(p[0], p[1])).collect();
     let mut crossing = false;
     let cdt = Cdt::try_bulk_load_cdt(verts, edges.to_vec(), |_| crossing = true)
@@ -106,7 +106,7 @@ fn load(op: &'static str, points: &[[f64; 2]], edges: &[[usize; 2]]) -> Result<C
 /// Which faces (by index) are inside the region: faces reached from the
 /// convex hull without crossing a constraint are outside, and each
 /// constraint crossed flips the side.
-fn inside_faces(cdt: &Cdt) -> Vec<bool> {
+pub(crate) fn inside_faces(cdt: &Cdt) -> Vec<bool> {
     let n = cdt.num_all_faces();
     let mut side: Vec<Option<bool>> = vec![None; n];
     type Item = (FixedFaceHandle<spade::handles::PossiblyOuterTag>, bool);

@@ -1,0 +1,93 @@
+//! TRIA (TRIANGULATION): Delaunay triangulation of a set of points, or of
+//! the inside of closed lines. The geometry is `fem::meshing::delaunay`
+//! (spade); this file reads the Gibiane arguments.
+
+use super::{Args, OpDef};
+use crate::error::Result;
+use crate::eval::Interp;
+use crate::fem::mesh::{ElemType, Mesh, Part};
+use crate::fem::meshing as mg;
+use crate::value::Value;
+use std::rc::Rc;
+
+pub(crate) const OPS: &[OpDef] = &[OpDef {
+    name: "TRIA",
+    signature: "TRIA POINTS ('CONV') | TRIA LINES (n_max | size)",
+    doc: "Delaunay triangulation: of a POI1 point set (SEG2 chain in 1D, TRI3 over the convex hull in 2D), or of the inside of closed SEG2 lines in the plane with no node added (with a size: free triangles of that size, as SURF).",
+    example: "t = tria ((0. 0.) et (1. 0.) et (0. 1.) et (1. 1.)) ;",
+    f: tria,
+}];
+
+fn tria(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let geo = super::mesh::req_geo(a)?;
+    // 'CONV' asks for a convex result: a Delaunay triangulation of points
+    // always covers their convex hull.
+    a.keyword(&["CONV"]);
+    let max_nodes = a.opt::<i64>();
+    let size = match max_nodes {
+        Some(_) => None,
+        None => a.opt::<f64>(),
+    };
+    a.keyword(&["CONV"]);
+    if let Some(h) = size {
+        if !(h.is_finite() && h > 0.0) {
+            return Err(a.err(format!("the element size must be positive (got {h})")));
+        }
+    }
+    let dim = it.opts.dime.max(1);
+    let kinds: Vec<ElemType> = geo.parts.iter().filter(|p| !p.is_empty()).map(|p| p.ty).collect();
+    if kinds.is_empty() {
+        return Err(a.err("the mesh is empty"));
+    }
+    if kinds.iter().all(|&t| t == ElemType::Poi1) {
+        if size.is_some() {
+            return Err(a.err("a target size for a point set is not available: gibi triangulates the points as given"));
+        }
+        let ids = geo.node_list();
+        let coords: Vec<[f64; 3]> = ids.iter().map(|&n| it.nodes.get(n)).collect();
+        let conn: Vec<usize> = match dim {
+            1 => {
+                let xs: Vec<f64> = coords.iter().map(|c| c[0]).collect();
+                mg::delaunay::chain_1d("TRIA", &xs)?.iter().flat_map(|e| [ids[e[0]], ids[e[1]]]).collect()
+            }
+            2 => {
+                let pts: Vec<[f64; 2]> = coords.iter().map(|c| [c[0], c[1]]).collect();
+                mg::delaunay::points_2d("TRIA", &pts)?.iter().flat_map(|t| t.map(|k| ids[k])).collect()
+            }
+            _ => return Err(a.err(
+                "the Delaunay tetrahedrisation of points in 3D is not available: gibi triangulates points in 1D and 2D",
+            )),
+        };
+        let ty = if dim == 1 { ElemType::Seg2 } else { ElemType::Tri3 };
+        return Ok(vec![Value::Mesh(Rc::new(Mesh::single(Part::with(ty, conn))))]);
+    }
+    if dim != 2 {
+        return Err(a.err("the triangulation of the inside of lines is available in 2D (OPTI DIME 2)"));
+    }
+    if let Some(k) = kinds.iter().find(|&&t| t != ElemType::Seg2) {
+        return Err(a.err(format!("TRIA fills lines of SEG2 elements, not {}", k.name())));
+    }
+    if let Some(h) = size {
+        // With a size, the inside is meshed freely, as SURF does, but with
+        // elements of that size everywhere.
+        let o = mg::surf::SurfOptions {
+            space_dim: 2,
+            crit: 1e-2,
+            sizes: geo.node_list().into_iter().map(|n| (n, h)).collect(),
+        };
+        return Ok(vec![Value::Mesh(Rc::new(mg::surf::surf(&mut it.nodes, &geo, ElemType::Tri3, &o)?))]);
+    }
+    let ids = geo.node_list();
+    let local: std::collections::HashMap<usize, usize> = ids.iter().enumerate().map(|(k, &n)| (n, k)).collect();
+    let pts: Vec<[f64; 2]> = ids.iter().map(|&n| it.nodes.get(n)).map(|c| [c[0], c[1]]).collect();
+    let edges: Vec<[usize; 2]> =
+        geo.parts.iter().flat_map(|p| p.elems().map(|e| [local[&e[0]], local[&e[1]]]).collect::<Vec<_>>()).collect();
+    let tris = mg::delaunay::region_2d("TRIA", &pts, &edges)?;
+    if let Some(n) = max_nodes {
+        if n < ids.len() as i64 {
+            return Err(a.err(format!("the maximum number of nodes ({n}) is less than the lines' {} nodes", ids.len())));
+        }
+    }
+    let conn: Vec<usize> = tris.iter().flat_map(|t| t.map(|k| ids[k])).collect();
+    Ok(vec![Value::Mesh(Rc::new(Mesh::single(Part::with(ElemType::Tri3, conn))))])
+}
