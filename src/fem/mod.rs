@@ -13,6 +13,7 @@ pub mod constitutive;
 pub mod contact;
 pub mod contact_weak;
 pub mod coq2;
+pub mod dst;
 pub mod element;
 pub mod enclosed;
 pub mod flow;

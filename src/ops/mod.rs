@@ -32,6 +32,7 @@ mod fit;
 mod format;
 mod fourier;
 mod fracture;
+mod insert;
 mod hyperbolic;
 mod integrate;
 mod io;
@@ -111,6 +112,7 @@ impl Registry {
             empty::OPS,
             zero::OPS,
             extract::OPS,
+            insert::OPS,
             objects::OPS,
             io::OPS,
             temps::OPS,
