@@ -14,6 +14,7 @@ pub mod contact;
 pub mod contact_weak;
 pub mod coq2;
 pub mod dst;
+pub mod surface_vectors;
 pub mod element;
 pub mod enclosed;
 pub mod flow;

@@ -83,6 +83,7 @@ mod thermo;
 mod transform;
 mod union;
 mod variable;
+mod vsur;
 mod variable_fields;
 mod work;
 mod zero;
@@ -113,6 +114,7 @@ impl Registry {
             zero::OPS,
             extract::OPS,
             insert::OPS,
+            vsur::OPS,
             objects::OPS,
             io::OPS,
             temps::OPS,
