@@ -61,7 +61,9 @@ fn kappa(inv: &[[f64; 2]; 2], p: [f64; 3]) -> [[f64; 12]; 3] {
 /// moves mid-node k's slope along its side's tangent).
 fn kappa_delta(inv: &[[f64; 2]; 2], p: [f64; 3], t: &[[f64; 2]; 3]) -> [[f64; 3]; 3] {
     let k = kappa(inv, p);
-    std::array::from_fn(|r| std::array::from_fn(|s| k[r][2 * (2 * s + 1)] * t[s][0] + k[r][2 * (2 * s + 1) + 1] * t[s][1]))
+    std::array::from_fn(|r| {
+        std::array::from_fn(|s| k[r][2 * (2 * s + 1)] * t[s][0] + k[r][2 * (2 * s + 1) + 1] * t[s][1])
+    })
 }
 
 /// Condense the shear of a triangle with corners `xl` (counter-clockwise
@@ -87,14 +89,13 @@ pub(crate) fn condense(xl: &[[f64; 2]], db: &[[f64; 3]; 3], ds: f64) -> Result<D
     };
     let dm = |a: usize, r: usize, c: usize| (0..3).map(|s| db[r][s] * dk(a, s, c)).sum::<f64>();
     // T over the 12 nodal slopes.
-    let gb: [[f64; 12]; 2] = [
-        std::array::from_fn(|c| dm(0, 0, c) + dm(1, 2, c)),
-        std::array::from_fn(|c| dm(0, 2, c) + dm(1, 1, c)),
-    ];
+    let gb: [[f64; 12]; 2] =
+        [std::array::from_fn(|c| dm(0, 0, c) + dm(1, 2, c)), std::array::from_fn(|c| dm(0, 2, c) + dm(1, 1, c))];
     // Nodal slopes over q (the DKT's), and T over q and over δ.
     let h = plate::slopes(xl);
-    let gq: [[f64; 9]; 2] =
-        std::array::from_fn(|r| std::array::from_fn(|c| (0..6).map(|n| gb[r][2 * n] * h[n][0][c] + gb[r][2 * n + 1] * h[n][1][c]).sum()));
+    let gq: [[f64; 9]; 2] = std::array::from_fn(|r| {
+        std::array::from_fn(|c| (0..6).map(|n| gb[r][2 * n] * h[n][0][c] + gb[r][2 * n + 1] * h[n][1][c]).sum())
+    });
     let gd: [[f64; 3]; 2] = std::array::from_fn(|r| {
         std::array::from_fn(|k| gb[r][2 * (2 * k + 1)] * tangents[k][0] + gb[r][2 * (2 * k + 1) + 1] * tangents[k][1])
     });
@@ -110,8 +111,11 @@ pub(crate) fn condense(xl: &[[f64; 2]], db: &[[f64; 3]; 3], ds: f64) -> Result<D
             rhs[k][c] = -1.5 / ds * (s[0] * gq[0][c] + s[1] * gq[1][c]);
         }
     }
-    let a = solve3(lhs, rhs).ok_or_else(|| FemError::Degenerate { elem: "DST", why: "singular shear condensation".into() })?;
-    let gamma = std::array::from_fn(|r| std::array::from_fn(|c| (gq[r][c] + (0..3).map(|k| gd[r][k] * a[k][c]).sum::<f64>()) / ds));
+    let a = solve3(lhs, rhs)
+        .ok_or_else(|| FemError::Degenerate { elem: "DST", why: "singular shear condensation".into() })?;
+    let gamma = std::array::from_fn(|r| {
+        std::array::from_fn(|c| (gq[r][c] + (0..3).map(|k| gd[r][k] * a[k][c]).sum::<f64>()) / ds)
+    });
     Ok(Dst { a, gamma, ds, tangents })
 }
 
@@ -138,13 +142,14 @@ fn solve3(mut m: [[f64; 3]; 3], mut b: [[f64; 9]; 3]) -> Option<[[f64; 9]; 3]> {
         }
         m.swap(c, p);
         b.swap(c, p);
+        let (mc, bc) = (m[c], b[c]);
         for r in c + 1..3 {
-            let f = m[r][c] / m[c][c];
-            for k in c..3 {
-                m[r][k] -= f * m[c][k];
+            let f = m[r][c] / mc[c];
+            for (v, w) in m[r].iter_mut().zip(mc).skip(c) {
+                *v -= f * w;
             }
-            for k in 0..9 {
-                b[r][k] -= f * b[c][k];
+            for (v, w) in b[r].iter_mut().zip(bc) {
+                *v -= f * w;
             }
         }
     }

@@ -247,7 +247,9 @@ pub fn mass(
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => {
             solid::mass(ty, mode, x, m, lumped)
         }
-        Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => shell::mass(f, mode, x, m, lumped),
+        Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => {
+            shell::mass(f, mode, x, m, lumped)
+        }
         Formulation::Coq2 => coq2::mass(mode, x, m, lumped),
         // A joint has no thickness, hence no mass.
         Formulation::Joint => {
@@ -344,7 +346,9 @@ pub fn internal_forces(
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => {
             solid::internal_forces(f, ty, mode, x, m, sig)
         }
-        Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => shell::internal_forces(f, mode, x, m, sig),
+        Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => {
+            shell::internal_forces(f, mode, x, m, sig)
+        }
         Formulation::Coq2 => coq2::internal_forces(mode, x, m, sig),
         Formulation::Joint => joint::internal_forces(ty, mode, x, m, sig),
     }

@@ -92,7 +92,9 @@ pub fn point_weights(
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => {
             solid::point_weights(f, ty, mode, x, m)
         }
-        Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => super::shell::point_weights(f, x),
+        Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => {
+            super::shell::point_weights(f, x)
+        }
         Formulation::Coq2 => super::coq2::point_weights(mode, x),
         Formulation::Joint => super::joint::point_weights(ty, mode, x),
     }

@@ -14,7 +14,6 @@ pub mod contact;
 pub mod contact_weak;
 pub mod coq2;
 pub mod dst;
-pub mod surface_vectors;
 pub mod element;
 pub mod enclosed;
 pub mod flow;
@@ -32,6 +31,7 @@ pub mod shell_offset;
 pub mod skin;
 pub mod solid;
 pub mod stress;
+pub mod surface_vectors;
 pub mod vec3;
 pub mod work;
 
