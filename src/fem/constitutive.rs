@@ -76,9 +76,12 @@ pub fn thermal_strain(
                 .collect();
             Ok(GaussField { comps, values })
         }
-        Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 | Formulation::Coq2 | Formulation::Joint => {
-            Err(FemError::Unsupported { form: f.name(), elem: ty.name(), mode: mode.name() })
-        }
+        Formulation::Coq3
+        | Formulation::Dkt
+        | Formulation::Dst
+        | Formulation::Coq4
+        | Formulation::Coq2
+        | Formulation::Joint => Err(FemError::Unsupported { form: f.name(), elem: ty.name(), mode: mode.name() }),
     }
 }
 
@@ -106,7 +109,9 @@ pub fn hooke(f: Formulation, ty: ElemType, mode: Mode, m: &Material, eps: &Gauss
         Formulation::Pout | Formulation::Timo => vec!["EPSS", "GAXY", "GAXZ", "CURX", "CURY", "CURZ"],
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => solid::strain_comps(mode),
         Formulation::Joint => return super::joint::hooke(mode, m, eps),
-        Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 | Formulation::Coq2 => unreachable!("refused above"),
+        Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 | Formulation::Coq2 => {
+            unreachable!("refused above")
+        }
     };
     if !wanted.iter().any(|w| eps.comps.contains(w)) {
         return Err(FemError::MissingComponent { comp: wanted[0], elem: ty.name() });
@@ -131,9 +136,12 @@ pub fn hooke(f: Formulation, ty: ElemType, mode: Mode, m: &Material, eps: &Gauss
                 .collect();
             Ok(GaussField { comps: solid::stress_comps(mode), values })
         }
-        Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 | Formulation::Coq2 | Formulation::Joint => {
-            Err(FemError::Unsupported { form: f.name(), elem: ty.name(), mode: mode.name() })
-        }
+        Formulation::Coq3
+        | Formulation::Dkt
+        | Formulation::Dst
+        | Formulation::Coq4
+        | Formulation::Coq2
+        | Formulation::Joint => Err(FemError::Unsupported { form: f.name(), elem: ty.name(), mode: mode.name() }),
     }
 }
 

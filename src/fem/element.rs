@@ -56,6 +56,8 @@ pub enum Formulation {
     /// Thin flat shells (see [`shell`]).
     Coq3,
     Dkt,
+    /// Shell with transverse shear on TRI3 (see [`super::dst`]).
+    Dst,
     Coq4,
     /// Thin conical (AXIS) or cylindrical (plane modes) shell on SEG2
     /// (see [`coq2`]).
@@ -77,15 +79,16 @@ impl Formulation {
             Formulation::Incomp => "incompressible",
             Formulation::Coq3 => "COQ3",
             Formulation::Dkt => "DKT",
+            Formulation::Dst => "DST",
             Formulation::Coq4 => "COQ4",
             Formulation::Coq2 => "COQ2",
             Formulation::Joint => "JOI2",
         }
     }
 
-    /// COQ3, DKT, COQ4 or COQ2.
+    /// COQ3, DKT, DST, COQ4 or COQ2.
     pub fn is_shell(self) -> bool {
-        matches!(self, Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 | Formulation::Coq2)
+        matches!(self, Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 | Formulation::Coq2)
     }
 }
 
@@ -140,7 +143,7 @@ pub fn node_dofs(f: Formulation, mode: Mode) -> Result<&'static [&'static str], 
         Formulation::Barr => bar::dofs(mode),
         Formulation::Pout | Formulation::Timo => beam::dofs(mode),
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => Ok(solid::dofs(mode)),
-        Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::dofs(f, mode),
+        Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => shell::dofs(f, mode),
         Formulation::Coq2 => coq2::dofs(mode),
         Formulation::Joint => joint::dofs(mode),
     }
@@ -196,7 +199,7 @@ fn check(f: Formulation, ty: ElemType, mode: Mode) -> Result<(), FemError> {
         Formulation::Q8ri => ty == ElemType::Qua8,
         Formulation::Solid => ty.dim() >= 2,
         Formulation::Incomp => super::incomp::geometry_ok(ty),
-        Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => ty == shell::geometry(f),
+        Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => ty == shell::geometry(f),
         Formulation::Coq2 => ty == ElemType::Seg2,
         Formulation::Joint => joint::accepts(ty, mode),
     };
@@ -221,7 +224,7 @@ pub fn stiffness(
         Formulation::Timo => beam::stiffness(true, mode, x, m),
         Formulation::Incomp => super::incomp::stiffness(ty, mode, x, m),
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::stiffness(f, ty, mode, x, m),
-        Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::stiffness(f, mode, x, m),
+        Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => shell::stiffness(f, mode, x, m),
         Formulation::Coq2 => coq2::stiffness(mode, x, m),
         Formulation::Joint => joint::stiffness(ty, mode, x, m),
     }
@@ -244,7 +247,9 @@ pub fn mass(
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => {
             solid::mass(ty, mode, x, m, lumped)
         }
-        Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::mass(f, mode, x, m, lumped),
+        Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => {
+            shell::mass(f, mode, x, m, lumped)
+        }
         Formulation::Coq2 => coq2::mass(mode, x, m, lumped),
         // A joint has no thickness, hence no mass.
         Formulation::Joint => {
@@ -273,7 +278,7 @@ pub fn stress(
         Formulation::Timo => beam::stress(true, mode, x, m, u),
         Formulation::Incomp => super::incomp::stress(ty, mode, x, m, u),
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::field(f, ty, mode, x, m, u, true),
-        Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::stress(f, mode, x, m, u),
+        Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => shell::stress(f, mode, x, m, u),
         Formulation::Coq2 => coq2::stress(mode, x, m, u),
         Formulation::Joint => joint::stress(ty, mode, x, m, u),
     }
@@ -317,7 +322,7 @@ pub fn strain(
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => {
             solid::field(f, ty, mode, x, m, u, false)
         }
-        Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::strain(f, mode, x, u),
+        Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => shell::strain(f, mode, x, m, u),
         Formulation::Coq2 => coq2::strain(mode, x, u),
         Formulation::Joint => joint::strain(ty, mode, x, m, u),
     }
@@ -341,7 +346,9 @@ pub fn internal_forces(
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => {
             solid::internal_forces(f, ty, mode, x, m, sig)
         }
-        Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::internal_forces(f, mode, x, sig),
+        Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => {
+            shell::internal_forces(f, mode, x, m, sig)
+        }
         Formulation::Coq2 => coq2::internal_forces(mode, x, m, sig),
         Formulation::Joint => joint::internal_forces(ty, mode, x, m, sig),
     }
@@ -356,7 +363,7 @@ pub fn gauss_points(f: Formulation, ty: ElemType) -> Vec<([f64; 3], f64)> {
             vec![([-1.0, 0.0, 0.0], 1.0), ([1.0, 0.0, 0.0], 1.0)]
         }
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => solid::rule(f, ty),
-        Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => shell::rule(ty),
+        Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => shell::rule(ty),
         Formulation::Coq2 => coq2::rule(),
         // On the face; the joint's reference coordinate across is 0.
         Formulation::Joint => joint::rule(ty),

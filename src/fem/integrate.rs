@@ -95,7 +95,9 @@ pub fn point_weights(
             }
             solid::point_weights(f, ty, mode, x, m)
         }
-        Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => super::shell::point_weights(f, x),
+        Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => {
+            super::shell::point_weights(f, x)
+        }
         Formulation::Coq2 => super::coq2::point_weights(mode, x),
         Formulation::Joint => super::joint::point_weights(ty, mode, x),
     }
@@ -118,7 +120,7 @@ pub fn node_weights(
             }
             solid::node_weights(ty, mode, x, m)
         }
-        Formulation::Coq3 | Formulation::Dkt | Formulation::Coq4 => super::shell::node_weights(f, x),
+        Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => super::shell::node_weights(f, x),
         Formulation::Coq2 => super::coq2::node_weights(mode, x),
         Formulation::Joint => Err(FemError::NotFor { what: "integrating a nodal field", form: f.name() }),
     }

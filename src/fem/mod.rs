@@ -13,6 +13,7 @@ pub mod constitutive;
 pub mod contact;
 pub mod contact_weak;
 pub mod coq2;
+pub mod dst;
 pub mod element;
 pub mod enclosed;
 pub mod flow;
@@ -31,6 +32,7 @@ pub mod shell_offset;
 pub mod skin;
 pub mod solid;
 pub mod stress;
+pub mod surface_vectors;
 pub mod vec3;
 pub mod work;
 

@@ -48,7 +48,7 @@ const C: [[f64; 3]; 2] = [[0.0, 0.0, -1.0], [0.0, 1.0, 0.0]];
 
 /// β at the quadratic nodes as linear maps of the bending dofs: `h[k][a]`
 /// is the row of β_a at node k (TRI6/QUA8 order: corner, mid-side, ...).
-fn slopes(xl: &[[f64; 2]]) -> Vec<[Vec<f64>; 2]> {
+pub(crate) fn slopes(xl: &[[f64; 2]]) -> Vec<[Vec<f64>; 2]> {
     let n = xl.len();
     let mut h = Vec::with_capacity(2 * n);
     for i in 0..n {

@@ -1,4 +1,5 @@
-//! Thin flat shells: COQ3 and DKT on TRI3, COQ4 on QUA4, in TRID only.
+//! Flat shells: COQ3 and DKT on TRI3, COQ4 on QUA4 (thin), DST on TRI3
+//! (with transverse shear, see [`super::dst`]), in TRID only.
 //!
 //! Each element is flat: a membrane (constant-strain triangle, bilinear
 //! quadrangle) plus a discrete Kirchhoff plate (DKT, DKQ; see
@@ -31,6 +32,7 @@
 //! EPTT GAST (membrane strains, engineering shear) and RTSS RTTT RTST
 //! (curvatures, RTST = 2κ12, so M12 = D(1 − ν)/2 · RTST).
 
+use super::dst::{self, Dst};
 use super::element::{ElemMatrix, FemError, Formulation, GaussField, Mode};
 use super::material::Material;
 use super::mesh::ElemType;
@@ -76,6 +78,8 @@ pub fn rule(ty: ElemType) -> Vec<QPoint> {
 struct Frame {
     r: [[f64; 3]; 3],
     xl: Vec<[f64; 2]>,
+    /// DST's condensed shear, once the material is known (see [`shear`]).
+    dst: Option<Dst>,
 }
 
 fn frame(f: Formulation, x: &[[f64; 3]]) -> Result<Frame, FemError> {
@@ -99,7 +103,7 @@ fn frame(f: Formulation, x: &[[f64; 3]]) -> Result<Frame, FemError> {
     let e2 = cross(e3, e1);
     let c: [f64; 3] = std::array::from_fn(|k| x.iter().map(|p| p[k]).sum::<f64>() / x.len() as f64);
     let xl = x.iter().map(|p| [dot(e1, sub(*p, c)), dot(e2, sub(*p, c))]).collect();
-    Ok(Frame { r: [e1, e2, e3], xl })
+    Ok(Frame { r: [e1, e2, e3], xl, dst: None })
 }
 
 /// What the element needs from the material, read once.
@@ -118,12 +122,29 @@ fn section(f: Formulation, m: &Material) -> Result<Section, FemError> {
     Ok(Section { dm: plate::plane_stress(c, nu), db: plate::plane_stress(c * t * t / 12.0, nu) })
 }
 
+/// A frame with DST's shear condensed (other elements: unchanged).
+fn shear(f: Formulation, mut fr: Frame, m: &Material, sec: &Section) -> Result<Frame, FemError> {
+    if f == Formulation::Dst {
+        let ds = dst::SHEAR_FACTOR * m.shear_modulus(f.name())? * m.positive(m.epai, "EPAI", f.name())?;
+        fr.dst = Some(dst::condense(&fr.xl, &sec.db, ds)?);
+    }
+    Ok(fr)
+}
+
+/// The strain rows at reference point `p`.
+fn point_at(fr: &Frame, p: [f64; 3]) -> PlatePoint {
+    match &fr.dst {
+        Some(d) => dst::at(&fr.xl, p, d),
+        None => plate::at(&fr.xl, p),
+    }
+}
+
 /// The element's points with their strain rows, in the local plane.
 fn points(f: Formulation, fr: &Frame) -> Result<Vec<(PlatePoint, f64)>, FemError> {
     rule(geometry(f))
         .into_iter()
         .map(|(p, w)| {
-            let pp = plate::at(&fr.xl, p);
+            let pp = point_at(fr, p);
             if pp.det <= 0.0 || !pp.det.is_finite() {
                 return Err(FemError::Degenerate {
                     elem: f.name(),
@@ -171,14 +192,23 @@ fn dof_list(nodes: usize) -> Vec<(usize, &'static str)> {
 
 pub fn stiffness(f: Formulation, mode: Mode, x: &[[f64; 3]], m: &Material) -> Result<ElemMatrix, FemError> {
     dofs(f, mode)?;
-    let fr = frame(f, x)?;
     let sec = section(f, m)?;
+    let fr = shear(f, frame(f, x)?, m, &sec)?;
     let nn = x.len();
     let n = 6 * nn;
     let mut kl = vec![0.0; n * n];
     for (p, w) in points(f, &fr)? {
         add_btdb(&mut kl, n, &p.bm, &sec.dm, w * p.det, mem);
         add_btdb(&mut kl, n, &p.bb, &sec.db, w * p.det, bend);
+        if let Some(d) = &fr.dst {
+            // Transverse shear energy: γ is constant, its stiffness k G t.
+            for i in 0..9 {
+                for j in 0..9 {
+                    let v: f64 = (0..2).map(|r| d.gamma[r][i] * d.gamma[r][j]).sum();
+                    kl[bend(i) * n + bend(j)] += w * p.det * d.ds * v;
+                }
+            }
+        }
     }
     let rot: f64 = (0..nn).map(|i| kl[(6 * i + 3) * n + 6 * i + 3] + kl[(6 * i + 4) * n + 6 * i + 4]).sum();
     let drill = DRILL * rot / (2 * nn) as f64;
@@ -236,10 +266,10 @@ fn resultants(sec: &Section, e: &[f64; 6]) -> [f64; 6] {
     [n[0], n[1], n[2], m[0], m[1], m[2]]
 }
 
-pub fn strain(f: Formulation, mode: Mode, x: &[[f64; 3]], u: &[f64]) -> Result<GaussField, FemError> {
+pub fn strain(f: Formulation, mode: Mode, x: &[[f64; 3]], m: &Material, u: &[f64]) -> Result<GaussField, FemError> {
     dofs(f, mode)?;
     check_u(f, x, u)?;
-    let fr = frame(f, x)?;
+    let fr = if f == Formulation::Dst { shear(f, frame(f, x)?, m, &section(f, m)?)? } else { frame(f, x)? };
     let ul = to_local(&fr.r, u);
     let values = points(f, &fr)?.iter().map(|(p, _)| strains(p, &ul).to_vec()).collect();
     Ok(GaussField { comps: STRAIN.to_vec(), values })
@@ -248,12 +278,12 @@ pub fn strain(f: Formulation, mode: Mode, x: &[[f64; 3]], u: &[f64]) -> Result<G
 pub fn stress(f: Formulation, mode: Mode, x: &[[f64; 3]], m: &Material, u: &[f64]) -> Result<GaussField, FemError> {
     dofs(f, mode)?;
     check_u(f, x, u)?;
-    let fr = frame(f, x)?;
     let sec = section(f, m)?;
+    let fr = shear(f, frame(f, x)?, m, &sec)?;
     let mut ul = to_local(&fr.r, u);
     shell_offset::to_mid(m.exce.unwrap_or(0.0), &mut ul);
     let moments = |p: [f64; 3]| {
-        let r = resultants(&sec, &strains(&plate::at(&fr.xl, p), &ul));
+        let r = resultants(&sec, &strains(&point_at(&fr, p), &ul));
         [r[3], r[4], r[5]]
     };
     // Moment gradients by central differences in the reference plane:
@@ -278,12 +308,19 @@ pub fn stress(f: Formulation, mode: Mode, x: &[[f64; 3]], m: &Material, u: &[f64
     Ok(GaussField { comps: STRESS.to_vec(), values })
 }
 
-/// BSIG: Σ w (B_mᵀ N + B_bᵀ M) in global axes. V1 V2 and the drilling
-/// spring do no work here, so for the stresses of u this is K u except
-/// on the (fictitious) drilling stiffness.
-pub fn internal_forces(f: Formulation, mode: Mode, x: &[[f64; 3]], sig: &GaussField) -> Result<Vec<f64>, FemError> {
+/// BSIG: Σ w (B_mᵀ N + B_bᵀ M) in global axes. V1 V2 do no work in the
+/// Kirchhoff elements (in DST they work on its shear strains) and the
+/// drilling spring none, so for the stresses of u this is K u except on
+/// the (fictitious) drilling stiffness.
+pub fn internal_forces(
+    f: Formulation,
+    mode: Mode,
+    x: &[[f64; 3]],
+    m: &Material,
+    sig: &GaussField,
+) -> Result<Vec<f64>, FemError> {
     dofs(f, mode)?;
-    let fr = frame(f, x)?;
+    let fr = if f == Formulation::Dst { shear(f, frame(f, x)?, m, &section(f, m)?)? } else { frame(f, x)? };
     let pts = points(f, &fr)?;
     if sig.values.len() != pts.len() {
         return Err(FemError::WrongPointCount { elem: f.name(), expected: pts.len(), got: sig.values.len() });
@@ -298,6 +335,12 @@ pub fn internal_forces(f: Formulation, mode: Mode, x: &[[f64; 3]], sig: &GaussFi
         }
         for c in 0..p.bb[0].len() {
             fl[bend(c)] += wd * (0..3).map(|i| p.bb[i][c] * r[3 + i]).sum::<f64>();
+        }
+        if let Some(d) = &fr.dst {
+            let v = [s(6)?, s(7)?];
+            for c in 0..9 {
+                fl[bend(c)] += wd * (d.gamma[0][c] * v[0] + d.gamma[1][c] * v[1]);
+            }
         }
     }
     Ok(to_global(&fr.r, &fl))

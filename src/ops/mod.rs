@@ -35,6 +35,7 @@ mod format;
 mod fourier;
 mod fracture;
 mod hyperbolic;
+mod insert;
 mod integrate;
 mod io;
 mod joint_mesh;
@@ -91,6 +92,7 @@ mod union;
 mod variable;
 mod variable_fields;
 mod vector_product;
+mod vsur;
 mod work;
 mod zero;
 
@@ -119,6 +121,8 @@ impl Registry {
             empty::OPS,
             zero::OPS,
             extract::OPS,
+            insert::OPS,
+            vsur::OPS,
             objects::OPS,
             io::OPS,
             temps::OPS,

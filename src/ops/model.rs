@@ -14,7 +14,7 @@ use crate::value::{Evolution, Mchaml, Model, Rigidite, Value};
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
-    OpDef { name: "MODE", signature: "MODE GEO 'MECANIQUE' ('ELASTIQUE' ('ISOTROPE')) (BARR|POUT|TIMO|Q4RI|COQ2|COQ3|DKT|COQ4|…) | MODE GEO 'CHARGEMENT' 'PRESSION' (COQ2) | MODE CONTACT_MESH 'CONTACT' ('UNILATERAL')", doc: "A model: a mesh tied to a formulation, a behaviour and an element type (COQ3, DKT on TRI3 and COQ4 on QUA4 are thin shells, in TRID; COQ2 on SEG2 the thin shell of AXIS and the plane modes; ICT3, ICQ4, ICT6, ICQ8 (ICT4, ICC8, ICP6 in TRID) the incompressible massive elements, with a pressure condensed per element). MODE GEO 'CHARGEMENT' 'PRESSION' ('CONS' name) makes a pressure model for PRES and BSIG, on lines (SEG2, SEG3) in 2D or surfaces (TRI3, QUA4, TRI6, QUA8) in TRID. 'CONTACT' on the elements of IMPO 'MAIL' makes a contact model for PASAPAS.", example: "mo = mode l mecanique elastique pout ;", f: mode },
+    OpDef { name: "MODE", signature: "MODE GEO 'MECANIQUE' ('ELASTIQUE' ('ISOTROPE')) (BARR|POUT|TIMO|Q4RI|COQ2|COQ3|DKT|COQ4|…) | MODE GEO 'CHARGEMENT' 'PRESSION' (COQ2) | MODE CONTACT_MESH 'CONTACT' ('UNILATERAL')", doc: "A model: a mesh tied to a formulation, a behaviour and an element type (COQ3, DKT on TRI3 and COQ4 on QUA4 are thin shells, DST on TRI3 a shell with transverse shear, in TRID; COQ2 on SEG2 the thin shell of AXIS and the plane modes; ICT3, ICQ4, ICT6, ICQ8 (ICT4, ICC8, ICP6 in TRID) the incompressible massive elements, with a pressure condensed per element). MODE GEO 'CHARGEMENT' 'PRESSION' ('CONS' name) makes a pressure model for PRES and BSIG, on lines (SEG2, SEG3) in 2D or surfaces (TRI3, QUA4, TRI6, QUA8) in TRID. 'CONTACT' on the elements of IMPO 'MAIL' makes a contact model for PASAPAS.", example: "mo = mode l mecanique elastique pout ;", f: mode },
     OpDef { name: "MATE", signature: "MATE MMODEL 'YOUN' E 'NU' nu ('RHO' r) ('ALPH' a ('TREF' t)) (SECT INRY INRZ TORS SECY SECZ EPAI EXCE DIM3 …); a value may be an EVOLUTIO of a parameter | MATE MMODEL_CONTACT ('JEU' j|MCHAML) ('ADHE' a|MCHAML)", doc: "Material (and section) data of a model. A property given as an EVOLUTIO depends on the parameter its abscissa names (VARI 'NUAG' evaluates it against a field). For a contact model, the distance the bodies keep ('JEU') and the tension the contact holds before it opens ('ADHE', per unit length or area).", example: "ma = mate mo youn 2.e11 nu 0.3 ;", f: mate },
     OpDef { name: "CARA", signature: "CARA MMODEL ('SECT' s) ('INRY' i) ('INRZ' i) ('TORS' j) ('SECY' a) ('SECZ' a) ('EPAI' e) ('DIM3' e) ('VECT' P)", doc: "Geometric characteristics of a model (merge with MATE using ET).", example: "ca = cara mo sect 1. inrz 1. ;", f: cara },
     OpDef { name: "RIGI", signature: "RIGI MMODEL MCHAML (MCHAML) | RIGI ('DEPL') ('ROTA') (comps) VALUE GEO", doc: "Stiffness of a model, or springs to ground.", example: "k = rigi mo ma ;", f: rigi },
@@ -22,9 +22,9 @@ pub(crate) const OPS: &[OpDef] = &[
 ];
 
 const FORMS: &[&str] = &[
-    "BARR", "POUT", "TIMO", "Q4RI", "Q8RI", "COQ3", "DKT", "COQ4", "COQ2", "TRI3", "TRI6", "QUA4", "QUA8", "CUB8",
-    "TET4", "PRI6", "CU20", "PR15", "SEG2", "JOI2", "JOI3", "JOI4", "ICT3", "ICQ4", "ICT6", "ICQ8", "ICT4", "ICC8",
-    "ICP6",
+    "BARR", "POUT", "TIMO", "Q4RI", "Q8RI", "COQ3", "DKT", "DST", "COQ4", "COQ2", "TRI3", "TRI6", "QUA4", "QUA8",
+    "CUB8", "TET4", "PRI6", "CU20", "PR15", "SEG2", "JOI2", "JOI3", "JOI4", "ICT3", "ICQ4", "ICT6", "ICQ8", "ICT4",
+    "ICC8", "ICP6",
 ];
 
 const BEHAVIOURS: &[&str] = &["ELASTIQUE", "ISOTROPE", "EPSILON"];
@@ -328,7 +328,7 @@ pub(crate) fn material_for(zone: &ModelZone, fields: &[Rc<Mchaml>]) -> Material 
 /// The mesh geometry a shell element needs (None for other elements).
 fn shell_geometry(element: &str) -> Option<ElemType> {
     match element {
-        "COQ3" | "DKT" => Some(ElemType::Tri3),
+        "COQ3" | "DKT" | "DST" => Some(ElemType::Tri3),
         "COQ4" => Some(ElemType::Qua4),
         "COQ2" => Some(ElemType::Seg2),
         _ => None,
@@ -339,6 +339,7 @@ pub(crate) fn formulation(zone: &ModelZone) -> Formulation {
     match zone.element.as_str() {
         "COQ3" => Formulation::Coq3,
         "DKT" => Formulation::Dkt,
+        "DST" => Formulation::Dst,
         "COQ4" => Formulation::Coq4,
         "COQ2" => Formulation::Coq2,
         "BARR" => Formulation::Barr,
