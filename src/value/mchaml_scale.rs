@@ -18,7 +18,7 @@ pub fn scale(a: &Mchaml, b: &Mchaml, f: impl Fn(f64, f64) -> f64) -> Option<Mcha
             return None;
         }
         *z = if q.comps.len() == 1 {
-            apply(p, q, |x, s| f(x, s))
+            apply(p, q, &f)
         } else if p.comps.len() == 1 {
             apply(q, p, |x, s| f(s, x))
         } else {
