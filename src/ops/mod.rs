@@ -79,6 +79,7 @@ mod principal;
 mod products;
 mod projection;
 mod rela_mili;
+mod replace;
 mod reso;
 mod restrict;
 mod special;
@@ -122,6 +123,7 @@ impl Registry {
             zero::OPS,
             extract::OPS,
             insert::OPS,
+            replace::OPS,
             vsur::OPS,
             objects::OPS,
             io::OPS,
