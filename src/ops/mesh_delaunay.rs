@@ -103,9 +103,11 @@ fn tria(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 fn in_plane(x: &[[f64; 3]]) -> Option<Vec<[f64; 2]>> {
     let sub = |a: [f64; 3], b: [f64; 3]| [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
     let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-    let cross = |a: [f64; 3], b: [f64; 3]| [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+    let cross =
+        |a: [f64; 3], b: [f64; 3]| [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
     let p0 = *x.first()?;
-    let far = x.iter().copied().max_by(|a, b| dot(sub(*a, p0), sub(*a, p0)).total_cmp(&dot(sub(*b, p0), sub(*b, p0))))?;
+    let far =
+        x.iter().copied().max_by(|a, b| dot(sub(*a, p0), sub(*a, p0)).total_cmp(&dot(sub(*b, p0), sub(*b, p0))))?;
     let d = sub(far, p0);
     let size = dot(d, d).sqrt();
     if size == 0.0 {

@@ -105,9 +105,7 @@ pub fn separated(mesh: &Mesh, nodes: &Nodes, rules: &[Separator]) -> Vec<Mesh> {
     let sep_sets: Vec<Vec<HashSet<usize>>> = rules
         .iter()
         .map(|r| match r {
-            Separator::Mesh(m) => {
-                m.parts.iter().flat_map(|p| p.elems().map(|e| e.iter().copied().collect())).collect()
-            }
+            Separator::Mesh(m) => m.parts.iter().flat_map(|p| p.elems().map(|e| e.iter().copied().collect())).collect(),
             _ => Vec::new(),
         })
         .collect();
