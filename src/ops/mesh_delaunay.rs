@@ -54,9 +54,13 @@ fn tria(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 let pts: Vec<[f64; 2]> = coords.iter().map(|c| [c[0], c[1]]).collect();
                 mg::delaunay::points_2d("TRIA", &pts)?.iter().flat_map(|t| t.map(|k| ids[k])).collect()
             }
-            _ => return Err(a.err(
-                "the Delaunay tetrahedrisation of points in 3D is not available: gibi triangulates points in 1D and 2D",
-            )),
+            // Points of one plane in 3D are triangulated in that plane.
+            _ => match in_plane(&coords) {
+                Some(pts) => mg::delaunay::points_2d("TRIA", &pts)?.iter().flat_map(|t| t.map(|k| ids[k])).collect(),
+                None => return Err(a.err(
+                    "the Delaunay tetrahedrisation of points in 3D is not available: gibi triangulates points in 1D and 2D, and points of one plane in 3D",
+                )),
+            },
         };
         let ty = if dim == 1 { ElemType::Seg2 } else { ElemType::Tri3 };
         return Ok(vec![Value::Mesh(Rc::new(Mesh::single(Part::with(ty, conn))))]);
@@ -90,4 +94,39 @@ fn tria(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     }
     let conn: Vec<usize> = tris.iter().flat_map(|t| t.map(|k| ids[k])).collect();
     Ok(vec![Value::Mesh(Rc::new(Mesh::single(Part::with(ElemType::Tri3, conn))))])
+}
+
+/// The points' coordinates in their common plane (axes: the direction to
+/// the farthest point, then the normal, oriented to its largest component
+/// being positive, crossed with it), or None if they span a volume or lie
+/// on one line.
+fn in_plane(x: &[[f64; 3]]) -> Option<Vec<[f64; 2]>> {
+    let sub = |a: [f64; 3], b: [f64; 3]| [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+    let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    let cross =
+        |a: [f64; 3], b: [f64; 3]| [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+    let p0 = *x.first()?;
+    let far =
+        x.iter().copied().max_by(|a, b| dot(sub(*a, p0), sub(*a, p0)).total_cmp(&dot(sub(*b, p0), sub(*b, p0))))?;
+    let d = sub(far, p0);
+    let size = dot(d, d).sqrt();
+    if size == 0.0 {
+        return None;
+    }
+    let u = d.map(|c| c / size);
+    let n = x.iter().map(|p| cross(u, sub(*p, p0))).max_by(|a, b| dot(*a, *a).total_cmp(&dot(*b, *b)))?;
+    let len = dot(n, n).sqrt();
+    if len <= 1e-9 * size {
+        return None;
+    }
+    let mut n = n.map(|c| c / len);
+    let big = (0..3).max_by(|&i, &j| n[i].abs().total_cmp(&n[j].abs())).unwrap_or(2);
+    if n[big] < 0.0 {
+        n = n.map(|c| -c);
+    }
+    if x.iter().any(|p| dot(n, sub(*p, p0)).abs() > 1e-9 * size) {
+        return None;
+    }
+    let v = cross(n, u);
+    Some(x.iter().map(|p| [dot(sub(*p, p0), u), dot(sub(*p, p0), v)]).collect())
 }

@@ -7,6 +7,7 @@ use crate::error::Result;
 use crate::eval::Interp;
 use crate::fem::mesh::Mesh;
 use crate::fem::meshing::partition;
+use crate::fem::meshing::partition_more::{self, Separator};
 use crate::value::{Key, Table, Value};
 use std::cell::RefCell;
 use std::rc::Rc;
@@ -14,8 +15,8 @@ use std::rc::Rc;
 pub(crate) const OPS: &[OpDef] = &[
     OpDef {
         name: "PART",
-        signature: "PART ('NESC') 'ARLE' n MESH | PART ('NESC') 'CONN' MESH",
-        doc: "Partition of a mesh in a TABLE of meshes indexed 1..n: 'ARLE' deals the elements in turn to n zones (Arlequin pattern), 'CONN' gives the connected components.",
+        signature: "PART ('NESC') 'ARLE' MESH n | 'CONN' MESH | 'OPTI' MESH (n) | 'SEPA' MESH rule.. with rule 'LIGN' | 'FACE' | 'MAIL' SEP | 'ANGL' (deg) ('TELQ')",
+        doc: "Partition of a mesh in a TABLE of meshes indexed 1..n: 'ARLE' deals the elements in turn to n zones (Arlequin pattern), 'CONN' gives the connected components, 'OPTI' n balanced zones (n a power of two, 1 by default) by recursive bisection, 'SEPA' the zones of elements joined through faces not cut by a rule: junctions of more than two elements ('LIGN', 'FACE'), faces inside an element of SEP ('MAIL'), or normals/tangents making an angle of deg degrees or more (20 by default; up to their sign unless 'TELQ').",
         example: "t = part 'ARLE' 2 ((0. 0.) droi 4 (1. 0.)) ;",
         f: part,
     },
@@ -28,11 +29,11 @@ pub(crate) const OPS: &[OpDef] = &[
     },
 ];
 
-fn part(_it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+fn part(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     // Without 'NESC' Cast3M marks the table as a slave partition; gibi has
     // no assistants, so the mark makes no difference.
     let nesc = a.keyword(&["NESC"]).is_some();
-    let how = a.req_keyword(&["ARLE", "CONN"])?;
+    let how = a.req_keyword(&["ARLE", "CONN", "SEPA", "OPTI"])?;
     a.keyword(&["NESC"]);
     let zones = match how {
         "ARLE" => {
@@ -43,6 +44,17 @@ fn part(_it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             let mesh = a.req::<Rc<Mesh>>()?;
             partition::arlequin(&mesh, n as usize)
         }
+        "SEPA" => separated(it, a)?,
+        "OPTI" => {
+            let mesh = a.req::<Rc<Mesh>>()?;
+            // Cast3M's default is the power of two above its number of
+            // assistants; gibi runs none, hence one zone.
+            let n = a.opt::<i64>().unwrap_or(1);
+            if n < 1 || (n & (n - 1)) != 0 {
+                return Err(a.err(format!("the number of zones must be a positive power of 2 (got {n})")));
+            }
+            partition_more::bisected(&mesh, &it.nodes, n as usize)
+        }
         _ => partition::connected(&*a.req::<Rc<Mesh>>()?),
     };
     let mut t = if nesc { Table::new() } else { Table::with_subtype("ESCLAVE") };
@@ -50,6 +62,30 @@ fn part(_it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         t.set(Key::Int(k as i64 + 1), Value::Mesh(Rc::new(z)));
     }
     Ok(vec![Value::Table(Rc::new(RefCell::new(t)))])
+}
+
+/// 'SEPA' MESH rule..: the rules are read until none follows.
+fn separated(it: &mut Interp, a: &mut Args) -> Result<Vec<Mesh>> {
+    let mesh = a.req::<Rc<Mesh>>()?;
+    let mut rules = Vec::new();
+    while let Some(k) = a.keyword(&["LIGN", "FACE", "MAIL", "ANGL"]) {
+        rules.push(match k {
+            "MAIL" => Separator::Mesh((*a.req::<Rc<Mesh>>()?).clone()),
+            "ANGL" => {
+                let degrees = a.opt_num().unwrap_or(20.0);
+                if !(0.0..=180.0).contains(&degrees) {
+                    return Err(a.err(format!("the angle must lie in 0..180 degrees (got {degrees})")));
+                }
+                let oriented = a.keyword(&["TELQ"]).is_some();
+                Separator::Angle { degrees, oriented }
+            }
+            _ => Separator::Junction,
+        });
+    }
+    if rules.is_empty() {
+        return Err(a.missing("one of LIGN FACE MAIL ANGL"));
+    }
+    Ok(partition_more::separated(&mesh, &it.nodes, &rules))
 }
 
 fn etg(_it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {

@@ -40,6 +40,7 @@ pub mod orient;
 pub mod orient_to;
 pub mod pairing;
 pub mod partition;
+pub mod partition_more;
 pub mod polyline;
 pub mod query;
 pub mod regenerate;
