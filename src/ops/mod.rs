@@ -12,6 +12,7 @@ mod catalogue_tests;
 mod chan_cham;
 mod chan_comp;
 mod chan_support;
+mod nomc_mchaml;
 mod chargement;
 mod chargement_extr;
 mod chpo_rigi;
