@@ -3,11 +3,11 @@
 //! element holding each point (proi.notice); the computing is in
 //! `value::projection`.
 
+use super::model::formulation;
 use super::{Args, OpDef};
 use crate::error::Result;
 use crate::eval::Interp;
 use crate::fem::mesh::Mesh;
-use super::model::formulation;
 use crate::value::projection::{self, Onto};
 use crate::value::{Mchaml, Model, Value};
 use std::rc::Rc;

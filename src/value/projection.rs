@@ -3,8 +3,8 @@
 //! (proi.notice).
 
 use super::model::{Mchaml, MchamlZone, Model, ModelZone};
-use crate::fem::element::{gauss_positions, Formulation};
 use super::{Chpoint, Nature};
+use crate::fem::element::{gauss_positions, Formulation};
 use crate::fem::locate::locate;
 use crate::fem::mesh::{ElemType, Mesh, Nodes};
 use crate::fem::shape;
