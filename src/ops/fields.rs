@@ -35,7 +35,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef {
         name: "NOMC",
         signature:
-            "NOMC NEWNAME CHPOINT | NOMC LISTMOTS_OLD LISTMOTS_NEW CHPOINT ('NATU' 'INDETER'|'DIFFUS'|'DISCRET')",
+            "NOMC NEWNAME CHPOINT|MCHAML | NOMC LISTMOTS_OLD LISTMOTS_NEW CHPOINT|MCHAML ('NATU' 'INDETER'|'DIFFUS'|'DISCRET')",
         doc: "Rename components (and set the field's nature after 'NATU').",
         example: "c = nomc 'UX' (coor 1 l) ;",
         f: nomc,
@@ -224,6 +224,9 @@ fn exco(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 fn nomc(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    if let Some(m) = a.opt::<Rc<Mchaml>>() {
+        return super::nomc_mchaml::nomc(a, &m);
+    }
     let ch = a.req_find::<Rc<Chpoint>>()?;
     let first = comp_list(a).ok_or_else(|| a.missing("new component names"))?;
     // A second list is read before 'NATU' (which may come after it).

@@ -59,6 +59,7 @@ mod mesh_select;
 mod model;
 mod nodal_field;
 mod noise;
+mod nomc_mchaml;
 mod nuage;
 mod objects;
 mod opti;

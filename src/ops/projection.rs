@@ -3,17 +3,19 @@
 //! element holding each point (proi.notice); the computing is in
 //! `value::projection`.
 
+use super::model::formulation;
 use super::{Args, OpDef};
 use crate::error::Result;
 use crate::eval::Interp;
 use crate::fem::mesh::Mesh;
-use crate::value::{projection, Mchaml, Model, Value};
+use crate::value::projection::{self, Onto};
+use crate::value::{Mchaml, Model, Value};
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[OpDef {
     name: "PROI",
-    signature: "PROI GEO2 MCHAML | PROI MMODEL MCHAML ('NOEUD' | 'GRAVITE')",
-    doc: "Project an element field given at the nodes of its elements (a field by element, constant in each, is taken as such) onto the nodes of a mesh (a diffuse CHPOINT) or onto the nodes or centres of the elements of a model (an MCHAML), interpolating in the element that holds each point.",
+    signature: "PROI GEO2 MCHAML | PROI MMODEL MCHAML ('NOEUD' | 'GRAVITE' | 'RIGIDITE' | 'MASSE' | 'STRESSES')",
+    doc: "Project an element field given at the nodes of its elements (a field by element, constant in each, is taken as such) onto the nodes of a mesh (a diffuse CHPOINT) or onto the nodes, centres or integration points of the elements of a model (an MCHAML), interpolating in the element that holds each point.",
     example: "opti dime 2 elem qua4 ; s = (droi 1 (0. 0.) (1. 0.)) tran 1 (0. 1.) ; mo = mode s mecanique elastique ; ch = manu 'CHML' mo 'T' 1. 'NOEUD' ; c = proi (0.5 0.5) ch ;",
     f: proi,
 }];
@@ -21,17 +23,12 @@ pub(crate) const OPS: &[OpDef] = &[OpDef {
 fn proi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     if let Some(model) = a.opt::<Rc<Model>>() {
         let field = a.req::<Rc<Mchaml>>()?;
-        let centre = match a.keyword(&["NOEUD", "GRAVITE", "RIGIDITE", "MASSE", "STRESSES"]) {
-            None | Some("NOEUD") => false,
-            Some("GRAVITE") => true,
-            Some(w) => {
-                return Err(a.err(format!(
-                    "projects onto the nodes ('NOEUD') or centres ('GRAVITE'), not onto the '{}' points",
-                    w
-                )))
-            }
+        let onto = match a.keyword(&["NOEUD", "GRAVITE", "RIGIDITE", "MASSE", "STRESSES"]) {
+            None | Some("NOEUD") => Onto::Nodes,
+            Some("GRAVITE") => Onto::Centres,
+            Some(_) => Onto::Gauss(&formulation),
         };
-        let out = projection::onto_model(&field, &model, centre, &it.nodes).map_err(|m| a.err(m))?;
+        let out = projection::onto_model(&field, &model, onto, &it.nodes).map_err(|m| a.err(m))?;
         return Ok(vec![Value::Mchaml(Rc::new(out))]);
     }
     let geo = match a.opt_with(|v| match v {

@@ -2,8 +2,9 @@
 //! the element that contains each point with its shape functions
 //! (proi.notice).
 
-use super::model::{Mchaml, MchamlZone, Model};
+use super::model::{Mchaml, MchamlZone, Model, ModelZone};
 use super::{Chpoint, Nature};
+use crate::fem::element::{gauss_positions, Formulation};
 use crate::fem::locate::locate;
 use crate::fem::mesh::{ElemType, Mesh, Nodes};
 use crate::fem::shape;
@@ -141,9 +142,21 @@ fn not_found(i: usize, n: usize, nodes: &Nodes) -> String {
     format!("point {} ({} {} {}) lies in no element of the field", i + 1, x[0], x[1], x[2])
 }
 
-/// `PROI MOD CHEL ('NOEUD' | 'GRAVITE')`: an element field on the model,
-/// with the values at each element's nodes, or at its centre.
-pub fn onto_model(field: &Mchaml, model: &Model, centre: bool, nodes: &Nodes) -> Result<Mchaml, String> {
+/// The points of a model's elements that PROI projects onto.
+pub enum Onto<'a> {
+    /// The element's nodes ('NOEUD', the default).
+    Nodes,
+    /// The element's centre ('GRAVITE').
+    Centres,
+    /// The integration points ('RIGIDITE', 'MASSE', 'STRESSES': gibi
+    /// integrates and outputs at one set), whose rule depends on the
+    /// zone's formulation.
+    Gauss(&'a dyn Fn(&ModelZone) -> Formulation),
+}
+
+/// `PROI MOD CHEL (MOT)`: an element field on the model, with the values
+/// at each element's nodes, its centre, or its integration points.
+pub fn onto_model(field: &Mchaml, model: &Model, onto: Onto, nodes: &Nodes) -> Result<Mchaml, String> {
     let loc = Locator::new(field, nodes);
     let mut out = Mchaml { subtype: field.subtype.clone(), zones: Vec::new() };
     for mz in &model.zones {
@@ -151,12 +164,16 @@ pub fn onto_model(field: &Mchaml, model: &Model, centre: bool, nodes: &Nodes) ->
             let mut z = MchamlZone {
                 mesh: Mesh::single(p.clone()),
                 element: mz.element.clone(),
-                at_nodes: !centre,
+                at_nodes: matches!(onto, Onto::Nodes),
                 ..Default::default()
             };
             for conn in p.elems() {
                 let xs: Vec<[f64; 3]> = conn.iter().map(|&n| nodes.get(n)).collect();
-                let points = if centre { vec![centre_of(p.ty, &xs)] } else { xs };
+                let points = match &onto {
+                    Onto::Nodes => xs,
+                    Onto::Centres => vec![centre_of(p.ty, &xs)],
+                    Onto::Gauss(form) => gauss_positions(form(mz), p.ty, &xs),
+                };
                 let mut elem = Vec::new();
                 for (k, x) in points.into_iter().enumerate() {
                     let (names, vals) =
