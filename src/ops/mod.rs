@@ -81,6 +81,7 @@ mod projection;
 mod rela_mili;
 mod reso;
 mod restrict;
+mod simplex;
 mod special;
 mod superele;
 mod symmetry;
@@ -117,6 +118,7 @@ impl Registry {
             noise::OPS,
             fourier::OPS,
             fit::OPS,
+            simplex::OPS,
             lists_search::OPS,
             empty::OPS,
             zero::OPS,
