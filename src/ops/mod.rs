@@ -76,6 +76,7 @@ mod pres_model;
 mod pres_shell;
 mod prim;
 mod principal;
+mod prob;
 mod products;
 mod projection;
 mod rela_mili;
@@ -119,6 +120,7 @@ impl Registry {
             fourier::OPS,
             fit::OPS,
             simplex::OPS,
+            prob::OPS,
             lists_search::OPS,
             empty::OPS,
             zero::OPS,
