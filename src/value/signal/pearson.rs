@@ -17,7 +17,7 @@ const NEGLIGIBLE: f64 = -80.0;
 /// P(X ≤ t) for the law of mean `mu`, standard deviation `sigma`,
 /// skewness `skew` and kurtosis `kurt`.
 pub fn cdf(mu: f64, sigma: f64, skew: f64, kurt: f64, t: f64) -> Result<f64, String> {
-    if !(sigma > 0.0) {
+    if sigma.is_nan() || sigma <= 0.0 {
         return Err(format!("the standard deviation must be positive, found {}", sigma));
     }
     if kurt <= skew * skew + 1.0 {
