@@ -77,12 +77,14 @@ mod pres_model;
 mod pres_shell;
 mod prim;
 mod principal;
+mod prob;
 mod products;
 mod projection;
 mod rela_mili;
 mod replace;
 mod reso;
 mod restrict;
+mod simplex;
 mod special;
 mod superele;
 mod symmetry;
@@ -119,6 +121,8 @@ impl Registry {
             noise::OPS,
             fourier::OPS,
             fit::OPS,
+            simplex::OPS,
+            prob::OPS,
             lists_search::OPS,
             empty::OPS,
             zero::OPS,

@@ -7,3 +7,4 @@ pub mod complex;
 pub mod fit;
 pub mod fourier;
 pub mod noise;
+pub mod pearson;
