@@ -91,6 +91,7 @@ mod symmetry;
 mod tables;
 mod temps;
 mod thermo;
+mod thermo_field;
 mod transform;
 mod union;
 mod variable;

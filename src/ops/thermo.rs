@@ -9,6 +9,7 @@
 
 use super::model::{formulation, material_for, zone_mode};
 use super::post::{model_args, to_gauss, zone_of};
+use super::thermo_field::ElementTemps;
 use super::{Args, OpDef};
 use crate::error::{Error, Result};
 use crate::eval::Interp;
@@ -20,9 +21,9 @@ use crate::value::{Chpoint, Mchaml, Model, Value};
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
-    OpDef { name: "EPTH", signature: "EPTH MMODEL MCHAML CHPOINT_T", doc: "Thermal strains α(T − TREF) at the element points, from a temperature CHPOINT (component T) and the material's ALPH (TREF 0 by default). EPZZ = αΔT in the plane modes; bars and beams: EPSS of the element's mean temperature.", example: "ept = epth mo ma t ;", f: epth },
+    OpDef { name: "EPTH", signature: "EPTH MMODEL MCHAML (CHPOINT_T | MCHAML_T)", doc: "Thermal strains α(T − TREF) at the element points, from a temperature CHPOINT (component T) and the material's ALPH (TREF 0 by default). EPZZ = αΔT in the plane modes; bars and beams: EPSS of the element's mean temperature.", example: "ept = epth mo ma t ;", f: epth },
     OpDef { name: "ELAS", signature: "ELAS MMODEL MCHAML MCHAML_STRAIN|MCHAML_STRESS", doc: "Hooke's law on a strain field: the stresses (SMXX …, or EFFX … for bars and beams) of strains such as those of EPSI or EPTH; on a stress field of massive elements, the strains (EPXX …).", example: "sth = elas mo ma (epth mo ma t) ;", f: elas },
-    OpDef { name: "THET", signature: "THET MMODEL MCHAML CHPOINT_T", doc: "Stresses of the thermal strains of a temperature CHPOINT (component T): ELAS mo ma (EPTH mo ma t) in one step.", example: "sth = thet mo ma t ;", f: thet },
+    OpDef { name: "THET", signature: "THET MMODEL MCHAML (CHPOINT_T | MCHAML_T)", doc: "Stresses of the thermal strains of a temperature CHPOINT (component T): ELAS mo ma (EPTH mo ma t) in one step.", example: "sth = thet mo ma t ;", f: thet },
     OpDef { name: "ENER", signature: "ENER (MMODEL) MCHAML_STRESS MCHAML_STRAIN", doc: "Strain energy density ½ σ:ε (component ENER; per unit length for bars and beams); INTG of it is the strain energy.", example: "w = intg mo (ener mo sig eps) ;", f: ener },
     OpDef { name: "INVA", signature: "INVA MMODEL MCHAML_STRESS", doc: "Stress invariants of massive elements: I1 = tr σ, J2 = ½ s:s and J3 = det s of the deviator s (σzz, σθθ included); √(3 J2) is the von Mises stress.", example: "inv = inva mo sig ;", f: inva },
     OpDef { name: "TRES", signature: "TRES MMODEL MCHAML_STRESS (MCHAML)", doc: "Tresca equivalent stress σ1 − σ3 (component TRES) of massive elements, the out-of-plane stress included.", example: "tr = tres mo sig ;", f: tres },
@@ -41,26 +42,43 @@ fn put(z: &mut MchamlZone, g: GaussField) {
 
 fn epth(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let (model, fields, t) = model_args(a)?;
-    let t = t.ok_or_else(|| a.missing("CHPOINT (the temperatures, component T)"))?;
-    Ok(vec![Value::Mchaml(Rc::new(thermal_strains(a, &model, &fields, &t)?))])
+    let temps = temperatures(a, &fields, t)?;
+    Ok(vec![Value::Mchaml(Rc::new(thermal_strains(a, &model, &fields, &temps)?))])
+}
+
+/// Where the temperatures come from: a CHPOINT (component T), or an element
+/// field among the MCHAMLs that holds T (the others stay material fields).
+enum Temps {
+    Nodes(Rc<Chpoint>),
+    Elements(ElementTemps),
+}
+
+fn temperatures(a: &Args, fields: &[Rc<Mchaml>], t: Option<Rc<Chpoint>>) -> Result<Temps> {
+    if let Some(t) = t {
+        let have = t.components();
+        if !have.iter().any(|c| c == "T") {
+            return Err(a.err(format!(
+                "the temperature CHPOINT needs the component T, it has {} (rename it with NOMC 'T')",
+                if have.is_empty() { "none".to_string() } else { have.join(" ") }
+            )));
+        }
+        return Ok(Temps::Nodes(t));
+    }
+    match ElementTemps::find(fields) {
+        Some((_, e)) => Ok(Temps::Elements(e)),
+        None => Err(a.missing("CHPOINT or MCHAML (the temperatures, component T)")),
+    }
 }
 
 /// THET: the stresses of the thermal strains, ELAS of EPTH in one step.
 fn thet(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let (model, fields, t) = model_args(a)?;
-    let t = t.ok_or_else(|| a.missing("CHPOINT (the temperatures, component T)"))?;
-    let eps = thermal_strains(a, &model, &fields, &t)?;
+    let temps = temperatures(a, &fields, t)?;
+    let eps = thermal_strains(a, &model, &fields, &temps)?;
     Ok(vec![Value::Mchaml(Rc::new(hooke_field(a, &model, &fields, &eps)?))])
 }
 
-fn thermal_strains(a: &Args, model: &Model, fields: &[Rc<Mchaml>], t: &Chpoint) -> Result<Mchaml> {
-    let have = t.components();
-    if !have.iter().any(|c| c == "T") {
-        return Err(a.err(format!(
-            "the temperature CHPOINT needs the component T, it has {} (rename it with NOMC 'T')",
-            if have.is_empty() { "none".to_string() } else { have.join(" ") }
-        )));
-    }
+fn thermal_strains(a: &Args, model: &Model, fields: &[Rc<Mchaml>], t: &Temps) -> Result<Mchaml> {
     let mut out = Mchaml { subtype: "DEFORMATIONS".into(), zones: vec![] };
     for zone in &model.zones {
         let (form, mode) = (formulation(zone), zone_mode(zone)?);
@@ -69,10 +87,15 @@ fn thermal_strains(a: &Args, model: &Model, fields: &[Rc<Mchaml>], t: &Chpoint) 
             let mut z =
                 MchamlZone { mesh: Mesh::single(part.clone()), element: zone.element.clone(), ..Default::default() };
             for (e, nodes) in part.elems().enumerate() {
-                let temps = nodes
-                    .iter()
-                    .map(|n| t.get(*n, "T").ok_or_else(|| a.err(format!("node {} has no temperature T", n + 1))))
-                    .collect::<Result<Vec<f64>>>()?;
+                let temps = match t {
+                    Temps::Nodes(t) => nodes
+                        .iter()
+                        .map(|n| t.get(*n, "T").ok_or_else(|| a.err(format!("node {} has no temperature T", n + 1))))
+                        .collect::<Result<Vec<f64>>>()?,
+                    Temps::Elements(t) => t.at(nodes).ok_or_else(|| {
+                        a.err(format!("element {} of the model has no temperature T in the field", e + 1))
+                    })?,
+                };
                 let g = constitutive::thermal_strain(form, part.ty, mode, &mat, &temps)
                     .map_err(|err| fem_err(a, e, err))?;
                 put(&mut z, g);
