@@ -14,6 +14,9 @@ fn points(z: &MchamlZone) -> Vec<usize> {
 
 type Key = (crate::fem::mesh::ElemType, Vec<usize>);
 
+/// Element key -> (zone, element in the zone).
+type ElementIndex = std::collections::HashMap<Key, (usize, usize)>;
+
 fn key(ty: crate::fem::mesh::ElemType, e: &[usize]) -> Key {
     let mut k = e.to_vec();
     k.sort_unstable();
@@ -21,12 +24,12 @@ fn key(ty: crate::fem::mesh::ElemType, e: &[usize]) -> Key {
 }
 
 impl Mchaml {
-    /// This field's point values laid out on the zones of `target`, element
-    /// by element (the same elements cut into other zones, or in another
-    /// order), when every element of `target` has values here under one
-    /// set of components per target zone.
-    pub fn realign(&self, target: &Mchaml) -> Option<Mchaml> {
-        let mut at: std::collections::HashMap<Key, (usize, usize)> = std::collections::HashMap::new();
+    /// Where each element's values sit: (zone, element in the zone), keyed
+    /// by type and sorted nodes, with the number of elements; None when a
+    /// zone holds no point values.
+    fn element_index(&self) -> Option<(ElementIndex, usize)> {
+        let mut at = std::collections::HashMap::new();
+        let mut total = 0;
         for (zi, z) in self.zones.iter().enumerate() {
             if z.values.is_empty() {
                 return None;
@@ -38,7 +41,17 @@ impl Mchaml {
                     e += 1;
                 }
             }
+            total += e;
         }
+        Some((at, total))
+    }
+
+    /// This field's point values laid out on the zones of `target`, element
+    /// by element (the same elements cut into other zones, or in another
+    /// order), when every element of `target` has values here under one
+    /// set of components per target zone.
+    pub fn realign(&self, target: &Mchaml) -> Option<Mchaml> {
+        let (at, _) = self.element_index()?;
         let mut out = Mchaml { subtype: self.subtype.clone(), zones: Vec::new() };
         for t in &target.zones {
             if t.values.is_empty() {
@@ -77,21 +90,7 @@ impl Mchaml {
     /// of a field on every element and one on some of them (the elements
     /// still active in a topology optimisation) adds element by element.
     pub fn embed_in(&self, target: &Mchaml) -> Option<Mchaml> {
-        let mut at: std::collections::HashMap<Key, (usize, usize)> = std::collections::HashMap::new();
-        let mut total = 0;
-        for (zi, z) in self.zones.iter().enumerate() {
-            if z.values.is_empty() {
-                return None;
-            }
-            let mut e = 0;
-            for p in &z.mesh.parts {
-                for el in p.elems() {
-                    at.entry(key(p.ty, el)).or_insert((zi, e));
-                    e += 1;
-                }
-            }
-            total += e;
-        }
+        let (at, total) = self.element_index()?;
         let mut found = 0;
         let mut out = Mchaml { subtype: self.subtype.clone(), zones: Vec::new() };
         for t in &target.zones {

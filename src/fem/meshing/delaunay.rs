@@ -12,7 +12,7 @@
 //!   rule, inner loops are holes), with no node added: TRIA's "minimal
 //!   number of nodes".
 
-use super::free::{inside_faces, load};
+use super::free::{inside_triangles, load};
 use super::{fail, MeshError};
 use spade::{DelaunayTriangulation, Point2, Triangulation};
 
@@ -78,15 +78,7 @@ pub fn region_2d(op: &'static str, pts: &[[f64; 2]], edges: &[[usize; 2]]) -> Re
         return fail(op, "a point has a coordinate that is not a finite number");
     }
     let cdt = load(op, pts, edges)?;
-    let inside = inside_faces(&cdt);
-    let tris: Vec<[usize; 3]> = cdt
-        .inner_faces()
-        .filter(|f| inside[f.fix().index()])
-        .map(|f| {
-            let v = f.vertices();
-            [v[0].fix().index(), v[1].fix().index(), v[2].fix().index()]
-        })
-        .collect();
+    let tris = inside_triangles(&cdt);
     if tris.is_empty() {
         return fail(op, "the lines enclose no region (TRIA fills closed contours)");
     }

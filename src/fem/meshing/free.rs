@@ -76,15 +76,7 @@ pub fn triangulate(
         cdt = load(op, &points, &edges)?;
     }
     let points: Vec<[f64; 2]> = cdt.vertices().map(|v| [v.position().x, v.position().y]).collect();
-    let inside = inside_faces(&cdt);
-    let triangles = cdt
-        .inner_faces()
-        .filter(|f| inside[f.fix().index()])
-        .map(|f| {
-            let v = f.vertices();
-            [v[0].fix().index(), v[1].fix().index(), v[2].fix().index()]
-        })
-        .collect();
+    let triangles = inside_triangles(&cdt);
     let sizes = points.iter().map(|p| size.at(Point2::new(p[0], p[1]))).collect();
     Ok(Planar { points, sizes, triangles })
 }
@@ -101,6 +93,18 @@ pub(crate) fn load(op: &'static str, points: &[[f64; 2]], edges: &[[usize; 2]]) 
         return fail(op, "the contour crosses itself");
     }
     Ok(cdt)
+}
+
+/// The triangles inside the region, as vertex indices of the triangulation.
+pub(crate) fn inside_triangles(cdt: &Cdt) -> Vec<[usize; 3]> {
+    let inside = inside_faces(cdt);
+    cdt.inner_faces()
+        .filter(|f| inside[f.fix().index()])
+        .map(|f| {
+            let v = f.vertices();
+            [v[0].fix().index(), v[1].fix().index(), v[2].fix().index()]
+        })
+        .collect()
 }
 
 /// Which faces (by index) are inside the region: faces reached from the

@@ -8,6 +8,7 @@
 //!
 //! Inside a zone, elements keep their order and their type's part.
 
+use super::partition_more::{elements, root, zones};
 use crate::fem::mesh::{Mesh, Part};
 
 /// Split `mesh` into `n >= 1` zones, element `k` to zone `k mod n`.
@@ -33,18 +34,10 @@ pub fn arlequin(mesh: &Mesh, n: usize) -> Vec<Mesh> {
 
 /// The connected components of `mesh` (elements joined by shared nodes).
 pub fn connected(mesh: &Mesh) -> Vec<Mesh> {
-    let elems: Vec<(usize, &[usize])> =
-        mesh.parts.iter().enumerate().flat_map(|(i, p)| p.elems().map(move |e| (i, e))).collect();
+    let elems = elements(mesh);
     // Union-find over elements, joined through the first element met at
     // each node.
     let mut parent: Vec<usize> = (0..elems.len()).collect();
-    fn root(parent: &mut [usize], mut x: usize) -> usize {
-        while parent[x] != x {
-            parent[x] = parent[parent[x]];
-            x = parent[x];
-        }
-        x
-    }
     let mut first_at: std::collections::HashMap<usize, usize> = std::collections::HashMap::new();
     for (k, (_, e)) in elems.iter().enumerate() {
         for &n in e.iter() {
@@ -55,25 +48,6 @@ pub fn connected(mesh: &Mesh) -> Vec<Mesh> {
             }
         }
     }
-    let mut zone_of_root: std::collections::HashMap<usize, usize> = std::collections::HashMap::new();
-    let mut zones: Vec<Vec<Vec<usize>>> = Vec::new();
-    for (k, (i, e)) in elems.iter().enumerate() {
-        let r = root(&mut parent, k);
-        let z = *zone_of_root.entry(r).or_insert_with(|| {
-            zones.push(vec![Vec::new(); mesh.parts.len()]);
-            zones.len() - 1
-        });
-        zones[z][*i].extend_from_slice(e);
-    }
-    zones
-        .into_iter()
-        .map(|pieces| Mesh {
-            parts: pieces
-                .into_iter()
-                .enumerate()
-                .filter(|(_, c)| !c.is_empty())
-                .map(|(i, conn)| Part { conn, ..mesh.parts[i].clone() })
-                .collect(),
-        })
-        .collect()
+    let label: Vec<usize> = (0..elems.len()).map(|k| root(&mut parent, k)).collect();
+    zones(mesh, &elems, &label)
 }

@@ -27,12 +27,12 @@ pub enum Separator {
 }
 
 /// Every element as (part index, nodes), in mesh order.
-fn elements(mesh: &Mesh) -> Vec<(usize, &[usize])> {
+pub(super) fn elements(mesh: &Mesh) -> Vec<(usize, &[usize])> {
     mesh.parts.iter().enumerate().flat_map(|(i, p)| p.elems().map(move |e| (i, e))).collect()
 }
 
 /// Regroup elements by zone label (labels in first-met order).
-fn zones(mesh: &Mesh, elems: &[(usize, &[usize])], label: &[usize]) -> Vec<Mesh> {
+pub(super) fn zones(mesh: &Mesh, elems: &[(usize, &[usize])], label: &[usize]) -> Vec<Mesh> {
     let mut zone_of: HashMap<usize, usize> = HashMap::new();
     let mut pieces: Vec<Vec<Vec<usize>>> = Vec::new();
     for (k, (i, e)) in elems.iter().enumerate() {
@@ -55,7 +55,7 @@ fn zones(mesh: &Mesh, elems: &[(usize, &[usize])], label: &[usize]) -> Vec<Mesh>
         .collect()
 }
 
-fn root(parent: &mut [usize], mut x: usize) -> usize {
+pub(super) fn root(parent: &mut [usize], mut x: usize) -> usize {
     while parent[x] != x {
         parent[x] = parent[parent[x]];
         x = parent[x];
