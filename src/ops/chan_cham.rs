@@ -101,6 +101,11 @@ pub(super) fn connect(it: &mut Interp, a: &mut Args) -> Result<Option<Vec<Value>
     let geo = a.req::<Rc<Mesh>>()?;
     let Some(conn) = a.opt_right::<Rc<Vec<i64>>>() else {
         if !given {
+            // `CHAN GEO 'TET4'`: the words are read from either side.
+            if matches!(a.peek_right(), Some(Value::Mot(w)) if w.trim().eq_ignore_ascii_case("TET4")) {
+                a.word();
+                return Ok(Some(vec![Value::Mesh(Rc::new(crate::fem::meshing::tetra::to_tet4(&it.nodes, &geo)?))]));
+            }
             // `CHAN GEO 'TRI3'`: a mesh first, then one of the other forms.
             a.unread(Value::Mesh(geo));
             return Ok(None);
