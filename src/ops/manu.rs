@@ -94,13 +94,13 @@ fn chml(a: &mut Args, early: Option<Rc<Mesh>>) -> Result<Vec<Value>> {
     loop {
         // TYPE unquoted is also an operator name: read as the keyword here.
         if a.keyword(&["TYPE"]).is_some() {
-            subtype = a.req::<String>()?.trim().to_uppercase();
+            subtype = subtype_word(a)?;
             continue;
         }
         let Some(w) = a.word_not_operator() else { break };
         let w = w.trim().to_uppercase();
         if super::args::keyword_matches(&w, "TYPE") {
-            subtype = a.req::<String>()?.trim().to_uppercase();
+            subtype = subtype_word(a)?;
         } else if super::args::keyword_matches(&w, "CONSTITUANT") {
             // gibi matches element fields to model zones by mesh, so the
             // constituent name is read and not kept.
@@ -198,7 +198,7 @@ fn cham(a: &mut Args) -> Result<Vec<Value>> {
     let mut at_nodes = true;
     loop {
         if a.keyword(&["TYPE"]).is_some() {
-            subtype = a.req::<String>()?.trim().to_uppercase();
+            subtype = subtype_word(a)?;
         } else if a.keyword(&["POSI"]).is_some() {
             let w = a.req_keyword(&["NOEUD", "GRAVITE", "RIGIDITE", "MASSE", "STRESSES"])?;
             at_nodes = w == "NOEUD";
@@ -434,4 +434,14 @@ fn rigi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     rig.blocks.push(block);
     let _ = it;
     Ok(vec![Value::Rigi(Rc::new(rig))])
+}
+
+/// The subtype after 'TYPE': a MOT, or a bare word that also names an
+/// operator (`TYPE RIGIDITE`), which Cast3M reads as a word there.
+fn subtype_word(a: &mut Args) -> Result<String> {
+    let w = match a.opt::<String>() {
+        Some(w) => w,
+        None => a.word().ok_or_else(|| a.missing("MOT (the subtype)"))?,
+    };
+    Ok(w.trim().to_uppercase())
 }

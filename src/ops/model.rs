@@ -59,6 +59,10 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         }
         if let Some(f) = FORMS.iter().find(|f| super::args::keyword_matches(&w, f)) {
             element = f.to_string();
+        } else if super::args::keyword_matches(&w, "CONSTITUANT") {
+            // gibi ties element fields to model zones by their mesh, so the
+            // constituent's name is read and not kept (as MANU 'CHML').
+            a.req::<String>()?;
         } else if ["ELAS", "ISOT"].iter().any(|k| w.starts_with(k)) {
             behaviour.push(w);
         } else if INELASTIC.iter().any(|k| w.starts_with(k)) || behaviour.iter().any(|b| inelastic(b)) {
@@ -221,10 +225,11 @@ fn props(it: &Interp, a: &mut Args, subtype: &str) -> Result<Vec<Value>> {
     let mut consts = std::collections::BTreeMap::new();
     let mut vecs = std::collections::BTreeMap::new();
     let mut laws = std::collections::BTreeMap::new();
-    // Contact data given element by element (MANU 'CHML' mc 'JEU' j).
+    // Properties given element by element (MANU 'CHML' mc 'JEU' j, or a
+    // YOUN field REDU'ced onto the model).
     let mut fields: Vec<(&str, Rc<Mchaml>)> = Vec::new();
     while let Some(k) = a.keyword(PROPS) {
-        if matches!(k, "JEU" | "ADHE") {
+        if k != "VECT" {
             if let Some(f) = a.opt::<Rc<Mchaml>>() {
                 fields.push((k, f));
                 continue;
