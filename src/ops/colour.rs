@@ -79,7 +79,8 @@ fn coul(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 if l.len() != v.len() {
                     return Err(a.err(format!("{} colours for {} sets of arrows", l.len(), v.len())));
                 }
-                let named = l.iter().map(|w| Colour::from_name(w).ok_or_else(|| a.err(format!("{} is not a colour", w))));
+                let named =
+                    l.iter().map(|w| Colour::from_name(w).ok_or_else(|| a.err(format!("{} is not a colour", w))));
                 named.collect::<Result<_>>()?
             }
             _ => vec![current(it)],

@@ -32,7 +32,9 @@ pub(crate) const COLOURS: &[&str] = &[
 
 fn evol(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     // OR (gold) is a colour too, read only as the whole word (see COLOURS).
-    if a.keyword(COLOURS).is_none() && matches!(a.peek_right(), Some(Value::Mot(w)) if w.trim().eq_ignore_ascii_case("OR")) {
+    if a.keyword(COLOURS).is_none()
+        && matches!(a.peek_right(), Some(Value::Mot(w)) if w.trim().eq_ignore_ascii_case("OR"))
+    {
         a.word();
     }
     let curve = match a.req_keyword(&["MANU", "CHPO", "TEMP", "COMP"])? {
