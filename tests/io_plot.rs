@@ -135,8 +135,8 @@ fn drawing_without_file_access_is_a_no_op_and_bad_calls_are_errors() {
     assert!(e.contains("TRAC: expected MAILLAGE, CHPOINT or MCHAML"), "{}", e);
     let e = gibi.run_str("e", "dess ;").unwrap_err().render();
     assert!(e.contains("DESS: expected EVOLUTIO"), "{}", e);
-    let e = gibi.run_str("e", "trac (coor 1 s) ;").unwrap_err().render();
-    assert!(e.contains("needs the mesh it lives on"), "{}", e);
+    // A field alone is drawn on its own nodes: no error either.
+    run(&mut gibi, "trac (coor 1 s) ;");
 }
 
 #[test]
@@ -200,4 +200,17 @@ fn trac_of_an_element_field() {
         let e = gibi.run_str("e", deck).unwrap_err().render();
         assert!(e.contains(want), "{}: {}", deck, e);
     }
+}
+
+/// A field drawn on the mesh written before it (`TRAC s chpo`), or alone
+/// on its own nodes as coloured dots.
+#[test]
+fn trac_of_a_field_after_its_mesh_or_alone() {
+    let dir = scratch("field_forms");
+    let mut gibi = session(&dir);
+    run(&mut gibi, "trac s (exco u 'UX') ; trac (exco u 'UY') ;");
+    let after = assert_svg(&dir.join("gibi_trac_1.svg"));
+    assert!(after.contains("SCAL") && after.contains("-1.000e-1"), "the field's colour bar");
+    let alone = assert_svg(&dir.join("gibi_trac_2.svg"));
+    assert!(alone.contains("SCAL") && alone.matches("<circle").count() >= 45, "a dot at each of the field's nodes");
 }

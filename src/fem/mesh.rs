@@ -267,6 +267,12 @@ impl Mesh {
         out
     }
 
+    /// The elements of one colour (ELEM by colour), in their order.
+    pub fn of_colour(&self, colour: Colour) -> Mesh {
+        let parts = self.parts.iter().filter(|p| p.colour == colour).cloned().collect();
+        Mesh { parts }
+    }
+
     /// The same elements in one colour (COUL).
     pub fn coloured(&self, colour: Colour) -> Mesh {
         let mut out = Mesh::default();

@@ -1,5 +1,6 @@
 //! COUL: the colour of a mesh's elements, kept by ET and used by TRAC.
 
+use super::export::Vecteur;
 use super::{Args, OpDef, PointId};
 use crate::error::Result;
 use crate::eval::Interp;
@@ -9,8 +10,8 @@ use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[OpDef {
     name: "COUL",
-    signature: "MAILLAGE|POINT|EVOLUTIO COUL (colour) (DEFA BLEU ROUG ROSE VERT TURQ JAUN BLAN NOIR ORAN VIOL OCEA CYAN OLIV GRIS AZUR)",
-    doc: "The mesh with every element in the colour (kept by ET, drawn by TRAC). A POINT gives a one-point mesh; an EVOLUTIO is returned as it is (DESS picks its own colours).",
+    signature: "MAILLAGE|POINT|EVOLUTIO|VECTEUR COUL (colour) (DEFA BLEU ROUG ROSE VERT TURQ JAUN BLAN NOIR ORAN VIOL OCEA CYAN OLIV GRIS AZUR)",
+    doc: "The mesh with every element in the colour (kept by ET, drawn by TRAC). A POINT gives a one-point mesh; an EVOLUTIO is returned as it is (DESS picks its own colours); the arrows of a VECTEUR take the colour, or one each from a LISTMOTS.",
     example: "s = s coul roug ;",
     f: coul,
 }];
@@ -63,5 +64,29 @@ fn coul(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         }
         return Ok(vec![Value::Evol(e)]);
     }
-    Err(a.missing("MAILLAGE, POINT or EVOLUTIO"))
+    let vecteur = a.opt_with(|v| match v {
+        Value::Host(h) if h.as_any().is::<Vecteur>() => Some(h.clone()),
+        _ => None,
+    });
+    if let Some(h) = vecteur {
+        let Some(v) = h.as_any().downcast_ref::<Vecteur>() else { unreachable!("checked above") };
+        // One colour for every set of arrows, or one each (LISTMOTS: as
+        // many as the sets), or OPTI COUL's.
+        let colours: Vec<Colour> = match a.peek_right() {
+            Some(Value::Mot(_)) => vec![colour_word(a)?],
+            Some(Value::ListMots(l)) => {
+                a.right_any();
+                if l.len() != v.len() {
+                    return Err(a.err(format!("{} colours for {} sets of arrows", l.len(), v.len())));
+                }
+                let named =
+                    l.iter().map(|w| Colour::from_name(w).ok_or_else(|| a.err(format!("{} is not a colour", w))));
+                named.collect::<Result<_>>()?
+            }
+            _ => vec![current(it)],
+        };
+        let pick = |k: usize| colours[k.min(colours.len() - 1)].name().to_string();
+        return Ok(vec![Value::Host(Rc::new(v.recoloured(pick)))]);
+    }
+    Err(a.missing("MAILLAGE, POINT, EVOLUTIO or VECTEUR"))
 }

@@ -15,7 +15,7 @@ use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[OpDef {
     name: "EVOL",
-    signature: "EVOL (colour) 'MANU' ('LEGE' text) (nameX) LISTREEL (nameY) LISTREEL | EVOL (colour) 'CHPO' CHPOINT (comp) LINE | EVOL (colour) 'TEMP' TABLE|LISTCHPO LISTREEL ('MOT') (LISTENTI) COMP|LISTMOTS POINT|MAILLAGE|(N1 N2 N3)",
+    signature: "EVOL (colour) 'MANU' ('TYPE' kind) ('LEGE' text) (nameX) LISTREEL|LISTENTI|LISTMOTS (nameY) LISTREEL|LISTENTI|LISTMOTS | EVOL (colour) 'CHPO' CHPOINT (comp) LINE | EVOL (colour) 'TEMP' TABLE|LISTCHPO LISTREEL ('MOT') (LISTENTI) COMP|LISTMOTS POINT|MAILLAGE|(N1 N2 N3)",
     doc: "A curve: given point by point, or a node field along an ordered line against its curvilinear abscissa, or a result against time at points ('TEMP': the tables of a PASAPAS run, DEPLACEMENTS by default, or a LISTCHPO and its times; N1 N2 N3 for an MCHAML: point N3 of element N2 of zone N1).",
     example: "ev = evol 'CHPO' u 'UY' l ;",
     f: evol,
@@ -31,7 +31,12 @@ pub(crate) const COLOURS: &[&str] = &[
 ];
 
 fn evol(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    a.keyword(COLOURS);
+    // OR (gold) is a colour too, read only as the whole word (see COLOURS).
+    if a.keyword(COLOURS).is_none()
+        && matches!(a.peek_right(), Some(Value::Mot(w)) if w.trim().eq_ignore_ascii_case("OR"))
+    {
+        a.word();
+    }
     let curve = match a.req_keyword(&["MANU", "CHPO", "TEMP", "COMP"])? {
         "MANU" => manu(a)?,
         "COMP" => return Ok(vec![Value::Evol(Rc::new(complex(a)?))]),
@@ -41,8 +46,13 @@ fn evol(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     Ok(vec![Value::Evol(Rc::new(Evolution { curves: vec![curve] }))])
 }
 
-/// `'MANU' ('LEGE' text) (nameX) LX (nameY) LY`.
+/// `'MANU' ('TYPE' kind) ('LEGE' text) (nameX) LX (nameY) LY`.
 fn manu(a: &mut Args) -> Result<Curve> {
+    // The kind (REEL, HIST, MOTS...) only tells Cast3M's drawing how to
+    // show the points; gibi's curves are numbers, so it is read and dropped.
+    if a.keyword(&["TYPE"]).is_some() {
+        a.word().ok_or_else(|| a.missing("the kind of curve after 'TYPE'"))?;
+    }
     let mut legend = String::new();
     if a.keyword(&["LEGE", "TITR"]).is_some() {
         legend = a.word().ok_or_else(|| a.missing("the legend text"))?;
@@ -107,12 +117,14 @@ fn label(a: &mut Args) -> Option<String> {
     a.word_before_value().or_else(|| a.word_not_operator())
 }
 
-/// A LISTREEL, or a LISTENTI read as reals. A LISTMOTS (words as the
-/// abscissae of a bar chart) has no place in gibi's numeric curves.
+/// A LISTREEL, or a LISTENTI read as reals. A LISTMOTS (words along an
+/// axis, as the bars of a chart) stands at its ranks 1, 2, …: the words
+/// only label the ticks of a drawing, the ranks keep the curve numeric.
 fn numbers(a: &mut Args) -> Option<Vec<f64>> {
     a.opt_with(|v| match v {
         Value::ListReel(l) => Some(l.to_vec()),
         Value::ListEnti(l) => Some(l.iter().map(|&i| i as f64).collect()),
+        Value::ListMots(l) => Some((1..=l.len()).map(|i| i as f64).collect()),
         _ => None,
     })
 }

@@ -57,8 +57,8 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "DEFO",
-        signature: "DEFO GEO CHPOINT (SCALE) (VECTEUR) (COLOUR)",
-        doc: "The deformed mesh: nodes moved by SCALE times the displacement field (for TRAC), in COLOUR if given.",
+        signature: "DEFO GEO CHPOINT (SCALE) (VECTEUR) (COLOUR) (CHPOINT | MCHAML MMODEL) | DEFO CHPOINT GEO …",
+        doc: "The deformed mesh: nodes moved by SCALE times the displacement field (for TRAC), in COLOUR if given. Arrows and a scalar field to colour it with are accepted and not drawn; other words are passed over.",
         example: "d = defo s u 100. ;",
         f: defo,
     },
@@ -295,18 +295,38 @@ fn somt(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 
 /// Cast3M's DEFORMEE, kept as a MAILLAGE whose nodes are moved copies.
 fn defo(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    // The field may come before the mesh (`DEFO u s`, as ANIME writes it).
+    let first = a.opt::<Rc<Chpoint>>();
     let geo = req_geo(a)?;
-    let u = a.req::<Rc<Chpoint>>()?;
+    let u = match first {
+        Some(u) => u,
+        None => a.req::<Rc<Chpoint>>()?,
+    };
     let scale = a.opt_num().unwrap_or(1.0);
     let moved = super::mesh::moved_by_field(it, &geo, &u, scale);
-    // Arrows to draw on the deformed mesh (VECT): gibi draws no arrows.
-    let _ = a.opt_with(|v| match v {
-        Value::Host(h) if h.type_name() == "VECTEUR" => Some(()),
-        _ => None,
-    });
-    // A colour word colours the deformed mesh for TRAC; other words are
-    // options of Cast3M's graphics.
-    let colour = a.word_not_operator().and_then(|w| crate::fem::mesh::Colour::from_name(&w));
+    // Then, in any order: arrows to draw on the deformed mesh (VECT), a
+    // scalar field to colour it with (a CHPOINT, or an MCHAML and its
+    // model), a colour word. gibi draws neither arrows nor that field;
+    // other words (blank texts ANIME builds) are Cast3M's drawing options.
+    let mut colour = None;
+    loop {
+        let extra = a.opt_with(|v| match v {
+            Value::Host(h) if h.type_name() == "VECTEUR" => Some(()),
+            Value::Chpo(_) | Value::Mchaml(_) | Value::Model(_) => Some(()),
+            _ => None,
+        });
+        if extra.is_some() {
+            continue;
+        }
+        match a.word_not_operator() {
+            Some(w) => {
+                if let Some(c) = crate::fem::mesh::Colour::from_name(w.trim()) {
+                    colour = Some(c);
+                }
+            }
+            None => break,
+        }
+    }
     let moved = match colour {
         Some(c) => moved.coloured(c),
         None => moved,

@@ -73,15 +73,15 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "ENTI",
-        signature: "ENTI ('TRON'|'INFE'|'SUPE'|'PROC') NUM|LISTREEL|LISTENTI|CHPOINT|MOT",
-        doc: "Integer part (TRON truncation, the default; INFE floor, SUPE ceiling, PROC nearest); a LISTREEL gives a LISTENTI, a CHPOINT a CHPOINT of whole values, a MOT holding a number its value.",
+        signature: "ENTI ('TRON'|'INFE'|'SUPE'|'PROC') NUM|LISTREEL|LISTENTI|CHPOINT|MOT|LISTMOTS",
+        doc: "Integer part (TRON truncation, the default; INFE floor, SUPE ceiling, PROC nearest); a LISTREEL gives a LISTENTI, a CHPOINT a CHPOINT of whole values, a MOT holding a number its value, a LISTMOTS of such words a LISTENTI.",
         example: "i = enti 3.7 ;",
         f: enti,
     },
     OpDef {
         name: "FLOT",
-        signature: "FLOT NUM|LISTENTI|LISTREEL|MOT",
-        doc: "Conversion to FLOTTANT (a LISTENTI gives a LISTREEL, a MOT holding a number its value).",
+        signature: "FLOT NUM|LISTENTI|LISTREEL|MOT|LISTMOTS",
+        doc: "Conversion to FLOTTANT (a LISTENTI gives a LISTREEL, a MOT holding a number its value, a LISTMOTS of such words a LISTREEL).",
         example: "x = flot 3 ;",
         f: flot,
     },
@@ -322,7 +322,13 @@ impl FromArg for NumericOrMot {
     fn from_value(v: &Value) -> Option<Self> {
         let ok = matches!(
             v,
-            Value::Int(_) | Value::Float(_) | Value::ListReel(_) | Value::ListEnti(_) | Value::Mot(_) | Value::Chpo(_)
+            Value::Int(_)
+                | Value::Float(_)
+                | Value::ListReel(_)
+                | Value::ListEnti(_)
+                | Value::Mot(_)
+                | Value::ListMots(_)
+                | Value::Chpo(_)
         );
         ok.then(|| NumericOrMot(v.clone()))
     }
@@ -364,6 +370,9 @@ fn enti(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         Value::Mot(s) => Value::Int(to_int(word_number(a, &s)?)?),
         Value::ListEnti(l) => Value::ListEnti(l),
         Value::ListReel(l) => Value::ListEnti(Rc::new(l.iter().map(|x| to_int(*x)).collect::<Result<_>>()?)),
+        Value::ListMots(l) => {
+            Value::ListEnti(Rc::new(l.iter().map(|w| to_int(word_number(a, w)?)).collect::<Result<_>>()?))
+        }
         // A field keeps FLOTTANT values, rounded as asked.
         Value::Chpo(c) => Value::Chpo(Rc::new(c.map(round))),
         other => return Err(a.err(format!("no integer part of a {}", other.type_name()))),
@@ -375,6 +384,7 @@ fn flot(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         Value::Int(i) => Value::Float(i as f64),
         Value::Mot(s) => Value::Float(word_number(a, &s)?),
         Value::ListEnti(l) => Value::ListReel(Rc::new(l.iter().map(|i| *i as f64).collect())),
+        Value::ListMots(l) => Value::ListReel(Rc::new(l.iter().map(|w| word_number(a, w)).collect::<Result<_>>()?)),
         other => other,
     }])
 }

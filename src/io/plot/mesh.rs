@@ -244,6 +244,15 @@ impl MeshPicture<'_> {
                     prims.push((depth, Prim::Line { pts, color: colormap(scale(v)), width: 2 * self.edge_width() }));
                 }
             }
+            // A field drawn on its own nodes (no mesh given) is a cloud of
+            // coloured points.
+            for p in f.mesh.parts.iter().filter(|p| p.ty == ElemType::Poi1) {
+                for &n in &p.conn {
+                    let v = val(n);
+                    let color = if v.is_finite() { colormap(scale(v)) } else { RGBColor(200, 200, 200) };
+                    prims.push((at(n).2, Prim::Dot { pt: (at(n).0, at(n).1), color }));
+                }
+            }
         }
         // One colour per mesh, unless its elements have their own (COUL).
         let coloured = self.meshes.iter().enumerate().flat_map(|(i, m)| {

@@ -78,9 +78,9 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "TRAC",
-        signature: "TRAC (CHPOINT) MAILLAGE… | TRAC MMODEL MCHAML (MAILLAGE…) ('TITR' text) (device words)",
+        signature: "TRAC (CHPOINT) MAILLAGE… | TRAC MAILLAGE CHPOINT | TRAC CHPOINT | TRAC MMODEL MCHAML (MAILLAGE…) ('TITR' text) (device words)",
         doc: "Draw meshes (one colour each; a deformed mesh is `m PLUS (u * scale)`), a nodal field on its \
-              mesh, or an element field (VMIS, SIGM…: each element coloured by the mean of its points, the \
+              mesh (the mesh just before it, else its own nodes when none follows), or an element field (VMIS, SIGM…: each element coloured by the mean of its points, the \
               model as its support) with a colour bar, as an SVG or PNG file (OPTI TRAC 'SVG'|'PNG'; other \
               devices such as PSC or X mean SVG). File: the OPTI SORT name, else gibi_trac_N. Option words, \
               numbers and VECT arrows are passed over; an object that cannot be drawn is an error; with no \

@@ -113,7 +113,12 @@ pub(super) fn trac(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     }
     let field = match (field, elem_field) {
         (Some((c, Some(m))), _) => Some(nodal_field(&c, m)),
-        (Some((_, None)), _) => return Err(a.err("TRAC of a CHPOINT needs the mesh it lives on: TRAC chpo mesh")),
+        // A field with no mesh after it is drawn on the mesh given just
+        // before it (`TRAC mail chpo`), else on its own nodes.
+        (Some((c, None)), _) => {
+            let support = meshes.pop().unwrap_or_else(|| Mesh::points(&c.nodes));
+            Some(nodal_field(&c, support))
+        }
         (None, Some(m)) => {
             // The element field carries its mesh: a model given with it
             // is its support, not one more mesh to draw.
@@ -150,6 +155,18 @@ struct Arrows {
 }
 
 impl Vecteur {
+    /// The same arrows in new colours: `colour(k)` for the k-th set
+    /// (COUL: one colour for all, or one per set).
+    pub(crate) fn recoloured(&self, colour: impl Fn(usize) -> String) -> Vecteur {
+        let sets = self.sets.iter().enumerate().map(|(k, s)| Arrows { colour: colour(k), ..s.clone() }).collect();
+        Vecteur { sets }
+    }
+
+    /// How many sets of arrows (one per VECT joined by ET).
+    pub(crate) fn len(&self) -> usize {
+        self.sets.len()
+    }
+
     /// The union `v1 ET v2`: the arrows of both, in order.
     pub(crate) fn join(&self, other: &Vecteur) -> Vecteur {
         Vecteur { sets: self.sets.iter().chain(&other.sets).cloned().collect() }
