@@ -103,7 +103,6 @@ const REFUSED: &[(&str, &str)] = &[
     ("GRANDS_DEPLACEMENTS", "large displacements"),
     ("DYNAMIQUE", "dynamics"),
     ("CONSOLIDATION", "consolidation"),
-    ("AUTOMATIQUE", "automatic load control"),
     ("K_SIGMA", "the geometric stiffness"),
     ("FEFP_FORMULATION", "finite strains"),
 ];
@@ -123,7 +122,10 @@ fn read_input(a: &Args, t: &Tab) -> Result<Input> {
     }
     let (mech, cont) = pmodel::split(&model);
     for z in &model.zones {
-        if z.formulation != "CONTACT" && !z.formulation.starts_with("MECA") {
+        if z.formulation != "CONTACT"
+            && z.formulation != super::pres_model::FORMULATION
+            && !z.formulation.starts_with("MECA")
+        {
             return Err(a.err(format!("the model has a {} zone: gibi's PASAPAS solves mechanics only", z.formulation)));
         }
     }
@@ -342,6 +344,20 @@ fn initial_state(it: &mut Interp, a: &Args, run: &mut Run, input: &Input, temp0:
         let mut w = w.borrow_mut();
         w.set(key("TEMPS0"), Value::Float(temp0));
         w.set(key("MO_TOT"), Value::Model(input.model.clone()));
+        // What post-processing procedures (G_THETA) read of a run: the
+        // mechanical model and its material, the kind of run, and the
+        // temperature the expansion coefficients refer to.
+        let (mech, _) = pmodel::split(&input.model);
+        let mod_mec = Model { zones: mech.into_iter().cloned().collect() };
+        w.set(key("MOD_MEC"), Value::Model(Rc::new(mod_mec)));
+        if let Some(m) = input.cara.first() {
+            w.set(key("MAT_MEC"), Value::Mchaml(m.clone()));
+        }
+        for k in ["DYNAMIQUE", "GRANDS_DEPLACEMENTS"] {
+            w.set(key(k), Value::Bool(false));
+        }
+        let talpha = get(tab, "TALPHA_REFERENCE").unwrap_or(Value::Float(0.0));
+        w.set(key("TALPHA_REFERENCE"), talpha);
         w.set(key("CONV"), Value::Bool(true));
         if let Some(c) = &input.charge {
             w.set(key("CHARGEMENT"), Value::Charge(c.clone()));
