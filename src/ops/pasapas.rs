@@ -231,14 +231,19 @@ struct Run {
     charge: Option<Rc<Chargement>>,
     has_t: bool,
     contact: bool,
+    /// The material is evaluated at each step (`pasapas_vary`).
+    varying: bool,
 }
 
 fn pasapas(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let tab = a.req::<Tab>()?;
     let input = read_input(a, &tab)?;
-    let s = pmodel::build(it, a, &input.model, &input.cara, input.blocks.as_ref())?;
-    // The reference temperature: given, or the 'T' load at the start.
     let temp0 = start_time(&tab);
+    // Properties that are curves of a parameter: evaluated at each step.
+    let varying = super::pasapas_vary::is_varying(&input.cara);
+    let cara0 = super::pasapas_vary::evaluated(it, a, &input.model, &input.cara, input.charge.as_deref(), temp0)?;
+    let s = pmodel::build(it, a, &input.model, &cara0, input.blocks.as_ref())?;
+    // The reference temperature: given, or the 'T' load at the start.
     let tref = match (&input.tref, &input.charge) {
         (Some(c), _) => Some(c.clone()),
         (None, Some(ch)) if ch.has("T") => match super::chargement::at(it, a, ch, Some("T"), temp0)? {
@@ -256,7 +261,7 @@ fn pasapas(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     it.timers.phase("PASAPAS factorisation", t.elapsed().as_secs_f64());
     let has_t = input.charge.as_ref().is_some_and(|c| c.has("T"));
     let contact = !s.contact.is_empty();
-    let mut run = Run { tab: tab.clone(), s, stepper, loads, charge: input.charge.clone(), has_t, contact };
+    let mut run = Run { tab: tab.clone(), s, stepper, loads, charge: input.charge.clone(), has_t, contact, varying };
     initial_state(it, a, &mut run, &input, temp0)?;
     // A continued run starts its statuses where the last one ended.
     let w = sub(&tab, "WTABLE");
@@ -415,6 +420,21 @@ fn steps(it: &mut Interp, a: &Args, run: &mut Run, input: &Input, temp0: f64) ->
             return Err(crate::eval::interrupted());
         }
         ipas += 1;
+        if run.varying {
+            let current = current_charge(run);
+            let (s, stepper, loads) = super::pasapas_vary::rebuild(
+                it,
+                a,
+                &input.model,
+                &input.cara,
+                input.blocks.as_ref(),
+                current.as_deref(),
+                &run.loads.tref,
+                &run.stepper,
+                ti,
+            )?;
+            (run.s, run.stepper, run.loads, run.charge) = (s, stepper, loads, current);
+        }
         let (coefs, extra, heat) = step_load(it, a, run, ti)?;
         // Cast3M prints its step lines unless told OPTI ECHO 0.
         let verbose = it.opts.echo >= 1 || !it.opts.kept.contains_key("ECHO");
@@ -479,14 +499,20 @@ fn steps(it: &mut Interp, a: &Args, run: &mut Run, input: &Input, temp0: f64) ->
 /// node for the stresses.
 type StepLoad = (Vec<f64>, Option<Load>, Option<Vec<f64>>);
 
-fn step_load(it: &mut Interp, a: &Args, run: &mut Run, t: f64) -> Result<StepLoad> {
-    let current = match get(&run.tab, "WTABLE").and_then(|w| match w {
+/// The CHARGEMENT of the step: WTABLE's (a user procedure may replace
+/// it), else the one the run started with.
+fn current_charge(run: &Run) -> Option<Rc<Chargement>> {
+    match get(&run.tab, "WTABLE").and_then(|w| match w {
         Value::Table(w) => w.borrow().get(&key("CHARGEMENT")).cloned(),
         _ => None,
     }) {
         Some(Value::Charge(c)) => Some(c),
         _ => run.charge.clone(),
-    };
+    }
+}
+
+fn step_load(it: &mut Interp, a: &Args, run: &mut Run, t: f64) -> Result<StepLoad> {
+    let current = current_charge(run);
     let same = match (&current, &run.charge) {
         (Some(x), Some(y)) => Rc::ptr_eq(x, y),
         (None, None) => true,

@@ -79,17 +79,13 @@ pub(crate) fn build(
     for zone in &mech {
         let form = formulation(zone);
         let mode = zone_mode(zone).map_err(|e| a.err(e.message))?;
-        let mat = material_for(zone, cara);
-        if let Some(k) = varying_property(zone, cara) {
-            // The element sets of analysis::body hold one material each.
-            return Err(a.err(format!(
-                "PASAPAS takes constant material properties: {} of this model varies (an EVOLUTIO, or values \
-                 by element from VARI)",
-                k
-            )));
-        }
+        // Properties that are curves were evaluated by the caller (at the
+        // step's parameters); values by element enter element by element.
+        super::variable_fields::no_unevaluated_law(a, zone, cara)?;
+        let base = material_for(zone, cara);
         for part in &zone.mesh.parts {
-            let b = stiffness_block(it, form, mode, part, std::slice::from_ref(&mat))
+            let mats = super::variable_fields::element_materials(a, &base, part, cara)?;
+            let b = stiffness_block(it, form, mode, part, &mats)
                 .map_err(|e| a.err(format!("stiffness: {}", e.message)))?;
             rig.blocks.push(b);
             parts.push(((*zone).clone(), part.clone()));
@@ -189,7 +185,7 @@ pub(crate) fn build(
             ElemKind { form, ty: part.ty, mode },
             part.conn.clone(),
             d,
-            Box::new(Elastic { props: material_for(zone, cara) }),
+            Box::new(Elastic { props: material_for(zone, cara), by_elem: per_elem(a, zone, part, cara)? }),
         ));
     }
     Ok(Structure {
@@ -304,17 +300,11 @@ fn facet_measure(x: &[[f64; 3]], f: &[usize]) -> f64 {
 
 /// The value of a contact datum on each element of a contact zone (0 when
 /// the material does not give it).
-/// A material property of `zone` that is not one constant: a curve of a
-/// parameter (MATE … 'YOUN' EVOLUTIO) or values by element (VARI 'NUAG').
-fn varying_property(zone: &ModelZone, cara: &[Rc<Mchaml>]) -> Option<String> {
-    let ours = |z: &crate::value::model::MchamlZone| {
-        z.mesh == zone.mesh || zone.mesh.parts.iter().any(|p| z.mesh.parts.first() == Some(p))
-    };
-    let is_prop = |c: &str| crate::fem::material::Material::default().set(c, 0.0);
-    cara.iter()
-        .flat_map(|f| f.zones.iter())
-        .filter(|z| ours(z))
-        .find_map(|z| z.laws.keys().next().cloned().or_else(|| z.comps.iter().find(|c| is_prop(c)).cloned()))
+/// The data of each element of `part` when a field gives them element by
+/// element (empty when they are the same for all).
+fn per_elem(a: &Args, zone: &ModelZone, part: &Part, cara: &[Rc<Mchaml>]) -> Result<Vec<crate::fem::material::Material>> {
+    let mats = super::variable_fields::element_materials(a, &material_for(zone, cara), part, cara)?;
+    Ok(if mats.len() == part.len() { mats } else { Vec::new() })
 }
 
 fn zone_values(a: &Args, zone: &ModelZone, cara: &[Rc<Mchaml>], name: &str) -> Result<Vec<f64>> {
