@@ -26,6 +26,12 @@
 //! * continuation: a second call on the same table goes on after the last
 //!   saved time, numbering on from the last index.
 //!
+//! Pressure loads are fields of a pressure model (MODE … 'CHARGEMENT'
+//! 'PRESSION') in the model, given as CHAR 'PRES'; properties that are
+//! curves of a parameter are evaluated at each step from the CHARGEMENT's
+//! field of that name (`pasapas_vary`); 'AUTOMATIQUE' computes the times
+//! asked: an elastic step is exact whatever the steps before it.
+//!
 //! What is not elastic mechanics (a plastic model, friction, large
 //! displacements, dynamics, thermal analysis) is refused before anything is
 //! written: the table is left untouched.
@@ -422,6 +428,9 @@ fn steps(it: &mut Interp, a: &Args, run: &mut Run, input: &Input, temp0: f64) ->
         ipas += 1;
         if run.varying {
             let current = current_charge(run);
+            if let Some(c) = &current {
+                pmodel::check_loads(a, c)?;
+            }
             let (s, stepper, loads) = super::pasapas_vary::rebuild(
                 it,
                 a,

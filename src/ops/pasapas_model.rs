@@ -85,8 +85,8 @@ pub(crate) fn build(
         let base = material_for(zone, cara);
         for part in &zone.mesh.parts {
             let mats = super::variable_fields::element_materials(a, &base, part, cara)?;
-            let b = stiffness_block(it, form, mode, part, &mats)
-                .map_err(|e| a.err(format!("stiffness: {}", e.message)))?;
+            let b =
+                stiffness_block(it, form, mode, part, &mats).map_err(|e| a.err(format!("stiffness: {}", e.message)))?;
             rig.blocks.push(b);
             parts.push(((*zone).clone(), part.clone()));
         }
@@ -302,7 +302,12 @@ fn facet_measure(x: &[[f64; 3]], f: &[usize]) -> f64 {
 /// the material does not give it).
 /// The data of each element of `part` when a field gives them element by
 /// element (empty when they are the same for all).
-fn per_elem(a: &Args, zone: &ModelZone, part: &Part, cara: &[Rc<Mchaml>]) -> Result<Vec<crate::fem::material::Material>> {
+fn per_elem(
+    a: &Args,
+    zone: &ModelZone,
+    part: &Part,
+    cara: &[Rc<Mchaml>],
+) -> Result<Vec<crate::fem::material::Material>> {
     let mats = super::variable_fields::element_materials(a, &material_for(zone, cara), part, cara)?;
     Ok(if mats.len() == part.len() { mats } else { Vec::new() })
 }

@@ -423,7 +423,13 @@ pub(crate) fn material_with(
                 let src = match param(&c.x_name)? {
                     Value::Chpo(f) => Source::Nodes(f),
                     Value::Mchaml(f) => Source::Elements(f),
-                    v => return Err(a.err(format!("the {} field is a {}, not a CHPOINT or MCHAML", c.x_name, v.type_name()))),
+                    v => {
+                        return Err(a.err(format!(
+                            "the {} field is a {}, not a CHPOINT or MCHAML",
+                            c.x_name,
+                            v.type_name()
+                        )))
+                    }
                 };
                 sources.push((c.x_name.clone(), src));
             }
