@@ -63,7 +63,7 @@ impl ElementSet {
                 let mut cols: Vec<(GaussField, GaussField)> = Vec::with_capacity(nd);
                 for j in 0..nd {
                     unit[j] = 1.0;
-                    cols.push(self.material.respond(self.kind, &xe, &unit, None).map_err(|err| (e, err))?);
+                    cols.push(self.material.respond(e, self.kind, &xe, &unit, None).map_err(|err| (e, err))?);
                     unit[j] = 0.0;
                 }
                 let (e0, s0) = &cols[0];
@@ -180,7 +180,7 @@ impl Body {
                     heat.map(|h| nodes.iter().map(|&n| h.get(n).copied().unwrap_or(0.0)).collect());
                 let (eps, sig) = s
                     .material
-                    .respond(s.kind, &self.x(nodes), &ue, dt.as_deref())
+                    .respond(e, s.kind, &self.x(nodes), &ue, dt.as_deref())
                     .map_err(|error| BodyError { set: si, elem: e, error })?;
                 f.strains.push(eps);
                 f.stresses.push(sig);
@@ -196,14 +196,14 @@ impl Body {
     pub fn thermal_forces(&self, n: usize, heat: &[f64]) -> Result<Vec<f64>, BodyError> {
         let mut f = vec![0.0; n];
         for (si, s) in self.sets.iter().enumerate() {
-            let props = s.material.props();
-            if props.alph.is_none() {
-                continue;
-            }
-            let mut m0 = props.clone();
-            m0.tref = Some(0.0);
             let k = s.kind;
             for e in 0..s.n_elem() {
+                let props = s.material.props_of(e);
+                if props.alph.is_none() {
+                    continue;
+                }
+                let mut m0 = props.clone();
+                m0.tref = Some(0.0);
                 let nodes = s.nodes(e);
                 let dt: Vec<f64> = nodes.iter().map(|&n| heat.get(n).copied().unwrap_or(0.0)).collect();
                 if dt.iter().all(|v| *v == 0.0) {

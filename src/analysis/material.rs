@@ -28,11 +28,18 @@ pub trait Material: std::fmt::Debug {
     fn is_linear(&self) -> bool;
     /// The element data the element routines read (moduli, sections).
     fn props(&self) -> &element::Material;
+    /// The data of element `e` of its set (materials evaluated element by
+    /// element, from a field of a parameter, differ between elements).
+    fn props_of(&self, _e: usize) -> &element::Material {
+        self.props()
+    }
     /// Strains and stresses at the element points of one element, for its
     /// coordinates `x`, displacements `u` (element dof order) and, when the
-    /// structure is heated, its nodal temperatures minus the reference.
+    /// structure is heated, its nodal temperatures minus the reference;
+    /// `e` is the element's number in its set.
     fn respond(
         &self,
+        e: usize,
         k: ElemKind,
         x: &[[f64; 3]],
         u: &[f64],
@@ -41,10 +48,12 @@ pub trait Material: std::fmt::Debug {
 }
 
 /// Isotropic linear elasticity (MATE 'YOUN' 'NU', and 'ALPH' for thermal
-/// strains).
+/// strains), with one data set, or one per element (`by_elem`, empty when
+/// the data are the same for all).
 #[derive(Debug, Clone)]
 pub struct Elastic {
     pub props: element::Material,
+    pub by_elem: Vec<element::Material>,
 }
 
 impl Material for Elastic {
@@ -60,14 +69,19 @@ impl Material for Elastic {
         &self.props
     }
 
+    fn props_of(&self, e: usize) -> &element::Material {
+        self.by_elem.get(e).unwrap_or(&self.props)
+    }
+
     fn respond(
         &self,
+        e: usize,
         k: ElemKind,
         x: &[[f64; 3]],
         u: &[f64],
         heat: Option<&[f64]>,
     ) -> Result<(GaussField, GaussField), FemError> {
-        let m = &self.props;
+        let m = self.props_of(e);
         let eps = element::strain(k.form, k.ty, k.mode, x, m, u)?;
         let Some(dt) = heat else {
             let sig = element::stress(k.form, k.ty, k.mode, x, m, u)?;

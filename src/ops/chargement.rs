@@ -25,7 +25,7 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "TIRE",
-        signature: "TIRE CHARGEMENT FLOTTANT ('TABL' | MOT)",
+        signature: "TIRE CHARGEMENT (MOT) FLOTTANT ('TABL' | MOT)",
         doc: "The load at a time: the sum of the parts (a CHPOINT or an MCHAML), the parts named MOT only, or \
               with 'TABL' a TABLE of the parts by name.",
         example: "f = tire ch 0.5 'MECA' ;",
@@ -103,8 +103,11 @@ fn tire(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         // TIRE of a SOLUTION object (dynamics) is not implemented.
         return Err(a.missing("CHARGEMENT"));
     };
+    // The name may come before the time (TIRE ch 'PRES' t), as G_THETA
+    // writes it, or after it.
+    let early = a.opt::<String>().map(|n| n.trim().to_uppercase());
     let t = a.req_num()?;
-    if a.keyword(&["TABL"]).is_some() {
+    if early.as_deref() == Some("TABL") || a.keyword(&["TABL"]).is_some() {
         let mut names: Vec<&str> = Vec::new();
         for p in &ch.parts {
             if !names.contains(&p.name.as_str()) {
@@ -117,7 +120,7 @@ fn tire(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         }
         return Ok(vec![Value::Table(Rc::new(RefCell::new(tab)))]);
     }
-    let name = a.opt::<String>().map(|n| n.trim().to_uppercase());
+    let name = early.or_else(|| a.opt::<String>().map(|n| n.trim().to_uppercase()));
     Ok(vec![at(it, a, &ch, name.as_deref(), t)?])
 }
 

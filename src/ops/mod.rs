@@ -68,6 +68,7 @@ mod ordo_cost;
 mod pasapas;
 mod pasapas_fields;
 mod pasapas_model;
+mod pasapas_vary;
 mod poin_field;
 mod pointwise;
 mod post;

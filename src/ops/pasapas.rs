@@ -26,6 +26,12 @@
 //! * continuation: a second call on the same table goes on after the last
 //!   saved time, numbering on from the last index.
 //!
+//! Pressure loads are fields of a pressure model (MODE … 'CHARGEMENT'
+//! 'PRESSION') in the model, given as CHAR 'PRES'; properties that are
+//! curves of a parameter are evaluated at each step from the CHARGEMENT's
+//! field of that name (`pasapas_vary`); 'AUTOMATIQUE' computes the times
+//! asked: an elastic step is exact whatever the steps before it.
+//!
 //! What is not elastic mechanics (a plastic model, friction, large
 //! displacements, dynamics, thermal analysis) is refused before anything is
 //! written: the table is left untouched.
@@ -103,7 +109,6 @@ const REFUSED: &[(&str, &str)] = &[
     ("GRANDS_DEPLACEMENTS", "large displacements"),
     ("DYNAMIQUE", "dynamics"),
     ("CONSOLIDATION", "consolidation"),
-    ("AUTOMATIQUE", "automatic load control"),
     ("K_SIGMA", "the geometric stiffness"),
     ("FEFP_FORMULATION", "finite strains"),
 ];
@@ -123,7 +128,10 @@ fn read_input(a: &Args, t: &Tab) -> Result<Input> {
     }
     let (mech, cont) = pmodel::split(&model);
     for z in &model.zones {
-        if z.formulation != "CONTACT" && !z.formulation.starts_with("MECA") {
+        if z.formulation != "CONTACT"
+            && z.formulation != super::pres_model::FORMULATION
+            && !z.formulation.starts_with("MECA")
+        {
             return Err(a.err(format!("the model has a {} zone: gibi's PASAPAS solves mechanics only", z.formulation)));
         }
     }
@@ -229,14 +237,19 @@ struct Run {
     charge: Option<Rc<Chargement>>,
     has_t: bool,
     contact: bool,
+    /// The material is evaluated at each step (`pasapas_vary`).
+    varying: bool,
 }
 
 fn pasapas(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let tab = a.req::<Tab>()?;
     let input = read_input(a, &tab)?;
-    let s = pmodel::build(it, a, &input.model, &input.cara, input.blocks.as_ref())?;
-    // The reference temperature: given, or the 'T' load at the start.
     let temp0 = start_time(&tab);
+    // Properties that are curves of a parameter: evaluated at each step.
+    let varying = super::pasapas_vary::is_varying(&input.cara);
+    let cara0 = super::pasapas_vary::evaluated(it, a, &input.model, &input.cara, input.charge.as_deref(), temp0)?;
+    let s = pmodel::build(it, a, &input.model, &cara0, input.blocks.as_ref())?;
+    // The reference temperature: given, or the 'T' load at the start.
     let tref = match (&input.tref, &input.charge) {
         (Some(c), _) => Some(c.clone()),
         (None, Some(ch)) if ch.has("T") => match super::chargement::at(it, a, ch, Some("T"), temp0)? {
@@ -254,7 +267,7 @@ fn pasapas(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     it.timers.phase("PASAPAS factorisation", t.elapsed().as_secs_f64());
     let has_t = input.charge.as_ref().is_some_and(|c| c.has("T"));
     let contact = !s.contact.is_empty();
-    let mut run = Run { tab: tab.clone(), s, stepper, loads, charge: input.charge.clone(), has_t, contact };
+    let mut run = Run { tab: tab.clone(), s, stepper, loads, charge: input.charge.clone(), has_t, contact, varying };
     initial_state(it, a, &mut run, &input, temp0)?;
     // A continued run starts its statuses where the last one ended.
     let w = sub(&tab, "WTABLE");
@@ -342,6 +355,20 @@ fn initial_state(it: &mut Interp, a: &Args, run: &mut Run, input: &Input, temp0:
         let mut w = w.borrow_mut();
         w.set(key("TEMPS0"), Value::Float(temp0));
         w.set(key("MO_TOT"), Value::Model(input.model.clone()));
+        // What post-processing procedures (G_THETA) read of a run: the
+        // mechanical model and its material, the kind of run, and the
+        // temperature the expansion coefficients refer to.
+        let (mech, _) = pmodel::split(&input.model);
+        let mod_mec = Model { zones: mech.into_iter().cloned().collect() };
+        w.set(key("MOD_MEC"), Value::Model(Rc::new(mod_mec)));
+        if let Some(m) = input.cara.first() {
+            w.set(key("MAT_MEC"), Value::Mchaml(m.clone()));
+        }
+        for k in ["DYNAMIQUE", "GRANDS_DEPLACEMENTS"] {
+            w.set(key(k), Value::Bool(false));
+        }
+        let talpha = get(tab, "TALPHA_REFERENCE").unwrap_or(Value::Float(0.0));
+        w.set(key("TALPHA_REFERENCE"), talpha);
         w.set(key("CONV"), Value::Bool(true));
         if let Some(c) = &input.charge {
             w.set(key("CHARGEMENT"), Value::Charge(c.clone()));
@@ -399,6 +426,24 @@ fn steps(it: &mut Interp, a: &Args, run: &mut Run, input: &Input, temp0: f64) ->
             return Err(crate::eval::interrupted());
         }
         ipas += 1;
+        if run.varying {
+            let current = current_charge(run);
+            if let Some(c) = &current {
+                pmodel::check_loads(a, c)?;
+            }
+            let (s, stepper, loads) = super::pasapas_vary::rebuild(
+                it,
+                a,
+                &input.model,
+                &input.cara,
+                input.blocks.as_ref(),
+                current.as_deref(),
+                &run.loads.tref,
+                &run.stepper,
+                ti,
+            )?;
+            (run.s, run.stepper, run.loads, run.charge) = (s, stepper, loads, current);
+        }
         let (coefs, extra, heat) = step_load(it, a, run, ti)?;
         // Cast3M prints its step lines unless told OPTI ECHO 0.
         let verbose = it.opts.echo >= 1 || !it.opts.kept.contains_key("ECHO");
@@ -463,14 +508,20 @@ fn steps(it: &mut Interp, a: &Args, run: &mut Run, input: &Input, temp0: f64) ->
 /// node for the stresses.
 type StepLoad = (Vec<f64>, Option<Load>, Option<Vec<f64>>);
 
-fn step_load(it: &mut Interp, a: &Args, run: &mut Run, t: f64) -> Result<StepLoad> {
-    let current = match get(&run.tab, "WTABLE").and_then(|w| match w {
+/// The CHARGEMENT of the step: WTABLE's (a user procedure may replace
+/// it), else the one the run started with.
+fn current_charge(run: &Run) -> Option<Rc<Chargement>> {
+    match get(&run.tab, "WTABLE").and_then(|w| match w {
         Value::Table(w) => w.borrow().get(&key("CHARGEMENT")).cloned(),
         _ => None,
     }) {
         Some(Value::Charge(c)) => Some(c),
         _ => run.charge.clone(),
-    };
+    }
+}
+
+fn step_load(it: &mut Interp, a: &Args, run: &mut Run, t: f64) -> Result<StepLoad> {
+    let current = current_charge(run);
     let same = match (&current, &run.charge) {
         (Some(x), Some(y)) => Rc::ptr_eq(x, y),
         (None, None) => true,

@@ -43,6 +43,10 @@ pub(crate) struct Structure {
     /// The tension each condition holds before it opens (MATE 'ADHE'
     /// times the condition's share of the contact surface), by condition.
     pub adhesion: Vec<f64>,
+    /// The whole model and its fields: 'PRES' loads are pressure fields on
+    /// its CHARGEMENT zones, turned into forces as BSIG does.
+    pub model: Model,
+    pub cara: Vec<Rc<Mchaml>>,
 }
 
 /// What a contact element gives: the node its multiplier sits on, the
@@ -50,9 +54,15 @@ pub(crate) struct Structure {
 /// the facets it holds.
 type ElementRow = (usize, Vec<(usize, usize, f64)>, f64, Vec<Vec<usize>>);
 
-/// The zones of a model: mechanical ones, and contact ones.
+/// The zones of a model: mechanical ones, and contact ones. Pressure
+/// loading zones (formulation CHARGEMENT) are in neither: they carry no
+/// stiffness, only the support of the 'PRES' loads.
 pub(crate) fn split(model: &Model) -> (Vec<&ModelZone>, Vec<&ModelZone>) {
-    let (c, m): (Vec<&ModelZone>, Vec<&ModelZone>) = model.zones.iter().partition(|z| z.formulation == "CONTACT");
+    let (c, m): (Vec<&ModelZone>, Vec<&ModelZone>) = model
+        .zones
+        .iter()
+        .filter(|z| z.formulation != super::pres_model::FORMULATION)
+        .partition(|z| z.formulation == "CONTACT");
     (m, c)
 }
 
@@ -69,18 +79,14 @@ pub(crate) fn build(
     for zone in &mech {
         let form = formulation(zone);
         let mode = zone_mode(zone).map_err(|e| a.err(e.message))?;
-        let mat = material_for(zone, cara);
-        if let Some(k) = varying_property(zone, cara) {
-            // The element sets of analysis::body hold one material each.
-            return Err(a.err(format!(
-                "PASAPAS takes constant material properties: {} of this model varies (an EVOLUTIO, or values \
-                 by element from VARI)",
-                k
-            )));
-        }
+        // Properties that are curves were evaluated by the caller (at the
+        // step's parameters); values by element enter element by element.
+        super::variable_fields::no_unevaluated_law(a, zone, cara)?;
+        let base = material_for(zone, cara);
         for part in &zone.mesh.parts {
-            let b = stiffness_block(it, form, mode, part, std::slice::from_ref(&mat))
-                .map_err(|e| a.err(format!("stiffness: {}", e.message)))?;
+            let mats = super::variable_fields::element_materials(a, &base, part, cara)?;
+            let b =
+                stiffness_block(it, form, mode, part, &mats).map_err(|e| a.err(format!("stiffness: {}", e.message)))?;
             rig.blocks.push(b);
             parts.push(((*zone).clone(), part.clone()));
         }
@@ -179,10 +185,21 @@ pub(crate) fn build(
             ElemKind { form, ty: part.ty, mode },
             part.conn.clone(),
             d,
-            Box::new(Elastic { props: material_for(zone, cara) }),
+            Box::new(Elastic { props: material_for(zone, cara), by_elem: per_elem(a, zone, part, cara)? }),
         ));
     }
-    Ok(Structure { rig, asm, body, parts, contact, contact_limits, contact_measure: measure, adhesion })
+    Ok(Structure {
+        rig,
+        asm,
+        body,
+        parts,
+        contact,
+        contact_limits,
+        contact_measure: measure,
+        adhesion,
+        model: model.clone(),
+        cara: cara.to_vec(),
+    })
 }
 
 /// Each contact node's share of the contact surface, for pressures: the
@@ -283,17 +300,16 @@ fn facet_measure(x: &[[f64; 3]], f: &[usize]) -> f64 {
 
 /// The value of a contact datum on each element of a contact zone (0 when
 /// the material does not give it).
-/// A material property of `zone` that is not one constant: a curve of a
-/// parameter (MATE … 'YOUN' EVOLUTIO) or values by element (VARI 'NUAG').
-fn varying_property(zone: &ModelZone, cara: &[Rc<Mchaml>]) -> Option<String> {
-    let ours = |z: &crate::value::model::MchamlZone| {
-        z.mesh == zone.mesh || zone.mesh.parts.iter().any(|p| z.mesh.parts.first() == Some(p))
-    };
-    let is_prop = |c: &str| crate::fem::material::Material::default().set(c, 0.0);
-    cara.iter()
-        .flat_map(|f| f.zones.iter())
-        .filter(|z| ours(z))
-        .find_map(|z| z.laws.keys().next().cloned().or_else(|| z.comps.iter().find(|c| is_prop(c)).cloned()))
+/// The data of each element of `part` when a field gives them element by
+/// element (empty when they are the same for all).
+fn per_elem(
+    a: &Args,
+    zone: &ModelZone,
+    part: &Part,
+    cara: &[Rc<Mchaml>],
+) -> Result<Vec<crate::fem::material::Material>> {
+    let mats = super::variable_fields::element_materials(a, &material_for(zone, cara), part, cara)?;
+    Ok(if mats.len() == part.len() { mats } else { Vec::new() })
 }
 
 fn zone_values(a: &Args, zone: &ModelZone, cara: &[Rc<Mchaml>], name: &str) -> Result<Vec<f64>> {
@@ -349,7 +365,6 @@ impl Loads {
 /// may depend on (ignored by elastic materials), except the loads of the
 /// physics gibi does not run, which are refused by name.
 const UNSUPPORTED: &[(&str, &str)] = &[
-    ("PRES", "pressures: give their nodal forces (PRES 'MASS') as 'MECA'"),
     ("DEFI", "imposed strains"),
     ("TIMP", "imposed temperatures need a thermal model, which gibi's PASAPAS does not solve"),
     ("Q", "heat fluxes need a thermal model, which gibi's PASAPAS does not solve"),
@@ -432,6 +447,7 @@ pub(crate) fn loads(
         for (f, field) in weighted(&p.time) {
             let chpo = match &field {
                 Value::Chpo(c) => c.clone(),
+                Value::Mchaml(pres) if p.name == "PRES" => pressure_forces(it, a, s, pres)?,
                 other => {
                     if matches!(p.name.as_str(), "MECA" | "FORC" | "DIMP" | "T") {
                         return Err(a.err(format!(
@@ -444,8 +460,9 @@ pub(crate) fn loads(
                 }
             };
             match p.name.as_str() {
-                // 'FORC' is read like 'MECA' by Cast3M's step (unpas).
-                "MECA" | "FORC" | "DIMP" => {
+                // 'FORC' is read like 'MECA' by Cast3M's step (unpas);
+                // 'PRES' is its forces.
+                "MECA" | "FORC" | "DIMP" | "PRES" => {
                     let load = super::assemble::load(it, &s.asm, &[&chpo]).map_err(|e| {
                         let err = a.err(format!("load '{}': {}", p.name, e.message));
                         if e.message.contains("carries no condition") {
@@ -473,6 +490,20 @@ pub(crate) fn loads(
         }
     }
     Ok(Loads { history, heat, tref })
+}
+
+/// The nodal forces of a pressure field of the model's CHARGEMENT zones
+/// (PRES mop 'PRES' p), as BSIG mop gives them.
+fn pressure_forces(it: &Interp, a: &Args, s: &Structure, pres: &Rc<Mchaml>) -> Result<Rc<Chpoint>> {
+    let mut fields = vec![pres.clone()];
+    fields.extend(s.cara.iter().cloned());
+    match super::pres_model::forces(it, a, &s.model, &fields)
+        .map_err(|e| a.err(format!("load 'PRES': {}", e.message)))?
+        .pop()
+    {
+        Some(Value::Chpo(c)) => Ok(c),
+        _ => Err(a.err("load 'PRES': the pressure field gives no forces")),
+    }
 }
 
 /// An element failure in words: the zone's element type and its number.

@@ -395,3 +395,68 @@ pub(crate) fn material(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     }
     Ok(vec![Value::Mchaml(Rc::new(out))])
 }
+
+/// The material `mat` with each property that is a curve replaced by its
+/// values at the element points, the parameter each curve names read from
+/// the field `param` gives for that name (PASAPAS: the CHARGEMENT's part
+/// of that name at the step's time). Zones without curves are kept.
+pub(crate) fn material_with(
+    a: &Args,
+    model: &Model,
+    mat: &Mchaml,
+    param: &mut dyn FnMut(&str) -> Result<Value>,
+) -> Result<Mchaml> {
+    let mut out = Mchaml { subtype: mat.subtype.clone(), zones: vec![] };
+    let mut sources: Vec<(String, Source)> = Vec::new();
+    for z in &mat.zones {
+        if z.laws.is_empty() {
+            out.zones.push(z.clone());
+            continue;
+        }
+        let mz = zone_of(model, z).ok_or_else(|| a.err("the material does not belong to this model"))?;
+        let form = formulation(mz);
+        if !z.constants.is_empty() || !z.vectors.is_empty() {
+            out.zones.push(MchamlZone { laws: Default::default(), ..z.clone() });
+        }
+        for c in z.laws.values() {
+            if sources.iter().all(|(n, _)| *n != c.x_name) {
+                let src = match param(&c.x_name)? {
+                    Value::Chpo(f) => Source::Nodes(f),
+                    Value::Mchaml(f) => Source::Elements(f),
+                    v => {
+                        return Err(a.err(format!(
+                            "the {} field is a {}, not a CHPOINT or MCHAML",
+                            c.x_name,
+                            v.type_name()
+                        )))
+                    }
+                };
+                sources.push((c.x_name.clone(), src));
+            }
+        }
+        for part in &z.mesh.parts {
+            let refs = ref_points(form, part.ty, Support::Points);
+            let mut nz = MchamlZone {
+                mesh: Mesh::single(part.clone()),
+                element: z.element.clone(),
+                comps: z.laws.keys().cloned().collect(),
+                ..Default::default()
+            };
+            for e in 0..part.len() {
+                let mut pts = vec![Vec::with_capacity(z.laws.len()); refs.len()];
+                for (name, c) in &z.laws {
+                    let src = &sources.iter().find(|(n, _)| *n == c.x_name).expect("read above").1;
+                    let comps = src.components();
+                    let comp = if comps.len() == 1 { comps[0].clone() } else { c.x_name.clone() };
+                    let xs = src.at(a, &comp, part, e, &refs, Support::Points)?;
+                    for (p, x) in pts.iter_mut().zip(xs) {
+                        p.push(eval(a, &format!("{}: ", name), c, x)?);
+                    }
+                }
+                nz.values.push(pts);
+            }
+            out.zones.push(nz);
+        }
+    }
+    Ok(out)
+}
