@@ -20,6 +20,7 @@ pub mod flow;
 pub mod incomp;
 pub mod integrate;
 pub mod joint;
+pub mod kp;
 pub mod loads;
 pub mod locate;
 pub mod material;

@@ -57,6 +57,8 @@ mod mesh_repair;
 mod mesh_ruled;
 mod mesh_select;
 mod model;
+mod model_mixed;
+mod kp;
 mod nodal_field;
 mod noise;
 mod nomc_mchaml;
@@ -157,6 +159,7 @@ impl Registry {
             contact::OPS,
             chargement::OPS,
             model::OPS,
+            kp::OPS,
             manu::OPS,
             fields::OPS,
             products::OPS,

@@ -48,6 +48,9 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     }
     let mut behaviour = Vec::new();
     let mut element = String::new();
+    // Every element name given: with several shells, each element of the
+    // mesh takes the one made for its geometry (MODE's notice).
+    let mut names: Vec<String> = Vec::new();
     // ELASTIQUE is matched before any operator check: its first four
     // letters name the operator ELAS, which must not stop `MODE s
     // MECANIQUE ELASTIQUE` (Cast3M reads MODE's words as words).
@@ -59,6 +62,7 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         }
         if let Some(f) = FORMS.iter().find(|f| super::args::keyword_matches(&w, f)) {
             element = f.to_string();
+            names.push(element.clone());
         } else if ["ELAS", "ISOT"].iter().any(|k| w.starts_with(k)) {
             behaviour.push(w);
         } else if INELASTIC.iter().any(|k| w.starts_with(k)) || behaviour.iter().any(|b| inelastic(b)) {
@@ -74,6 +78,9 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         }
     }
     let mode = it.opts.mode.clone();
+    if names.len() > 1 && names.iter().all(|n| shell_geometry(n).is_some()) {
+        return super::model_mixed::shells_by_geometry(a, geo, formulation, behaviour, &names, mode);
+    }
     let shell = shell_geometry(&element);
     if let Some(ty) = shell {
         if let Some(p) = geo.parts.iter().find(|p| p.ty != ty) {
@@ -326,7 +333,7 @@ pub(crate) fn material_for(zone: &ModelZone, fields: &[Rc<Mchaml>]) -> Material 
 }
 
 /// The mesh geometry a shell element needs (None for other elements).
-fn shell_geometry(element: &str) -> Option<ElemType> {
+pub(crate) fn shell_geometry(element: &str) -> Option<ElemType> {
     match element {
         "COQ3" | "DKT" | "DST" => Some(ElemType::Tri3),
         "COQ4" => Some(ElemType::Qua4),
