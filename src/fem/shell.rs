@@ -44,8 +44,8 @@ use super::vec3::{cross, dot, sub, unit};
 /// Fictitious drilling stiffness, relative to the bending rotations'.
 pub const DRILL: f64 = 1e-4;
 
-const STRESS: [&str; 8] = ["N11", "N22", "N12", "M11", "M22", "M12", "V1", "V2"];
-const STRAIN: [&str; 6] = ["EPSS", "EPTT", "GAST", "RTSS", "RTTT", "RTST"];
+pub const STRESS: [&str; 8] = ["N11", "N22", "N12", "M11", "M22", "M12", "V1", "V2"];
+pub const STRAIN: [&str; 6] = ["EPSS", "EPTT", "GAST", "RTSS", "RTTT", "RTST"];
 
 pub fn dofs(f: Formulation, mode: Mode) -> Result<&'static [&'static str], FemError> {
     match mode {

@@ -22,7 +22,7 @@ pub(crate) const OPS: &[OpDef] = &[
 ];
 
 const FORMS: &[&str] = &[
-    "BARR", "POUT", "TIMO", "Q4RI", "Q8RI", "COQ3", "DKT", "DST", "COQ4", "COQ2", "TRI3", "TRI6", "QUA4", "QUA8",
+    "BARR", "POUT", "TIMO", "Q4RI", "Q8RI", "COQ3", "DKT", "DST", "COQ4", "COQ6", "COQ8", "COQ2", "TRI3", "TRI6", "QUA4", "QUA8",
     "CUB8", "TET4", "PRI6", "CU20", "PR15", "SEG2", "JOI2", "JOI3", "JOI4", "ICT3", "ICQ4", "ICT6", "ICQ8", "ICT4",
     "ICC8", "ICP6",
 ];
@@ -95,8 +95,10 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                     "COQ2 is the axisymmetric (AXIS) or plane shell on lines: mesh a line with OPTI ELEM SEG2"
                 } else if ty == ElemType::Tri3 {
                     "mesh the surface with triangles (OPTI ELEM TRI3, or CHAN 'TRI3'), or use COQ4 on QUA4"
-                } else {
+                } else if ty == ElemType::Qua4 {
                     "mesh the surface with quadrangles (OPTI ELEM QUA4), or use COQ3/DKT on TRI3"
+                } else {
+                    "COQ6 is made for TRI6 meshes and COQ8 for QUA8 (OPTI ELEM TRI6 or QUA8)"
                 }));
         }
         if ty == ElemType::Seg2 {
@@ -337,6 +339,8 @@ pub(crate) fn shell_geometry(element: &str) -> Option<ElemType> {
     match element {
         "COQ3" | "DKT" | "DST" => Some(ElemType::Tri3),
         "COQ4" => Some(ElemType::Qua4),
+        "COQ6" => Some(ElemType::Tri6),
+        "COQ8" => Some(ElemType::Qua8),
         "COQ2" => Some(ElemType::Seg2),
         _ => None,
     }
@@ -348,6 +352,8 @@ pub(crate) fn formulation(zone: &ModelZone) -> Formulation {
         "DKT" => Formulation::Dkt,
         "DST" => Formulation::Dst,
         "COQ4" => Formulation::Coq4,
+        "COQ6" => Formulation::Coq6,
+        "COQ8" => Formulation::Coq8,
         "COQ2" => Formulation::Coq2,
         "BARR" => Formulation::Barr,
         "POUT" => Formulation::Pout,
