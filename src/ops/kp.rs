@@ -21,9 +21,9 @@ pub(crate) const OPS: &[OpDef] = &[OpDef {
 
 fn kp_op(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let model = a.req::<Rc<Model>>()?;
-    let rg = a
-        .opt::<f64>()
-        .ok_or_else(|| a.err("KP needs the modulus RG of the pressure gradient (KP with a pressure field is not available)"))?;
+    let rg = a.opt::<f64>().ok_or_else(|| {
+        a.err("KP needs the modulus RG of the pressure gradient (KP with a pressure field is not available)")
+    })?;
     if !rg.is_finite() {
         return Err(a.err("KP: RG is not a finite number"));
     }

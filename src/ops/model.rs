@@ -22,9 +22,9 @@ pub(crate) const OPS: &[OpDef] = &[
 ];
 
 const FORMS: &[&str] = &[
-    "BARR", "POUT", "TIMO", "Q4RI", "Q8RI", "COQ3", "DKT", "DST", "COQ4", "COQ6", "COQ8", "COQ2", "TRI3", "TRI6", "QUA4", "QUA8",
-    "CUB8", "TET4", "PRI6", "CU20", "PR15", "SEG2", "JOI2", "JOI3", "JOI4", "ICT3", "ICQ4", "ICT6", "ICQ8", "ICT4",
-    "ICC8", "ICP6",
+    "BARR", "POUT", "TIMO", "Q4RI", "Q8RI", "COQ3", "DKT", "DST", "COQ4", "COQ6", "COQ8", "COQ2", "TRI3", "TRI6",
+    "QUA4", "QUA8", "CUB8", "TET4", "PRI6", "CU20", "PR15", "SEG2", "JOI2", "JOI3", "JOI4", "ICT3", "ICQ4", "ICT6",
+    "ICQ8", "ICT4", "ICC8", "ICP6",
 ];
 
 const BEHAVIOURS: &[&str] = &["ELASTIQUE", "ISOTROPE", "EPSILON"];
