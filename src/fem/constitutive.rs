@@ -80,6 +80,8 @@ pub fn thermal_strain(
         | Formulation::Dkt
         | Formulation::Dst
         | Formulation::Coq4
+        | Formulation::Coq6
+        | Formulation::Coq8
         | Formulation::Coq2
         | Formulation::Joint => Err(FemError::Unsupported { form: f.name(), elem: ty.name(), mode: mode.name() }),
     }
@@ -109,7 +111,13 @@ pub fn hooke(f: Formulation, ty: ElemType, mode: Mode, m: &Material, eps: &Gauss
         Formulation::Pout | Formulation::Timo => vec!["EPSS", "GAXY", "GAXZ", "CURX", "CURY", "CURZ"],
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => solid::strain_comps(mode),
         Formulation::Joint => return super::joint::hooke(mode, m, eps),
-        Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 | Formulation::Coq2 => {
+        Formulation::Coq3
+        | Formulation::Dkt
+        | Formulation::Dst
+        | Formulation::Coq4
+        | Formulation::Coq6
+        | Formulation::Coq8
+        | Formulation::Coq2 => {
             unreachable!("refused above")
         }
     };
@@ -140,6 +148,8 @@ pub fn hooke(f: Formulation, ty: ElemType, mode: Mode, m: &Material, eps: &Gauss
         | Formulation::Dkt
         | Formulation::Dst
         | Formulation::Coq4
+        | Formulation::Coq6
+        | Formulation::Coq8
         | Formulation::Coq2
         | Formulation::Joint => Err(FemError::Unsupported { form: f.name(), elem: ty.name(), mode: mode.name() }),
     }

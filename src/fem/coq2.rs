@@ -38,8 +38,8 @@ use super::element::{ElemMatrix, FemError, GaussField, Mode};
 use super::material::Material;
 use super::quadrature::{seg, QPoint};
 
-const STRESS: [&str; 4] = ["N11", "N22", "M11", "M22"];
-const STRAIN: [&str; 4] = ["EPSS", "EPTT", "RTSS", "RTTT"];
+pub const STRESS: [&str; 4] = ["N11", "N22", "M11", "M22"];
+pub const STRAIN: [&str; 4] = ["EPSS", "EPTT", "RTSS", "RTTT"];
 const NAME: &str = "COQ2";
 const STIFF: usize = 3;
 

@@ -59,6 +59,9 @@ pub enum Formulation {
     /// Shell with transverse shear on TRI3 (see [`super::dst`]).
     Dst,
     Coq4,
+    /// Thick curved shells on TRI6 and QUA8 (see [`super::thick_shell`]).
+    Coq6,
+    Coq8,
     /// Thin conical (AXIS) or cylindrical (plane modes) shell on SEG2
     /// (see [`coq2`]).
     Coq2,
@@ -81,14 +84,25 @@ impl Formulation {
             Formulation::Dkt => "DKT",
             Formulation::Dst => "DST",
             Formulation::Coq4 => "COQ4",
+            Formulation::Coq6 => "COQ6",
+            Formulation::Coq8 => "COQ8",
             Formulation::Coq2 => "COQ2",
             Formulation::Joint => "JOI2",
         }
     }
 
-    /// COQ3, DKT, DST, COQ4 or COQ2.
+    /// COQ3, DKT, DST, COQ4, COQ6, COQ8 or COQ2.
     pub fn is_shell(self) -> bool {
-        matches!(self, Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 | Formulation::Coq2)
+        matches!(
+            self,
+            Formulation::Coq3
+                | Formulation::Dkt
+                | Formulation::Dst
+                | Formulation::Coq4
+                | Formulation::Coq6
+                | Formulation::Coq8
+                | Formulation::Coq2
+        )
     }
 }
 
@@ -144,6 +158,7 @@ pub fn node_dofs(f: Formulation, mode: Mode) -> Result<&'static [&'static str], 
         Formulation::Pout | Formulation::Timo => beam::dofs(mode),
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => Ok(solid::dofs(mode)),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => shell::dofs(f, mode),
+        Formulation::Coq6 | Formulation::Coq8 => super::thick_shell::dofs(f, mode),
         Formulation::Coq2 => coq2::dofs(mode),
         Formulation::Joint => joint::dofs(mode),
     }
@@ -200,6 +215,7 @@ fn check(f: Formulation, ty: ElemType, mode: Mode) -> Result<(), FemError> {
         Formulation::Solid => ty.dim() >= 2,
         Formulation::Incomp => super::incomp::geometry_ok(ty),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => ty == shell::geometry(f),
+        Formulation::Coq6 | Formulation::Coq8 => ty == super::thick_shell::geometry(f),
         Formulation::Coq2 => ty == ElemType::Seg2,
         Formulation::Joint => joint::accepts(ty, mode),
     };
@@ -225,6 +241,7 @@ pub fn stiffness(
         Formulation::Incomp => super::incomp::stiffness(ty, mode, x, m),
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::stiffness(f, ty, mode, x, m),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => shell::stiffness(f, mode, x, m),
+        Formulation::Coq6 | Formulation::Coq8 => super::thick_shell::unavailable("the stiffness (RIGI)", f),
         Formulation::Coq2 => coq2::stiffness(mode, x, m),
         Formulation::Joint => joint::stiffness(ty, mode, x, m),
     }
@@ -250,6 +267,7 @@ pub fn mass(
         Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => {
             shell::mass(f, mode, x, m, lumped)
         }
+        Formulation::Coq6 | Formulation::Coq8 => super::thick_shell::unavailable("the mass (MASS)", f),
         Formulation::Coq2 => coq2::mass(mode, x, m, lumped),
         // A joint has no thickness, hence no mass.
         Formulation::Joint => {
@@ -279,6 +297,7 @@ pub fn stress(
         Formulation::Incomp => super::incomp::stress(ty, mode, x, m, u),
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::field(f, ty, mode, x, m, u, true),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => shell::stress(f, mode, x, m, u),
+        Formulation::Coq6 | Formulation::Coq8 => super::thick_shell::unavailable("SIGM", f),
         Formulation::Coq2 => coq2::stress(mode, x, m, u),
         Formulation::Joint => joint::stress(ty, mode, x, m, u),
     }
@@ -323,6 +342,7 @@ pub fn strain(
             solid::field(f, ty, mode, x, m, u, false)
         }
         Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => shell::strain(f, mode, x, m, u),
+        Formulation::Coq6 | Formulation::Coq8 => super::thick_shell::unavailable("EPSI", f),
         Formulation::Coq2 => coq2::strain(mode, x, u),
         Formulation::Joint => joint::strain(ty, mode, x, m, u),
     }
@@ -349,6 +369,7 @@ pub fn internal_forces(
         Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => {
             shell::internal_forces(f, mode, x, m, sig)
         }
+        Formulation::Coq6 | Formulation::Coq8 => super::thick_shell::unavailable("BSIG", f),
         Formulation::Coq2 => coq2::internal_forces(mode, x, m, sig),
         Formulation::Joint => joint::internal_forces(ty, mode, x, m, sig),
     }
@@ -364,6 +385,7 @@ pub fn gauss_points(f: Formulation, ty: ElemType) -> Vec<([f64; 3], f64)> {
         }
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => solid::rule(f, ty),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => shell::rule(ty),
+        Formulation::Coq6 | Formulation::Coq8 => super::thick_shell::rule(f),
         Formulation::Coq2 => coq2::rule(),
         // On the face; the joint's reference coordinate across is 0.
         Formulation::Joint => joint::rule(ty),

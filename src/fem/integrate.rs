@@ -98,6 +98,7 @@ pub fn point_weights(
         Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => {
             super::shell::point_weights(f, x)
         }
+        Formulation::Coq6 | Formulation::Coq8 => super::thick_shell::point_weights(f, x),
         Formulation::Coq2 => super::coq2::point_weights(mode, x),
         Formulation::Joint => super::joint::point_weights(ty, mode, x),
     }
@@ -121,6 +122,7 @@ pub fn node_weights(
             solid::node_weights(ty, mode, x, m)
         }
         Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => super::shell::node_weights(f, x),
+        Formulation::Coq6 | Formulation::Coq8 => super::thick_shell::node_weights(f, x),
         Formulation::Coq2 => super::coq2::node_weights(mode, x),
         Formulation::Joint => Err(FemError::NotFor { what: "integrating a nodal field", form: f.name() }),
     }

@@ -20,6 +20,7 @@ pub mod flow;
 pub mod incomp;
 pub mod integrate;
 pub mod joint;
+pub mod kp;
 pub mod loads;
 pub mod locate;
 pub mod material;
@@ -33,6 +34,7 @@ pub mod skin;
 pub mod solid;
 pub mod stress;
 pub mod surface_vectors;
+pub mod thick_shell;
 pub mod vec3;
 pub mod work;
 

@@ -44,8 +44,8 @@ use super::vec3::{cross, dot, sub, unit};
 /// Fictitious drilling stiffness, relative to the bending rotations'.
 pub const DRILL: f64 = 1e-4;
 
-const STRESS: [&str; 8] = ["N11", "N22", "N12", "M11", "M22", "M12", "V1", "V2"];
-const STRAIN: [&str; 6] = ["EPSS", "EPTT", "GAST", "RTSS", "RTTT", "RTST"];
+pub const STRESS: [&str; 8] = ["N11", "N22", "N12", "M11", "M22", "M12", "V1", "V2"];
+pub const STRAIN: [&str; 6] = ["EPSS", "EPTT", "GAST", "RTSS", "RTTT", "RTST"];
 
 pub fn dofs(f: Formulation, mode: Mode) -> Result<&'static [&'static str], FemError> {
     match mode {
@@ -365,30 +365,59 @@ pub fn node_weights(f: Formulation, x: &[[f64; 3]]) -> Result<Vec<f64>, FemError
     Ok(out)
 }
 
-/// Lumped mass: ρ t ∫N_i on each translation, ρ t³/12 ∫N_i on each
-/// rotation (the same on all three, so the matrix needs no turning).
-/// There is no consistent mass for these elements.
+/// Mass: ρ t on each translation, ρ t³/12 on each rotation (the same on
+/// all three, so the matrix needs no turning), with the corner shape
+/// functions: lumped, ∫N_i on the diagonal; consistent, ∫N_i N_j (the
+/// rule is exact for these products). Either way the total translational
+/// mass is ρ t A.
 pub fn mass(f: Formulation, mode: Mode, x: &[[f64; 3]], m: &Material, lumped: bool) -> Result<ElemMatrix, FemError> {
     dofs(f, mode)?;
-    if !lumped {
-        return Err(FemError::Unsupported {
-            form: "consistent mass (use MASS ... 'LUMP') of shell",
-            elem: geometry(f).name(),
-            mode: mode.name(),
-        });
-    }
     let rho = m.density(f.name())?;
     let t = m.positive(m.epai, "EPAI", f.name())?;
-    let w = node_weights(f, x)?;
-    let n = 6 * x.len();
+    let nn = x.len();
+    let nij = if lumped {
+        let mut d = vec![0.0; nn * nn];
+        for (i, wi) in node_weights(f, x)?.into_iter().enumerate() {
+            d[i * nn + i] = wi;
+        }
+        d
+    } else {
+        shape_products(f, x)?
+    };
+    let n = 6 * nn;
     let mut k = vec![0.0; n * n];
-    for (i, wi) in w.iter().enumerate() {
-        for c in 0..6 {
-            let v = if c < 3 { rho * t * wi } else { rho * t * t * t / 12.0 * wi };
-            k[(6 * i + c) * n + 6 * i + c] = v;
+    for i in 0..nn {
+        for j in 0..nn {
+            for c in 0..6 {
+                let v = if c < 3 { rho * t } else { rho * t * t * t / 12.0 };
+                k[(6 * i + c) * n + 6 * j + c] = v * nij[i * nn + j];
+            }
         }
     }
-    Ok(ElemMatrix { dofs: dof_list(x.len()), k })
+    Ok(ElemMatrix { dofs: dof_list(nn), k })
+}
+
+/// ∫ N_i N_j dA over the element plane (`nn × nn`, row-major): the rule
+/// is exact for these products.
+pub fn shape_products(f: Formulation, x: &[[f64; 3]]) -> Result<Vec<f64>, FemError> {
+    let fr = frame(f, x)?;
+    let ty = geometry(f);
+    let nn = x.len();
+    let mut nij = vec![0.0; nn * nn];
+    for ((p, w), (xi, _)) in points(f, &fr)?.iter().zip(rule(ty)) {
+        let sh = super::shape::eval(ty, xi).n;
+        for i in 0..nn {
+            for j in 0..nn {
+                nij[i * nn + j] += w * p.det * sh[i] * sh[j];
+            }
+        }
+    }
+    Ok(nij)
+}
+
+/// The element's unit normal (x3 of its frame).
+pub fn normal(f: Formulation, x: &[[f64; 3]]) -> Result<[f64; 3], FemError> {
+    Ok(frame(f, x)?.r[2])
 }
 
 /// Nodal forces of a uniform pressure `p` on a shell element (PRES

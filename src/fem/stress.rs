@@ -39,7 +39,13 @@ pub fn von_mises(f: Formulation, mode: Mode, m: &Material, sig: &GaussField) -> 
                 })
                 .collect()
         }
-        Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 | Formulation::Coq2 => {
+        Formulation::Coq3
+        | Formulation::Dkt
+        | Formulation::Dst
+        | Formulation::Coq4
+        | Formulation::Coq6
+        | Formulation::Coq8
+        | Formulation::Coq2 => {
             let t = m.positive(m.epai, "EPAI", f.name())?;
             let vm = |s: [f64; 3]| (s[0] * s[0] + s[1] * s[1] - s[0] * s[1] + 3.0 * s[2] * s[2]).sqrt();
             sig.values

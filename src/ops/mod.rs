@@ -39,6 +39,7 @@ mod insert;
 mod integrate;
 mod io;
 mod joint_mesh;
+mod kp;
 mod limits;
 mod lists;
 mod lists_search;
@@ -57,6 +58,7 @@ mod mesh_repair;
 mod mesh_ruled;
 mod mesh_select;
 mod model;
+mod model_mixed;
 mod nodal_field;
 mod noise;
 mod nomc_mchaml;
@@ -158,6 +160,7 @@ impl Registry {
             contact::OPS,
             chargement::OPS,
             model::OPS,
+            kp::OPS,
             manu::OPS,
             fields::OPS,
             products::OPS,

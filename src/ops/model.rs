@@ -22,9 +22,9 @@ pub(crate) const OPS: &[OpDef] = &[
 ];
 
 const FORMS: &[&str] = &[
-    "BARR", "POUT", "TIMO", "Q4RI", "Q8RI", "COQ3", "DKT", "DST", "COQ4", "COQ2", "TRI3", "TRI6", "QUA4", "QUA8",
-    "CUB8", "TET4", "PRI6", "CU20", "PR15", "SEG2", "JOI2", "JOI3", "JOI4", "ICT3", "ICQ4", "ICT6", "ICQ8", "ICT4",
-    "ICC8", "ICP6",
+    "BARR", "POUT", "TIMO", "Q4RI", "Q8RI", "COQ3", "DKT", "DST", "COQ4", "COQ6", "COQ8", "COQ2", "TRI3", "TRI6",
+    "QUA4", "QUA8", "CUB8", "TET4", "PRI6", "CU20", "PR15", "SEG2", "JOI2", "JOI3", "JOI4", "ICT3", "ICQ4", "ICT6",
+    "ICQ8", "ICT4", "ICC8", "ICP6",
 ];
 
 const BEHAVIOURS: &[&str] = &["ELASTIQUE", "ISOTROPE", "EPSILON"];
@@ -48,6 +48,9 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     }
     let mut behaviour = Vec::new();
     let mut element = String::new();
+    // Every element name given: with several shells, each element of the
+    // mesh takes the one made for its geometry (MODE's notice).
+    let mut names: Vec<String> = Vec::new();
     // ELASTIQUE is matched before any operator check: its first four
     // letters name the operator ELAS, which must not stop `MODE s
     // MECANIQUE ELASTIQUE` (Cast3M reads MODE's words as words).
@@ -59,6 +62,7 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         }
         if let Some(f) = FORMS.iter().find(|f| super::args::keyword_matches(&w, f)) {
             element = f.to_string();
+            names.push(element.clone());
         } else if super::args::keyword_matches(&w, "CONSTITUANT") {
             // gibi ties element fields to model zones by their mesh, so the
             // constituent's name is read and not kept (as MANU 'CHML').
@@ -78,6 +82,9 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         }
     }
     let mode = it.opts.mode.clone();
+    if names.len() > 1 && names.iter().all(|n| shell_geometry(n).is_some()) {
+        return super::model_mixed::shells_by_geometry(a, geo, formulation, behaviour, &names, mode);
+    }
     let shell = shell_geometry(&element);
     if let Some(ty) = shell {
         if let Some(p) = geo.parts.iter().find(|p| p.ty != ty) {
@@ -92,8 +99,10 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                     "COQ2 is the axisymmetric (AXIS) or plane shell on lines: mesh a line with OPTI ELEM SEG2"
                 } else if ty == ElemType::Tri3 {
                     "mesh the surface with triangles (OPTI ELEM TRI3, or CHAN 'TRI3'), or use COQ4 on QUA4"
-                } else {
+                } else if ty == ElemType::Qua4 {
                     "mesh the surface with quadrangles (OPTI ELEM QUA4), or use COQ3/DKT on TRI3"
+                } else {
+                    "COQ6 is made for TRI6 meshes and COQ8 for QUA8 (OPTI ELEM TRI6 or QUA8)"
                 }));
         }
         if ty == ElemType::Seg2 {
@@ -331,10 +340,12 @@ pub(crate) fn material_for(zone: &ModelZone, fields: &[Rc<Mchaml>]) -> Material 
 }
 
 /// The mesh geometry a shell element needs (None for other elements).
-fn shell_geometry(element: &str) -> Option<ElemType> {
+pub(crate) fn shell_geometry(element: &str) -> Option<ElemType> {
     match element {
         "COQ3" | "DKT" | "DST" => Some(ElemType::Tri3),
         "COQ4" => Some(ElemType::Qua4),
+        "COQ6" => Some(ElemType::Tri6),
+        "COQ8" => Some(ElemType::Qua8),
         "COQ2" => Some(ElemType::Seg2),
         _ => None,
     }
@@ -346,6 +357,8 @@ pub(crate) fn formulation(zone: &ModelZone) -> Formulation {
         "DKT" => Formulation::Dkt,
         "DST" => Formulation::Dst,
         "COQ4" => Formulation::Coq4,
+        "COQ6" => Formulation::Coq6,
+        "COQ8" => Formulation::Coq8,
         "COQ2" => Formulation::Coq2,
         "BARR" => Formulation::Barr,
         "POUT" => Formulation::Pout,

@@ -135,6 +135,11 @@ fn stress_point_comps(
             vec!["SI11", "SI22", "SI33", "COX1", "COY1", "COZ1", "COX2", "COY2", "COZ2", "COX3", "COY3", "COZ3"]
         }
         "PRINCIPA" if massive => vec!["SI11", "SI22", "SI33", "COX1", "COY1", "COX2", "COY2"],
+        // Shells: their generalised stresses and strains (SIGM, EPSI).
+        "CONTRAIN" if f == Formulation::Coq2 => crate::fem::coq2::STRESS.to_vec(),
+        "DEFORMAT" | "DEFINELA" if f == Formulation::Coq2 => crate::fem::coq2::STRAIN.to_vec(),
+        "CONTRAIN" if f.is_shell() => crate::fem::shell::STRESS.to_vec(),
+        "DEFORMAT" | "DEFINELA" if f.is_shell() => crate::fem::shell::STRAIN.to_vec(),
         _ => return Err(format!("{} of {} elements is not available (massive elements only)", kind, zone.element)),
     };
     Ok(v.into_iter().map(String::from).collect())
