@@ -47,8 +47,9 @@ struct Vert {
     x: [f64; 3],
     s: f64,
     node: usize,
-    /// The far end of the edge when this is an edge point.
-    other: Option<(usize, f64)>,
+    /// For an edge point: the field at `node`, then the far end of the
+    /// edge and the field there.
+    other: Option<(f64, usize, f64)>,
 }
 
 struct Builder<'n> {
@@ -60,8 +61,8 @@ struct Builder<'n> {
 
 impl Builder<'_> {
     fn node(&mut self, v: &Vert) -> usize {
-        let Some((b, sb)) = v.other else { return v.node };
-        let (a, sa) = (v.node, v.s);
+        let Some((sa, b, sb)) = v.other else { return v.node };
+        let a = v.node;
         let key = if a < b { (a, sa.to_bits(), b, sb.to_bits()) } else { (b, sb.to_bits(), a, sa.to_bits()) };
         if let Some(&n) = self.edge_points.get(&key) {
             return n;
@@ -102,7 +103,7 @@ fn vert(nodes: &Nodes, n: usize, s: f64) -> Vert {
 
 fn edge_point(a: &Vert, b: &Vert) -> Vert {
     let t = a.s / (a.s - b.s);
-    Vert { x: [0, 1, 2].map(|k| a.x[k] + t * (b.x[k] - a.x[k])), s: 0.0, node: a.node, other: Some((b.node, b.s)) }
+    Vert { x: [0, 1, 2].map(|k| a.x[k] + t * (b.x[k] - a.x[k])), s: 0.0, node: a.node, other: Some((a.s, b.node, b.s)) }
 }
 
 /// The isovalue (or sub-level set) of `v` over the elements.
