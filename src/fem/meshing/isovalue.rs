@@ -37,8 +37,7 @@ pub struct IsoElement<'a> {
 
 /// Cube to six tetrahedra sharing the diagonal 0–6 (nodes 0–3 bottom,
 /// 4–7 top, in Cast3M's order); each is positively oriented when the cube is.
-const CUB8_TETS: [[usize; 4]; 6] =
-    [[0, 1, 2, 6], [0, 2, 3, 6], [0, 3, 7, 6], [0, 7, 4, 6], [0, 4, 5, 6], [0, 5, 1, 6]];
+const CUB8_TETS: [[usize; 4]; 6] = [[0, 1, 2, 6], [0, 2, 3, 6], [0, 3, 7, 6], [0, 7, 4, 6], [0, 4, 5, 6], [0, 5, 1, 6]];
 
 /// A vertex of a cut: an existing node, or the point of an edge where the
 /// field crosses the value.
@@ -111,7 +110,10 @@ pub fn isovalue(nodes: &mut Nodes, elems: &[IsoElement], v: f64, mode: IsoMode) 
     let mut b = Builder { nodes, edge_points: HashMap::new(), parts: Vec::new(), seen: HashSet::new() };
     for e in elems {
         if e.values.len() != e.nodes.len() {
-            return fail(OP, format!("a {} element has {} values for {} nodes", e.ty.name(), e.values.len(), e.nodes.len()));
+            return fail(
+                OP,
+                format!("a {} element has {} values for {} nodes", e.ty.name(), e.values.len(), e.nodes.len()),
+            );
         }
         if let Some(&n) = e.nodes.iter().find(|&&n| n >= b.nodes.len()) {
             return fail(OP, format!("node {n} does not exist"));
@@ -146,7 +148,10 @@ pub fn isovalue(nodes: &mut Nodes, elems: &[IsoElement], v: f64, mode: IsoMode) 
             ElemType::Tet4 => cut_simplex(&mut b, &vs, mode),
             ElemType::Cub8 => {
                 if mode != IsoMode::Equal {
-                    return fail(OP, "the parts of CUB8 elements below or above a value are not available: cut them as TET4");
+                    return fail(
+                        OP,
+                        "the parts of CUB8 elements below or above a value are not available: cut them as TET4",
+                    );
                 }
                 for t in CUB8_TETS {
                     let ids: HashSet<usize> = t.iter().map(|&k| e.nodes[k]).collect();
@@ -158,7 +163,10 @@ pub fn isovalue(nodes: &mut Nodes, elems: &[IsoElement], v: f64, mode: IsoMode) 
             other => {
                 return fail(
                     OP,
-                    format!("the field's elements must be linear (POI1, SEG2, TRI3, QUA4, TET4, CUB8), not {}", other.name()),
+                    format!(
+                        "the field's elements must be linear (POI1, SEG2, TRI3, QUA4, TET4, CUB8), not {}",
+                        other.name()
+                    ),
                 )
             }
         }
@@ -325,7 +333,8 @@ fn gradient_2d(vs: &[Vert]) -> [f64; 2] {
 fn gradient_3d(vs: &[Vert]) -> [f64; 3] {
     let e = |k: usize| [vs[k].x[0] - vs[0].x[0], vs[k].x[1] - vs[0].x[1], vs[k].x[2] - vs[0].x[2]];
     let (a, b, c) = (e(1), e(2), e(3));
-    let cross = |u: [f64; 3], v: [f64; 3]| [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
+    let cross =
+        |u: [f64; 3], v: [f64; 3]| [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
     let (bc, ca, ab) = (cross(b, c), cross(c, a), cross(a, b));
     let det = a[0] * bc[0] + a[1] * bc[1] + a[2] * bc[2];
     if det == 0.0 {
