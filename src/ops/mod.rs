@@ -50,6 +50,7 @@ mod mesh;
 mod mesh_delaunay;
 mod mesh_edit;
 mod mesh_free;
+mod mesh_isov;
 mod mesh_lines;
 mod mesh_move;
 mod mesh_partition;
@@ -144,6 +145,7 @@ impl Registry {
             mesh_free::OPS,
             mesh_partition::OPS,
             mesh_delaunay::OPS,
+            mesh_isov::OPS,
             mesh_lines::OPS,
             mesh_ruled::OPS,
             joint_mesh::OPS,

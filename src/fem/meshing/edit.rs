@@ -295,6 +295,8 @@ pub fn change_to_linear(mesh: &Mesh) -> Mesh {
                 ElemType::Seg3 => (ElemType::Seg2, &[0, 2]),
                 ElemType::Tri6 => (ElemType::Tri3, &[0, 2, 4]),
                 ElemType::Qua8 => (ElemType::Qua4, &[0, 2, 4, 6]),
+                ElemType::Cu20 => (ElemType::Cub8, &[0, 2, 4, 6, 12, 14, 16, 18]),
+                ElemType::Pr15 => (ElemType::Pri6, &[0, 2, 4, 9, 11, 13]),
                 t => return (t, p.conn.clone()),
             };
             (ty, p.elems().flat_map(|e| keep.iter().map(move |&k| e[k])).collect())

@@ -32,6 +32,7 @@ pub mod extract;
 pub mod free;
 pub mod grading;
 pub mod grid;
+pub mod isovalue;
 pub mod joints;
 pub mod line;
 pub mod motion;
