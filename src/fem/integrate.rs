@@ -138,18 +138,31 @@ fn surface_in_space(
     rule: &[QPoint],
     at_nodes: bool,
 ) -> Result<Option<Vec<f64>>, FemError> {
-    if mode != Mode::Trid || ty.dim() != 2 {
+    // Lines in the plane modes too (the edges of a pressure model): per
+    // unit thickness, over the whole ring in AXIS as the massive weights.
+    let on_line = mode != Mode::Trid && ty.dim() == 1;
+    if !on_line && (mode != Mode::Trid || ty.dim() != 2) {
         return Ok(None);
     }
     if x.len() != ty.nodes() {
         return Err(FemError::WrongNodeCount { elem: ty.name(), expected: ty.nodes(), got: x.len() });
     }
+    let ring = |p: [f64; 3]| -> Result<f64, FemError> {
+        if mode != Mode::Axis {
+            return Ok(1.0);
+        }
+        let r: f64 = eval(ty, p).n.iter().zip(x).map(|(n, q)| n * q[0]).sum();
+        if r < 0.0 {
+            return Err(FemError::Degenerate { elem: ty.name(), why: format!("AXIS element reaches r = {r:e} < 0") });
+        }
+        Ok(std::f64::consts::TAU * r)
+    };
     if !at_nodes {
-        return Ok(Some(rule.iter().map(|&(p, w)| w * jacobian(ty, x, p)).collect()));
+        return Ok(Some(rule.iter().map(|&(p, w)| Ok(w * jacobian(ty, x, p) * ring(p)?)).collect::<Result<_, _>>()?));
     }
     let mut w = vec![0.0; ty.nodes()];
     for &(p, wp) in rule {
-        let j = wp * jacobian(ty, x, p);
+        let j = wp * jacobian(ty, x, p) * ring(p)?;
         for (wi, ni) in w.iter_mut().zip(eval(ty, p).n) {
             *wi += ni * j;
         }

@@ -20,7 +20,7 @@
 use super::element::{ElemMatrix, FemError, Formulation, GaussField, Mode};
 use super::material::{elasticity, Material};
 use super::mesh::ElemType;
-use super::quadrature::{hexa, prism, quad, tet, tri, QPoint};
+use super::quadrature::{hexa, prism, quad, seg, tet, tri, QPoint};
 use super::shape::eval;
 
 /// Stiffness/stress integration rule.
@@ -44,6 +44,10 @@ pub fn rule(f: Formulation, ty: ElemType) -> Vec<QPoint> {
         (_, ElemType::Pri6) => prism(3, 2),
         (_, ElemType::Cu20) => hexa(3),
         (_, ElemType::Pr15) => prism(7, 3),
+        // The edges of a pressure model (MODE 'CHARGEMENT') in the plane
+        // modes carry their values at Gauss points of their own.
+        (_, ElemType::Seg2) => seg(2),
+        (_, ElemType::Seg3) => seg(3),
         _ => vec![],
     }
 }

@@ -406,7 +406,9 @@ pub(crate) fn extr_mchaml(a: &mut Args, m: &Mchaml) -> Result<Vec<Value>> {
         }
         return Ok(vec![Value::ListMots(Rc::new(names))]);
     }
-    let comp = a.word_not_operator().ok_or_else(|| a.missing("a component"))?;
+    // The component may also follow the zone, element and point numbers
+    // (Cast3M reads the arguments by type).
+    let comp = a.word_not_operator();
     let mut idx = [1i64; 3];
     for k in idx.iter_mut() {
         match a.opt::<i64>() {
@@ -414,6 +416,7 @@ pub(crate) fn extr_mchaml(a: &mut Args, m: &Mchaml) -> Result<Vec<Value>> {
             None => break,
         }
     }
+    let comp = comp.or_else(|| a.word_not_operator()).ok_or_else(|| a.missing("a component"))?;
     let z = m.zones.get((idx[0] - 1).max(0) as usize).ok_or_else(|| a.err(format!("no zone {}", idx[0])))?;
     if let Some(v) = z.constants.get(&comp) {
         return Ok(vec![Value::Float(*v)]);

@@ -90,6 +90,7 @@ fn chml(a: &mut Args, early: Option<Rc<Mesh>>) -> Result<Vec<Value>> {
     let mut at_nodes = false;
     let mut spread = false;
     let mut centre = false;
+    let mut fields: Vec<(String, Rc<Mchaml>)> = Vec::new();
     const SUPPORTS: &[&str] = &["STRESSES", "GRAVITE", "RIGIDITE", "MASSE", "DEFORMATIONS"];
     loop {
         // TYPE unquoted is also an operator name: read as the keyword here.
@@ -120,7 +121,15 @@ fn chml(a: &mut Args, early: Option<Rc<Mesh>>) -> Result<Vec<Value>> {
                 None => match a.opt_right::<Rc<Vec<f64>>>() {
                     Some(l) if spread && !l.is_empty() => Err(l),
                     Some(_) => return Err(a.err(format!("component {}: a LISTREEL value needs 'REPA' before it", w))),
-                    None => return Err(a.err(format!("component {} needs a value", w))),
+                    None => match a.opt_right::<Rc<Mchaml>>() {
+                        // A one-component field gives its values, element
+                        // by element (filled in once the zones are made).
+                        Some(f) => {
+                            fields.push((w.clone(), f));
+                            Ok(0.0)
+                        }
+                        None => return Err(a.err(format!("component {} needs a value", w))),
+                    },
                 },
             };
             match comps.iter().position(|c| *c == w) {
@@ -182,7 +191,11 @@ fn chml(a: &mut Args, early: Option<Rc<Mesh>>) -> Result<Vec<Value>> {
             });
         }
     }
-    Ok(vec![Value::Mchaml(Rc::new(Mchaml { subtype, zones }))])
+    let mut out = Mchaml { subtype, zones };
+    for (comp, f) in &fields {
+        super::manu_chml_fields::fill(&mut out, comp, f).map_err(|m| a.err(format!("component {}: {}", comp, m)))?;
+    }
+    Ok(vec![Value::Mchaml(Rc::new(out))])
 }
 
 /// MANU 'CHPO' GEO ((n) C1 V1 … | LISTMOTS LISTREEL) ('NATURE' w) ('TITRE' t):

@@ -44,6 +44,7 @@ mod limits;
 mod lists;
 mod lists_search;
 mod manu;
+mod manu_chml_fields;
 mod masq;
 mod math;
 mod mesh;
