@@ -18,6 +18,7 @@ mod chpo_rigi;
 mod colour;
 mod config;
 mod contact;
+mod covariance;
 mod coor_field;
 mod curves;
 mod dofs;
@@ -84,8 +85,10 @@ mod rela_mili;
 mod replace;
 mod reso;
 mod restrict;
+mod rtens;
 mod simplex;
 mod special;
+mod spectra;
 mod superele;
 mod symmetry;
 mod tables;
@@ -98,6 +101,7 @@ mod variable;
 mod variable_fields;
 mod vector_product;
 mod vsur;
+mod weibull;
 mod work;
 mod zero;
 
@@ -120,8 +124,11 @@ impl Registry {
             hyperbolic::OPS,
             lists::OPS,
             noise::OPS,
+            covariance::OPS,
             fourier::OPS,
             fit::OPS,
+            spectra::OPS,
+            weibull::OPS,
             simplex::OPS,
             prob::OPS,
             lists_search::OPS,
@@ -168,6 +175,7 @@ impl Registry {
             post::OPS,
             thermo::OPS,
             principal::OPS,
+            rtens::OPS,
             integrate::OPS,
             superele::OPS,
             fracture::OPS,

@@ -8,3 +8,6 @@ pub mod fit;
 pub mod fourier;
 pub mod noise;
 pub mod pearson;
+pub mod oscillator;
+pub mod weibull;
+pub mod covariance;
