@@ -10,7 +10,8 @@ pub fn frame(v1: [f64; 3], v2: Option<[f64; 3]>) -> Result<[[f64; 3]; 3], String
         return Ok([e1, [-e1[1], e1[0], 0.0], [0.0, 0.0, 1.0]]);
     };
     let d = dot(v2, e1);
-    let e2 = unit([v2[0] - d * e1[0], v2[1] - d * e1[1], v2[2] - d * e1[2]]).ok_or("the two directions of the frame are parallel")?;
+    let e2 = unit([v2[0] - d * e1[0], v2[1] - d * e1[1], v2[2] - d * e1[2]])
+        .ok_or("the two directions of the frame are parallel")?;
     Ok([e1, e2, cross(e1, e2)])
 }
 

@@ -43,7 +43,11 @@ fn dcov(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                     dirs.push(p);
                 }
             }
-            other => return Err(a.err(format!("expected SIGMA, LAMBDA, LAMBDA1, LAMBDA2, LAMBDA3 or DIRECTION, found {}", other))),
+            other => {
+                return Err(
+                    a.err(format!("expected SIGMA, LAMBDA, LAMBDA1, LAMBDA2, LAMBDA3 or DIRECTION, found {}", other))
+                )
+            }
         }
     }
     let sigma = sigma.ok_or_else(|| a.missing("'SIGMA' and the standard deviation"))?;

@@ -36,9 +36,8 @@ fn rtens(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     };
     let mut out = (*field).clone();
     for z in out.zones.iter_mut() {
-        let job = Job::of(z).ok_or_else(|| {
-            a.err(format!("expected stresses or strains (SMXX …, N11 …), found {}", names(z)))
-        })?;
+        let job = Job::of(z)
+            .ok_or_else(|| a.err(format!("expected stresses or strains (SMXX …, N11 …), found {}", names(z))))?;
         match job {
             Job::Massive(..) => {
                 // Without a second direction: a turn about z.
@@ -61,7 +60,9 @@ fn rtens(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                     // Constants hold on every element: only a common frame keeps them constant.
                     let (c, s) = angles[0];
                     if angles.iter().any(|&(c2, s2)| (c2 - c).abs() > 1e-12 || (s2 - s).abs() > 1e-12) {
-                        return Err(a.err("a constant shell field cannot be turned into frames that differ from element to element"));
+                        return Err(a.err(
+                            "a constant shell field cannot be turned into frames that differ from element to element",
+                        ));
                     }
                 }
                 apply_all(z, |vals, e| {
@@ -102,7 +103,8 @@ enum Job {
 
 impl Job {
     fn of(z: &MchamlZone) -> Option<Job> {
-        let list: Vec<String> = if z.comps.is_empty() { z.constants.keys().cloned().collect() } else { z.comps.clone() };
+        let list: Vec<String> =
+            if z.comps.is_empty() { z.constants.keys().cloned().collect() } else { z.comps.clone() };
         let at = |n: &str| list.iter().position(|c| c == n);
         for (pre, sh, f) in [("SM", "SM", 1.0), ("EP", "GA", 0.5)] {
             let n = |s: &str| at(&format!("{}{}", pre, s));
@@ -115,7 +117,12 @@ impl Job {
             }
         }
         let mut tensors = Vec::new();
-        for (a, b, c, f) in [("N11", "N22", "N12", 1.0), ("M11", "M22", "M12", 1.0), ("EP11", "EP22", "GA12", 0.5), ("RT11", "RT22", "RT12", 0.5)] {
+        for (a, b, c, f) in [
+            ("N11", "N22", "N12", 1.0),
+            ("M11", "M22", "M12", 1.0),
+            ("EP11", "EP22", "GA12", 0.5),
+            ("RT11", "RT22", "RT12", 0.5),
+        ] {
             if let (Some(i), Some(j), Some(k)) = (at(a), at(b), at(c)) {
                 tensors.push(([i, j, k], f));
             }

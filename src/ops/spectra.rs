@@ -36,7 +36,6 @@ pub(crate) const OPS: &[OpDef] = &[
     },
 ];
 
-
 /// The signal: the one curve of an EVOLUTIO.
 fn signal(a: &Args, ev: &Evolution) -> Result<(Vec<f64>, Vec<f64>)> {
     let Some(c) = ev.curves.first() else { return Err(a.err("the signal EVOLUTIO has no curve")) };
@@ -125,14 +124,17 @@ fn spo(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 
 fn spon(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let (mut demand, mut sig_ev, mut spel, mut damp, mut law, mut out) = (false, None, None, None, None, None);
-    let kinds = ["DEMA", "SIGN", "SPEL", "AMOR", "CINE", "ISOT", "ELAS", "TAKE", "COUL", "DEPL", "VITE", "ACCE", "EPSE"];
+    let kinds =
+        ["DEMA", "SIGN", "SPEL", "AMOR", "CINE", "ISOT", "ELAS", "TAKE", "COUL", "DEPL", "VITE", "ACCE", "EPSE"];
     while let Some(k) = a.keyword_next(&kinds) {
         match k {
             "DEMA" => demand = true,
             "SIGN" => sig_ev = Some(a.req::<Rc<Evolution>>()?),
             "SPEL" => {
                 let e = a.req::<Rc<Evolution>>()?;
-                let kind = a.keyword_next(&["DEPL", "VITE", "ACCE"]).ok_or_else(|| a.missing("DEPL, VITE or ACCE (the kind of the linear spectrum)"))?;
+                let kind = a
+                    .keyword_next(&["DEPL", "VITE", "ACCE"])
+                    .ok_or_else(|| a.missing("DEPL, VITE or ACCE (the kind of the linear spectrum)"))?;
                 spel = Some((e, kind));
             }
             "AMOR" => damp = Some(a.req::<Rc<Vec<f64>>>()?),
@@ -147,14 +149,20 @@ fn spon(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let sig_ev = sig_ev.ok_or_else(|| a.missing("'SIGN' and the signal EVOLUTIO"))?;
     let (t, f) = signal(a, &sig_ev)?;
     let damp = damp.ok_or_else(|| a.missing("'AMOR' and a LISTREEL of dampings"))?;
-    let (law, props) = law.ok_or_else(|| a.missing("'CINE', 'ISOT' or 'ELAS' and the LISTREEL (ductility, stiffness ratio)"))?;
+    let (law, props) =
+        law.ok_or_else(|| a.missing("'CINE', 'ISOT' or 'ELAS' and the LISTREEL (ductility, stiffness ratio)"))?;
     let out = out.ok_or_else(|| a.missing("one of DEPL VITE ACCE EPSE (the spectrum's kind)"))?;
     if props.len() < 2 {
-        return Err(a.err(format!("the bilinear law needs 2 values (ductility, stiffness ratio), found {}", props.len())));
+        return Err(
+            a.err(format!("the bilinear law needs 2 values (ductility, stiffness ratio), found {}", props.len()))
+        );
     }
     let (mu, theta) = (props[0], props[1]);
     if !(mu >= 1.0 && mu.is_finite()) || !(0.0..=1.0).contains(&theta) {
-        return Err(a.err(format!("the ductility must be at least 1 and the stiffness ratio between 0 and 1, found {} and {}", mu, theta)));
+        return Err(a.err(format!(
+            "the ductility must be at least 1 and the stiffness ratio between 0 and 1, found {} and {}",
+            mu, theta
+        )));
     }
     let spring = match law {
         "CINE" => Spring::Kinematic,
@@ -167,7 +175,8 @@ fn spon(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         // The linear peak displacement at each frequency: from SPEL, or computed.
         let (fl, lin): (Vec<f64>, Vec<f64>) = match &spel {
             Some((e, kind)) => {
-                let c = e.curves.get(ci).or(e.curves.first()).ok_or_else(|| a.err("the linear spectrum has no curve"))?;
+                let c =
+                    e.curves.get(ci).or(e.curves.first()).ok_or_else(|| a.err("the linear spectrum has no curve"))?;
                 let mut d = Vec::with_capacity(c.x.len());
                 for (&fr, &y) in c.x.iter().zip(&c.y) {
                     let w = omega(a, fr)?;
@@ -184,7 +193,9 @@ fn spon(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 let mut d = Vec::with_capacity(fl.len());
                 for &fr in &fl {
                     let w = omega(a, fr)?;
-                    d.push(osc::linear(&sig, w, xi, &osc::spectrum_times(&t, w), 0.0, 0.0).map_err(|e| a.err(e))?.max_x);
+                    d.push(
+                        osc::linear(&sig, w, xi, &osc::spectrum_times(&t, w), 0.0, 0.0).map_err(|e| a.err(e))?.max_x,
+                    );
                 }
                 (fl, d)
             }
@@ -194,7 +205,8 @@ fn spon(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             let w = omega(a, fr)?;
             let times = osc::spectrum_times(&t, w);
             let (peak, plastic) = if demand {
-                let (uy, p) = osc::yield_for_ductility(&sig, w, xi, spring, theta, mu, lmax.abs(), &times).map_err(|e| a.err(e))?;
+                let (uy, p) = osc::yield_for_ductility(&sig, w, xi, spring, theta, mu, lmax.abs(), &times)
+                    .map_err(|e| a.err(e))?;
                 (uy, p)
             } else if mu == 1.0 || lmax == 0.0 {
                 (lmax.abs(), 0.0)

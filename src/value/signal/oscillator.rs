@@ -126,7 +126,10 @@ pub fn linear(sig: &Signal, w: f64, xi: f64, times: &[f64], x0: f64, v0: f64) ->
 
 fn check(w: f64, xi: f64) -> Result<(), String> {
     if !(w > 0.0 && w.is_finite()) {
-        return Err(format!("the frequency of an oscillator must be positive, found {}", w / (2.0 * std::f64::consts::PI)));
+        return Err(format!(
+            "the frequency of an oscillator must be positive, found {}",
+            w / (2.0 * std::f64::consts::PI)
+        ));
     }
     if !(xi >= 0.0 && xi.is_finite()) {
         return Err(format!("the damping of an oscillator must be positive or zero, found {}", xi));
@@ -190,7 +193,15 @@ pub enum Spring {
 /// Largest |x| and the cumulated plastic displacement of the bilinear
 /// oscillator under the signal, over `times` (steps cut to a fiftieth of
 /// the period at most: explicit central differences).
-pub fn bilinear(sig: &Signal, w: f64, xi: f64, spring: Spring, theta: f64, uy: f64, times: &[f64]) -> Result<(f64, f64), String> {
+pub fn bilinear(
+    sig: &Signal,
+    w: f64,
+    xi: f64,
+    spring: Spring,
+    theta: f64,
+    uy: f64,
+    times: &[f64],
+) -> Result<(f64, f64), String> {
     check(w, xi)?;
     if !(uy > 0.0 && uy.is_finite()) {
         return Err(format!("the yield displacement must be positive, found {}", uy));
