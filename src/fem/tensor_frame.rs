@@ -68,7 +68,7 @@ pub fn shell_angle(nodes: &[[f64; 3]], v1: [f64; 3]) -> Result<(f64, f64), Strin
     let e2 = cross(e3, e1);
     let (c, s) = (dot(v1, e1), dot(v1, e2));
     let n = (c * c + s * s).sqrt();
-    if !(n > 0.0) {
+    if n.is_nan() || n <= 0.0 {
         return Err("the direction of the frame is normal to a shell element".into());
     }
     Ok((c / n, s / n))

@@ -59,7 +59,7 @@ fn dcov(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         }
     };
     positive("standard deviation", sigma)?;
-    let dim = it.opts.dime.clamp(1, 3) as usize;
+    let dim = it.opts.dime.clamp(1, 3);
     let metric = match (iso, lengths) {
         (Some(l), [None, None, None]) => Metric::Isotropic(positive("correlation length", l)?),
         (None, [Some(l1), Some(l2), l3]) => {

@@ -42,7 +42,7 @@ fn signal(a: &Args, ev: &Evolution) -> Result<(Vec<f64>, Vec<f64>)> {
     if c.x.len() < 2 {
         return Err(a.err("the signal needs at least two samples"));
     }
-    if c.x.windows(2).any(|p| !(p[1] >= p[0])) {
+    if c.x.windows(2).any(|p| p[1].is_nan() || p[1] < p[0]) {
         return Err(a.err("the times of the signal must increase"));
     }
     Ok((c.x.clone(), c.y.clone()))
@@ -158,7 +158,7 @@ fn spon(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         );
     }
     let (mu, theta) = (props[0], props[1]);
-    if !(mu >= 1.0 && mu.is_finite()) || !(0.0..=1.0).contains(&theta) {
+    if !(mu >= 1.0 && mu.is_finite() && (0.0..=1.0).contains(&theta)) {
         return Err(a.err(format!(
             "the ductility must be at least 1 and the stiffness ratio between 0 and 1, found {} and {}",
             mu, theta

@@ -21,7 +21,7 @@ fn weip(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let d1 = a.req_num()?;
     let d2 = a.req_num()?;
     let area = a.req_num()?;
-    if !(d1 > 0.0 && d1.is_finite()) || !(d2 >= 0.0 && d2 <= d1) || !(area > 0.0 && area.is_finite()) {
+    if !(d1 > 0.0 && d1.is_finite() && d2 >= 0.0 && d2 <= d1 && area > 0.0 && area.is_finite()) {
         return Err(a.err(format!(
             "the spans must satisfy 0 < D1, 0 <= D2 <= D1 and the section A1 > 0, found D1 = {}, D2 = {}, A1 = {}",
             d1, d2, area

@@ -65,7 +65,7 @@ pub fn cholesky(a: &[f64], n: usize) -> Result<Vec<f64>, String> {
         for k in 0..j {
             d -= l[j * n + k] * l[j * n + k];
         }
-        if !(d > 0.0) {
+        if d.is_nan() || d <= 0.0 {
             return Err(format!(
                 "the covariance matrix is not positive definite (pivot {} of {}): points too close for the correlation length?",
                 j + 1,
