@@ -60,3 +60,4 @@ mod tests_traction;
 pub mod mesh;
 pub mod meshing;
 pub mod midside;
+pub mod tensor_frame;

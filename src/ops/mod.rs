@@ -19,6 +19,7 @@ mod colour;
 mod config;
 mod contact;
 mod coor_field;
+mod covariance;
 mod curves;
 mod dofs;
 mod elem_field;
@@ -89,8 +90,10 @@ mod rela_mili;
 mod replace;
 mod reso;
 mod restrict;
+mod rtens;
 mod simplex;
 mod special;
+mod spectra;
 mod superele;
 mod symmetry;
 mod tables;
@@ -103,6 +106,7 @@ mod variable;
 mod variable_fields;
 mod vector_product;
 mod vsur;
+mod weibull;
 mod work;
 mod zero;
 
@@ -125,8 +129,11 @@ impl Registry {
             hyperbolic::OPS,
             lists::OPS,
             noise::OPS,
+            covariance::OPS,
             fourier::OPS,
             fit::OPS,
+            spectra::OPS,
+            weibull::OPS,
             simplex::OPS,
             prob::OPS,
             lists_search::OPS,
@@ -175,6 +182,7 @@ impl Registry {
             post::OPS,
             thermo::OPS,
             principal::OPS,
+            rtens::OPS,
             integrate::OPS,
             superele::OPS,
             fracture::OPS,

@@ -40,6 +40,9 @@ fn proi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         None => return Err(a.missing("MAILLAGE, POINT or MMODEL")),
     };
     let field = a.req::<Rc<Mchaml>>()?;
+    // A trailing search tolerance (used by Cast3M's own procedures): the
+    // search here already takes points on an element's boundary.
+    let _ = a.opt_num();
     let out = projection::onto_mesh(&field, &geo, &it.nodes).map_err(|m| a.err(m))?;
     Ok(vec![Value::Chpo(Rc::new(out))])
 }

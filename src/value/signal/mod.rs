@@ -4,7 +4,10 @@
 //! read the arguments and wrap the results.
 
 pub mod complex;
+pub mod covariance;
 pub mod fit;
 pub mod fourier;
 pub mod noise;
+pub mod oscillator;
 pub mod pearson;
+pub mod weibull;
