@@ -431,7 +431,7 @@ fn steps(it: &mut Interp, a: &Args, run: &mut Run, input: &Input, temp0: f64) ->
             if let Some(c) = &current {
                 pmodel::check_loads(a, c)?;
             }
-            let (s, stepper, loads) = super::pasapas_vary::rebuild(
+            let (s, loads) = super::pasapas_vary::rebuild(
                 it,
                 a,
                 &input.model,
@@ -439,10 +439,10 @@ fn steps(it: &mut Interp, a: &Args, run: &mut Run, input: &Input, temp0: f64) ->
                 input.blocks.as_ref(),
                 current.as_deref(),
                 &run.loads.tref,
-                &run.stepper,
+                &mut run.stepper,
                 ti,
             )?;
-            (run.s, run.stepper, run.loads, run.charge) = (s, stepper, loads, current);
+            (run.s, run.loads, run.charge) = (s, loads, current);
         }
         let (coefs, extra, heat) = step_load(it, a, run, ti)?;
         // Cast3M prints its step lines unless told OPTI ECHO 0.

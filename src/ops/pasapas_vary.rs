@@ -1,8 +1,8 @@
 //! PASAPAS with material properties that depend on a parameter (MATE …
 //! 'YOUN' EVOLUTIO, the abscissa naming 'T' or any other variable): at
 //! each step the properties are evaluated at the element points from the
-//! CHARGEMENT's part of that name at the step's time, and the structure is
-//! rebuilt with them. The law stays elastic and total (σ = D(p(t)) ε), so a
+//! CHARGEMENT's part of that name at the step's time, and the stiffness is
+//! reassembled with them and refactorised on the same structure. The law stays elastic and total (σ = D(p(t)) ε), so a
 //! step's result depends on its time only, not on the steps before.
 
 use super::pasapas_model::{self as pmodel, Loads, Structure};
@@ -48,8 +48,8 @@ pub(crate) fn evaluated(
     Ok(out)
 }
 
-/// The structure, its factorised operator and its loads for the material
-/// at time `t`; `previous` gives the contact statuses to start from.
+/// The structure and its loads for the material at time `t`, `stepper`
+/// refactorised for it (its contact statuses kept as the start).
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn rebuild(
     it: &mut Interp,
@@ -59,22 +59,21 @@ pub(crate) fn rebuild(
     blocks: Option<&Rigidite>,
     charge: Option<&Chargement>,
     tref: &[f64],
-    previous: &Stepper,
+    stepper: &mut Stepper,
     t: f64,
-) -> Result<(Structure, Stepper, Loads)> {
+) -> Result<(Structure, Loads)> {
     let cara_t = evaluated(it, a, model, cara, charge, t)?;
     let s = pmodel::build(it, a, model, &cara_t, blocks)?;
-    let mut stepper = Stepper::new(s.asm.problem.clone())
+    // Same mesh, same conditions: the factorisation keeps its structure
+    // and only refactorises the numbers (Stepper::renew).
+    stepper
+        .renew(s.asm.problem.clone())
         .map_err(|e| a.err(format!("time {}: the stiffness cannot be factorised: {:?}", fmt_float(t), e)))?;
     stepper.set_adhesion(&s.adhesion).map_err(|e| a.err(format!("'ADHE': {}", e)))?;
-    stepper.set_cancel(crate::solve::unilateral::status::Cancel(it.interrupt.shared()));
-    if let Some(st) = previous.statuses() {
-        stepper.set_statuses(st.to_vec());
-    }
     let tref_field = Chpoint::from_entries(
         crate::value::Nature::Diffus,
         tref.iter().enumerate().filter(|(_, v)| **v != 0.0).map(|(n, v)| (n, "T", *v)),
     );
     let loads = pmodel::loads(it, a, &s, charge, Some(&tref_field))?;
-    Ok((s, stepper, loads))
+    Ok((s, loads))
 }
