@@ -368,7 +368,15 @@ mod tests {
         let springs = |k1: f64, k2: f64| Problem {
             k: Matrix {
                 n: 3,
-                entries: vec![(0, 0, k1), (0, 1, -k1), (1, 0, -k1), (1, 1, k1 + k2), (1, 2, -k2), (2, 1, -k2), (2, 2, k2)],
+                entries: vec![
+                    (0, 0, k1),
+                    (0, 1, -k1),
+                    (1, 0, -k1),
+                    (1, 1, k1 + k2),
+                    (1, 2, -k2),
+                    (2, 1, -k2),
+                    (2, 2, k2),
+                ],
                 symmetric: true,
             },
             conditions: vec![Condition { terms: vec![(0, 1.0)], kind: Kind::Equal, dual: None }],
