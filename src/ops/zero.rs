@@ -109,10 +109,12 @@ fn layout(kind: &str, zone: &ModelZone) -> std::result::Result<(Points, Vec<Stri
     })
 }
 
-/// Internal variables of the behaviour: the plastic ones carry the
-/// cumulated plastic strain EPSE; an elastic material has none.
+/// Internal variables of the behaviour: the cumulated plastic strain EPSE.
+/// A purely elastic material carries it too (always zero), so that a
+/// procedure written for elasto-plasticity (G_THETA's plastic work term,
+/// `EXCO VARF 'EPSE'`) runs unchanged on an elastic model.
 fn internal_variables(zone: &ModelZone) -> Vec<String> {
-    if zone.behaviour.iter().any(|b| b.starts_with("PLAS")) {
+    if zone.behaviour.iter().any(|b| b.starts_with("PLAS") || b.starts_with("ELAS")) {
         vec!["EPSE".into()]
     } else {
         Vec::new()

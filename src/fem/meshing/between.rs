@@ -36,6 +36,23 @@ pub fn elem_compris(nodes: &Nodes, line: &Mesh, p1: usize, p2: usize) -> Result<
     let elem = |k: usize| -> Vec<usize> { chain[k * step..=(k + 1) * step].to_vec() };
     let mut conn = Vec::new();
     let mut backwards = false;
+    // Around a closed line both arcs join p1 to p2: take the shorter one
+    // (forward on a tie), described from p1 to p2. A lip of a crack cut
+    // out of the contour of a mirrored half (`CONT half ELEM 'COMPRIS'
+    // tip end`) is the short arc whichever way that contour turns.
+    let forward_len = (i2 + n_el - i1 % n_el) % n_el;
+    if closed && forward_len > n_el - forward_len {
+        // The arc from p2 to p1 in the line's direction, then run backwards.
+        let mut k = i2 % n_el;
+        loop {
+            conn.extend(elem(k));
+            if corners[k + 1] == p1 {
+                break;
+            }
+            k = (k + 1) % n_el;
+        }
+        return inve(&Mesh { parts: vec![Part::with(ty, conn)] });
+    }
     if i1 < i2 || closed {
         // Forward from p1 to p2, around the end of a closed line.
         let mut k = i1 % n_el;
