@@ -99,6 +99,7 @@ mod symmetry;
 mod tables;
 mod temps;
 mod thermo;
+mod hooke;
 mod thermo_field;
 mod transform;
 mod union;
@@ -181,6 +182,7 @@ impl Registry {
             reso::OPS,
             post::OPS,
             thermo::OPS,
+            hooke::OPS,
             principal::OPS,
             rtens::OPS,
             integrate::OPS,
