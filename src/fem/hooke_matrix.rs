@@ -37,17 +37,20 @@ impl HookeMatrix {
 /// zero zz row). Joints: the diagonal KS…KN in the local frame. Bars: E·S.
 pub fn of_material(f: Formulation, ty: ElemType, mode: Mode, m: &Material) -> Result<HookeMatrix, FemError> {
     match f {
-        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => {
-            Ok(HookeMatrix { stresses: solid::stress_comps(mode), strains: solid::strain_comps(mode), d: elasticity(mode, m, ty.name())? })
-        }
+        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => Ok(HookeMatrix {
+            stresses: solid::stress_comps(mode),
+            strains: solid::strain_comps(mode),
+            d: elasticity(mode, m, ty.name())?,
+        }),
         Formulation::Joint => {
             let stresses = joint::comp_names(mode, true);
             let n = stresses.len();
             let ks = m.positive(m.ks, "KS", "JOI2")?;
             let kn = m.positive(m.kn, "KN", "JOI2")?;
-            let d = (0..n)
-                .map(|i| (0..n).map(|j| if i != j { 0.0 } else if i + 1 == n { kn } else { ks }).collect())
-                .collect();
+            let mut d = vec![vec![0.0; n]; n];
+            for (i, row) in d.iter_mut().enumerate() {
+                row[i] = if i + 1 == n { kn } else { ks };
+            }
             Ok(HookeMatrix { stresses, strains: joint::comp_names(mode, false), d })
         }
         Formulation::Barr => {
@@ -81,7 +84,11 @@ pub(crate) fn given(m: &Material, rows: &[&str], cols: &[&str]) -> Option<Result
                 .collect()
         })
         .collect();
-    Some(if found { Ok(d) } else { Err(FemError::MissingProperty { prop: "the Hooke matrix of this element", elem: "HOOKE" }) })
+    Some(if found {
+        Ok(d)
+    } else {
+        Err(FemError::MissingProperty { prop: "the Hooke matrix of this element", elem: "HOOKE" })
+    })
 }
 
 /// σ = D ε at one point: the strain components come by name (absent ones

@@ -151,7 +151,8 @@ impl Material {
 /// Plane stress keeps a zero zz row and column, so the same 4-strain B
 /// matrix serves every 2D mode and σzz comes out 0 by construction.
 pub(crate) fn elasticity(mode: Mode, m: &Material, elem: &'static str) -> Result<Vec<Vec<f64>>, FemError> {
-    if let Some(d) = super::hooke_matrix::given(m, &super::solid::stress_comps(mode), &super::solid::strain_comps(mode)) {
+    if let Some(d) = super::hooke_matrix::given(m, &super::solid::stress_comps(mode), &super::solid::strain_comps(mode))
+    {
         return d;
     }
     let e = m.young(elem)?;

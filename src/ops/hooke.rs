@@ -74,7 +74,8 @@ pub(crate) fn product(a: &Args, x: &Value, y: &Value) -> Result<Option<Value>> {
             .find(|w| w.mesh == z.mesh)
             .ok_or_else(|| a.err("the strain field has a zone where the Hooke field has no matrix"))?;
         let entries: Vec<(String, f64)> = hz.constants.iter().map(|(k, v)| (k.clone(), *v)).collect();
-        let mut nz = MchamlZone { mesh: z.mesh.clone(), element: z.element.clone(), at_nodes: z.at_nodes, ..Default::default() };
+        let mut nz =
+            MchamlZone { mesh: z.mesh.clone(), element: z.element.clone(), at_nodes: z.at_nodes, ..Default::default() };
         for elem in &z.values {
             let mut pts = Vec::with_capacity(elem.len());
             for point in elem {
@@ -86,7 +87,7 @@ pub(crate) fn product(a: &Args, x: &Value, y: &Value) -> Result<Option<Value>> {
             }
             nz.values.push(pts);
         }
-        if !z.values.is_empty() && !nz.comps.iter().any(|_| true) {
+        if !z.values.is_empty() && nz.comps.is_empty() {
             return Err(a.err("the Hooke field's matrices have no stress component"));
         }
         if z.values.is_empty() && !z.constants.is_empty() {
