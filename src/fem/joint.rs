@@ -49,7 +49,7 @@ pub fn rule(ty: ElemType) -> Vec<QPoint> {
     }
 }
 
-fn comp_names(mode: Mode, stress: bool) -> Vec<&'static str> {
+pub(crate) fn comp_names(mode: Mode, stress: bool) -> Vec<&'static str> {
     match (mode == Mode::Trid, stress) {
         (false, false) => vec!["EPSS", "EPSN"],
         (false, true) => vec!["SIGS", "SIGN"],
@@ -111,6 +111,11 @@ fn points(ty: ElemType, mode: Mode, x: &[[f64; 3]], m: &Material) -> Result<Vec<
 }
 
 fn stiffnesses(m: &Material, ncomp: usize) -> Result<Vec<f64>, FemError> {
+    let mode = if ncomp == 3 { Mode::Trid } else { Mode::PlanDefo };
+    if let Some(d) = super::hooke_matrix::given(m, &comp_names(mode, true), &comp_names(mode, false)) {
+        // The joint's law is diagonal in its local frame.
+        return Ok(d?.iter().enumerate().map(|(i, r)| r[i]).collect());
+    }
     let ks = m.positive(m.ks, "KS", "JOI2")?;
     let kn = m.positive(m.kn, "KN", "JOI2")?;
     Ok((0..ncomp).map(|i| if i + 1 == ncomp { kn } else { ks }).collect())

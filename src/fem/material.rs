@@ -38,6 +38,10 @@ pub struct Material {
     /// Tangential and normal stiffnesses of joints, per unit area.
     pub ks: Option<f64>,
     pub kn: Option<f64>,
+    /// A Hooke matrix given in place of the elastic constants (RIGI of a
+    /// HOOKE field): entries named "STRESS/STRAIN" (SMXX/EPXX …). When
+    /// present it is the elasticity matrix, whatever YOUN and NU say.
+    pub hooke: Vec<(String, f64)>,
 }
 
 impl Material {
@@ -147,6 +151,10 @@ impl Material {
 /// Plane stress keeps a zero zz row and column, so the same 4-strain B
 /// matrix serves every 2D mode and σzz comes out 0 by construction.
 pub(crate) fn elasticity(mode: Mode, m: &Material, elem: &'static str) -> Result<Vec<Vec<f64>>, FemError> {
+    if let Some(d) = super::hooke_matrix::given(m, &super::solid::stress_comps(mode), &super::solid::strain_comps(mode))
+    {
+        return d;
+    }
     let e = m.young(elem)?;
     let nu = match mode {
         Mode::PlanCont => m.poisson_plane_stress(elem)?,

@@ -35,6 +35,7 @@ mod fit;
 mod format;
 mod fourier;
 mod fracture;
+mod hooke;
 mod hyperbolic;
 mod insert;
 mod integrate;
@@ -181,6 +182,7 @@ impl Registry {
             reso::OPS,
             post::OPS,
             thermo::OPS,
+            hooke::OPS,
             principal::OPS,
             rtens::OPS,
             integrate::OPS,

@@ -329,7 +329,10 @@ pub(crate) fn material_for(zone: &ModelZone, fields: &[Rc<Mchaml>]) -> Material 
     for f in fields {
         for z in f.zones.iter().filter(|z| z.mesh == zone.mesh) {
             for (k, v) in &z.constants {
-                m.set(k, *v);
+                // Entries "STRESS/STRAIN" of a HOOKE field (ops/hooke.rs).
+                if !m.set(k, *v) && k.contains('/') {
+                    m.hooke.push((k.clone(), *v));
+                }
             }
             if let Some(v) = z.vectors.get("VECT") {
                 m.vect = Some(*v);

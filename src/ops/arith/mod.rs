@@ -131,6 +131,11 @@ fn binary(it: &mut Interp, a: &mut Args, op: Bin) -> Result<Vec<Value>> {
     if op == Bin::Mul && !with_model && matches!((&x, &y), (Value::Mchaml(_), Value::Mchaml(_))) {
         with_model = a.left_top::<std::rc::Rc<crate::value::Model>>().is_some();
     }
+    if op == Bin::Mul && crate::ops::hooke::is_hooke(&x) {
+        if let Some(r) = crate::ops::hooke::product(a, &x, &y)? {
+            return Ok(vec![r]);
+        }
+    }
     if with_model {
         if let Some(r) = crate::ops::work::gradient_product(a, &x, &y)? {
             return Ok(vec![r]);
