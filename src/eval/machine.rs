@@ -94,6 +94,10 @@ impl Interp {
                     i += 2;
                     continue;
                 }
+                ItemKind::Sym("%") => {
+                    i = self.percent(items, i, &mut out)?;
+                    continue;
+                }
                 ItemKind::Group(g) => {
                     for v in self.nested(span, |it| it.eval_items(g))? {
                         out.push(Tok { kind: TokKind::Val(v), span, named: false });
@@ -226,6 +230,12 @@ impl Interp {
                 TokKind::Val(Value::Proc(p)) => {
                     let r = self.call_proc(p, &mut st, t.span)?;
                     self.called_proc = true;
+                    st.left.extend(r);
+                }
+                TokKind::Val(v) if super::objet::is_bound(&v) => {
+                    let r = self.run_bound(&v, &mut st, t.span)?;
+                    self.called_proc = true;
+                    ran = true;
                     st.left.extend(r);
                 }
                 TokKind::Val(v) => st.left.push(v),

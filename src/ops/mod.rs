@@ -66,6 +66,7 @@ mod nodal_field;
 mod noise;
 mod nomc_mchaml;
 mod nuage;
+mod objet;
 mod objects;
 mod opti;
 mod opti_own;
@@ -163,6 +164,7 @@ impl Registry {
             transform::OPS,
             colour::OPS,
             config::OPS,
+            objet::OPS,
             bc::OPS,
             symmetry::OPS,
             special::OPS,
