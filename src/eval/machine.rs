@@ -80,7 +80,7 @@ impl Interp {
                 // After an object that is not a TABLE the '.' is only a
                 // separator: Cast3M's reader skips it and reads on
                 // (`PRES 'MASS' MOD1 pre1 . L13` gives PRES both).
-                ItemKind::Dot if matches!(out.last(), Some(Tok { kind: TokKind::Val(v), .. }) if !matches!(v, Value::Table(_))) =>
+                ItemKind::Dot if matches!(out.last(), Some(Tok { kind: TokKind::Val(v), .. }) if !matches!(v, Value::Table(_)) && crate::value::objet::Objet::of(v).is_none()) =>
                     {}
                 ItemKind::Dot => {
                     let key_item = &items[i + 1];
@@ -365,6 +365,16 @@ pub fn index(v: &Value, key: &Value) -> Result<Value> {
                 Error::runtime(format!("the TABLE has no entry {}", crate::value::list_value_short(key)))
             })
         }
-        other => Err(Error::runtime(format!("'.' indexes a TABLE, not a {}", other.type_name()))),
+        // `O . 'CLASSE'`: the class of an OBJET (the constructor's name);
+        // any other key is one of its entries.
+        other => match crate::value::objet::Objet::of(other) {
+            Some(o) => match key {
+                Value::Mot(k) if k.trim_end().eq_ignore_ascii_case("CLASSE") => Ok(Value::mot(&o.class)),
+                _ => o.entries.borrow().get(&Key::from_value(key)).cloned().ok_or_else(|| {
+                    Error::runtime(format!("the OBJET has no entry {}", crate::value::list_value_short(key)))
+                }),
+            },
+            None => Err(Error::runtime(format!("'.' indexes a TABLE, not a {}", other.type_name()))),
+        },
     }
 }

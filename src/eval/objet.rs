@@ -71,8 +71,11 @@ impl Interp {
                 return Ok(i + 2);
             }
             if name != ATTACH && name != INHERIT && o.method(&name).is_none() {
-                return Err(Error::runtime(format!("%{}: the OBJET of class {} has no entry or method {}", name, o.class, name))
-                    .at(span));
+                return Err(Error::runtime(format!(
+                    "%{}: the OBJET of class {} has no entry or method {}",
+                    name, o.class, name
+                ))
+                .at(span));
             }
         }
         let mut next = i + 2;
@@ -103,7 +106,9 @@ impl Interp {
                     Some(TokKind::Quoted(s)) => s.to_uppercase(),
                     Some(TokKind::Word(w)) => w,
                     Some(TokKind::Val(Value::Mot(s))) => s.trim_end().to_uppercase(),
-                    _ => return Err(Error::runtime("METHODE: expected the name of the method, then the method").at(span)),
+                    _ => {
+                        return Err(Error::runtime("METHODE: expected the name of the method, then the method").at(span))
+                    }
                 };
                 let p = match st.right.pop_front().map(|t| t.kind) {
                     Some(TokKind::Val(Value::Proc(p))) => p,
