@@ -241,6 +241,19 @@ impl<'a> Args<'a> {
         Some(v)
     }
 
+    /// The next right token if it is a procedure (which no other reader
+    /// takes: a procedure runs where it is reached).
+    pub fn right_proc(&mut self) -> Option<Rc<crate::syntax::ast::ProcDef>> {
+        match self.st.right.front().map(|t| &t.kind)? {
+            TokKind::Val(Value::Proc(p)) => {
+                let p = p.clone();
+                self.st.right.pop_front();
+                Some(p)
+            }
+            _ => None,
+        }
+    }
+
     /// Peek at the next right value without consuming it.
     pub fn peek_right(&self) -> Option<Value> {
         self.right_value()
@@ -370,6 +383,7 @@ pub fn operator_error(op: &OpSpec, msg: impl std::fmt::Display) -> Error {
 pub fn ends_window(t: &Tok, registry: &Registry) -> bool {
     match &t.kind {
         TokKind::Sym(_) | TokKind::Val(Value::Proc(_)) => true,
+        TokKind::Val(v) if super::objet::is_bound(v) => true,
         TokKind::Word(w) => registry.find(w).is_some(),
         TokKind::Val(_) | TokKind::Nullary { .. } | TokKind::Quoted(_) => false,
     }

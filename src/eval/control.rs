@@ -149,7 +149,7 @@ impl Interp {
     pub fn exec_instr(&mut self, ins: &Instr) -> Result<()> {
         self.echo(ins);
         if let [t] = ins.targets.as_slice() {
-            if t.keys.is_empty() && t.typed.is_none() && t.base.is_none() {
+            if t.keys.is_empty() && t.typed.is_none() && t.base.is_none() && !t.name.starts_with('%') {
                 match self.fast_value(&ins.items) {
                     Some(Ok(v)) => {
                         self.store.set(&t.name, v);
@@ -239,6 +239,9 @@ impl Interp {
                 return Err(Error::runtime(format!("{} is declared {} but receives a {}", t.name, ty, v.type_name())));
             }
         }
+        if let (Some(m), true) = (t.name.strip_prefix('%'), t.keys.is_empty()) {
+            return self.set_member(m, v);
+        }
         if t.keys.is_empty() && t.base.is_none() {
             self.store.set(&t.name, v);
             return Ok(());
@@ -250,6 +253,7 @@ impl Interp {
                 [v] if !t.keys.is_empty() => v.clone(),
                 _ => return Err(Error::runtime("a group receiving a result must give one TABLE, then . key")),
             },
+            None if t.name.starts_with('%') => self.member(&t.name[1..])?,
             None => self
                 .store
                 .get(&t.name)

@@ -83,16 +83,6 @@ impl Library {
             None => chunks(&source.text).unwrap_or_else(|| vec![(name.to_string(), (0, source.text.len()))]),
         };
         for (chunk_name, (start, end)) in ranges {
-            let upper = source.text[start..end].to_uppercase();
-            if upper.contains("DEBMETH") && !upper.contains("DEBP") {
-                if chunk_name == name {
-                    return Err(Error::runtime(format!(
-                        "{} is a Cast3M method (DEBMETH, in {}), which gibi does not implement",
-                        name, source.name
-                    )));
-                }
-                continue;
-            }
             let procs = parse_chunk(&source, start, end)?;
             if procs.is_empty() && chunk_name == name {
                 return Err(Error::runtime(format!(

@@ -80,7 +80,7 @@ impl Interp {
                 // After an object that is not a TABLE the '.' is only a
                 // separator: Cast3M's reader skips it and reads on
                 // (`PRES 'MASS' MOD1 pre1 . L13` gives PRES both).
-                ItemKind::Dot if matches!(out.last(), Some(Tok { kind: TokKind::Val(v), .. }) if !matches!(v, Value::Table(_))) =>
+                ItemKind::Dot if matches!(out.last(), Some(Tok { kind: TokKind::Val(v), .. }) if !matches!(v, Value::Table(_)) && crate::value::objet::Objet::of(v).is_none()) =>
                     {}
                 ItemKind::Dot => {
                     let key_item = &items[i + 1];
@@ -92,6 +92,10 @@ impl Interp {
                     let v = index(&table.0, &key).map_err(|e| e.at(table.1.join(key_item.span)))?;
                     out.push(Tok { kind: TokKind::Val(v), span: table.1.join(key_item.span), named: false });
                     i += 2;
+                    continue;
+                }
+                ItemKind::Sym("%") => {
+                    i = self.percent(items, i, &mut out)?;
                     continue;
                 }
                 ItemKind::Group(g) => {
@@ -228,6 +232,12 @@ impl Interp {
                     self.called_proc = true;
                     st.left.extend(r);
                 }
+                TokKind::Val(v) if super::objet::is_bound(&v) => {
+                    let r = self.run_bound(&v, &mut st, t.span)?;
+                    self.called_proc = true;
+                    ran = true;
+                    st.left.extend(r);
+                }
                 TokKind::Val(v) => st.left.push(v),
                 TokKind::Quoted(s) => match self.registry.find(&s).filter(|_| wordlike(&s)) {
                     Some(op) => {
@@ -355,6 +365,16 @@ pub fn index(v: &Value, key: &Value) -> Result<Value> {
                 Error::runtime(format!("the TABLE has no entry {}", crate::value::list_value_short(key)))
             })
         }
-        other => Err(Error::runtime(format!("'.' indexes a TABLE, not a {}", other.type_name()))),
+        // `O . 'CLASSE'`: the class of an OBJET (the constructor's name);
+        // any other key is one of its entries.
+        other => match crate::value::objet::Objet::of(other) {
+            Some(o) => match key {
+                Value::Mot(k) if k.trim_end().eq_ignore_ascii_case("CLASSE") => Ok(Value::mot(&o.class)),
+                _ => o.entries.borrow().get(&Key::from_value(key)).cloned().ok_or_else(|| {
+                    Error::runtime(format!("the OBJET has no entry {}", crate::value::list_value_short(key)))
+                }),
+            },
+            None => Err(Error::runtime(format!("'.' indexes a TABLE, not a {}", other.type_name()))),
+        },
     }
 }

@@ -12,6 +12,7 @@ mod files;
 mod interrupt;
 pub mod library;
 pub mod machine;
+pub mod objet;
 mod options;
 mod proc;
 pub mod registry;
@@ -81,6 +82,8 @@ pub struct Interp {
     pub progress: Option<Box<dyn FnMut(usize, usize)>>,
     /// BRUI's random generator: seeded the same at every start.
     pub noise: crate::value::signal::noise::Noise,
+    /// The OBJETs the methods being run act on (innermost last).
+    pub this: Vec<crate::value::Value>,
 }
 
 /// How deep blocks, parenthesised groups and procedure calls may run
@@ -150,6 +153,7 @@ impl Interp {
             in_library: 0,
             progress: None,
             noise: Default::default(),
+            this: Vec::new(),
         }
     }
 

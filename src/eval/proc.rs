@@ -6,6 +6,7 @@ use super::{Flow, Interp};
 use crate::error::{Error, Result};
 use crate::source::Span;
 use crate::syntax::ast::{Param, ProcDef};
+use crate::value::objet::Objet;
 use crate::value::{Ty, Value};
 use std::rc::Rc;
 
@@ -138,6 +139,12 @@ fn missing(proc_name: &str, p: &Param) -> Error {
 /// One argument of a given type, read like an operator's: among the
 /// pushed operands first (oldest first), else in the right window.
 fn take_param(st: &mut GroupState, p: &Param, registry: &super::registry::Registry) -> Result<Option<Value>> {
+    // OBJET is not one of the value types: its objects are host values.
+    if p.ty.as_deref() == Some("OBJET") {
+        let stop = |_: &Tok| false;
+        let v = super::args::take_typed_before(st, registry, |v| Objet::of(v).map(|_| v.clone()), stop);
+        return Ok(v);
+    }
     let want = match &p.ty {
         Some(t) => Some(Ty::from_name(t).ok_or_else(|| Error::runtime(format!("unknown type {} for {}", t, p.name)))?),
         None => None,

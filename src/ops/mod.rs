@@ -68,6 +68,7 @@ mod noise;
 mod nomc_mchaml;
 mod nuage;
 mod objects;
+mod objet;
 mod opti;
 mod opti_own;
 mod ordo_cost;
@@ -164,6 +165,7 @@ impl Registry {
             transform::OPS,
             colour::OPS,
             config::OPS,
+            objet::OPS,
             bc::OPS,
             symmetry::OPS,
             special::OPS,

@@ -21,6 +21,7 @@ pub fn rule_name(rule: &Rule) -> &'static str {
         Rule::string => "a quoted text",
         Rule::str_inner => "the text of a quote",
         Rule::counter => "a loop counter '&name'",
+        Rule::member => "an object entry '%name'",
         Rule::number => "a number",
         Rule::exponent => "an exponent",
         Rule::signed_number => "a signed number",

@@ -45,6 +45,7 @@ fn target(p: Pair<Rule>, base_offset: usize) -> Result<Target> {
         match c.as_rule() {
             Rule::name if name.is_empty() && base.is_none() => name = c.as_str().to_uppercase(),
             Rule::counter if name.is_empty() && base.is_none() => name = c.as_str().to_uppercase(),
+            Rule::member if name.is_empty() && base.is_none() => name = c.as_str().to_uppercase(),
             Rule::group if name.is_empty() && base.is_none() => {
                 let mut items = Vec::new();
                 push_item(&mut items, c, base_offset)?;

@@ -43,8 +43,9 @@ fn directive(ins: &Instr) -> Option<Directive> {
         "FIN" => Directive::Fin,
         "ITER" => Directive::Iterer,
         "QUIT" => Directive::Quitter,
-        "DEBP" => Directive::Debproc,
-        "FINP" => Directive::Finproc,
+        // A method is a procedure (debm.notice): only its call differs.
+        "DEBP" | "DEBM" => Directive::Debproc,
+        "FINP" | "FINM" => Directive::Finproc,
         "ARGU" => Directive::Argu,
         "RESP" => Directive::Respro,
         _ => return None,

@@ -243,3 +243,30 @@ fn else_if_and_closers_with_garbage() {
     let e = parse("repeter b ; fin b garbage ;").unwrap_err();
     assert_eq!((e.message.as_str(), e.span.unwrap().start), ("FIN takes a block name or nothing", 18));
 }
+
+#[test]
+fn object_member_and_method_syntax() {
+    // `%ELE = …` names an entry of the current OBJET; in operands `%` stays
+    // a symbol, and the evaluator tells `o%METH` from `%ELE` (obje.notice).
+    let p = parse("%rea = %ima * 2 ;").unwrap();
+    match &p.stmts[0] {
+        Stmt::Instr(i) => {
+            assert_eq!(i.targets[0].name, "%REA");
+            assert_eq!(i.items[..2], [Item { kind: Sym("%"), span: i.items[0].span }, i.items[1].clone()]);
+            assert_eq!(i.items[1].kind, Word("IMA".into()));
+        }
+        s => panic!("{:?}", s),
+    }
+    assert_eq!(items("r = com%get_rea 2.5 ;"), vec![Word("COM".into()), Sym("%"), Word("GET_REA".into()), Float(2.5)]);
+    assert_eq!(items("%METHODE M1 P1 ;"), vec![Sym("%"), Word("METHODE".into()), Word("M1".into()), Word("P1".into())]);
+}
+
+#[test]
+fn debmeth_is_a_procedure_definition() {
+    let p = parse("debmeth m x*flottant ; %v = x ; finmeth ;").unwrap();
+    match &p.stmts[0] {
+        Stmt::Proc(d) => assert_eq!((d.name.as_str(), d.params.len(), d.body.len()), ("M", 1, 1)),
+        s => panic!("{:?}", s),
+    }
+    assert!(parse("debmeth m ; finsi ;").is_err());
+}

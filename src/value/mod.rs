@@ -16,6 +16,7 @@ pub(crate) mod mchaml_scale;
 pub mod model;
 mod model_union;
 pub mod nuage;
+pub mod objet;
 pub mod projection;
 pub mod rigidity;
 pub mod signal;
