@@ -76,6 +76,7 @@ mod pasapas_model;
 mod pasapas_vary;
 mod poin_field;
 mod pointwise;
+mod poly_roots;
 mod post;
 mod pres_chel;
 mod pres_field;
@@ -196,6 +197,7 @@ impl Registry {
             prim::OPS,
             chpo_rigi::OPS,
             work::OPS,
+            poly_roots::OPS,
         ] {
             for d in table {
                 r.insert(OpSpec::from(d));

@@ -27,6 +27,7 @@ pub mod cache;
 pub mod error;
 pub mod numbering;
 pub mod problem;
+pub mod poly_roots;
 pub mod simplex;
 pub mod twins;
 pub mod unilateral;
