@@ -76,6 +76,7 @@ mod pasapas_model;
 mod pasapas_vary;
 mod poin_field;
 mod pointwise;
+mod orient_check;
 mod poly_roots;
 mod post;
 mod pres_chel;
@@ -198,6 +199,7 @@ impl Registry {
             chpo_rigi::OPS,
             work::OPS,
             poly_roots::OPS,
+            orient_check::OPS,
         ] {
             for d in table {
                 r.insert(OpSpec::from(d));

@@ -39,6 +39,7 @@ pub mod motion;
 pub mod order;
 pub mod orient;
 pub mod orient_to;
+pub mod orient_check;
 pub mod pairing;
 pub mod partition;
 pub mod partition_more;
