@@ -71,7 +71,8 @@ fn polish(p: &[f64], mut z: Root) -> Root {
         let q = ((v.0 * d.0 + v.1 * d.1) / dd, (v.1 * d.0 - v.0 * d.1) / dd);
         let t = (z.0 - q.0, z.1 - q.1);
         let r = norm(eval(p, t).0);
-        if !(r < best) {
+        // A NaN residual also stops the polishing.
+        if r.is_nan() || r >= best {
             break;
         }
         best = r;

@@ -12,10 +12,13 @@ use super::orient::connectors;
 use crate::fem::mesh::Mesh;
 use std::collections::HashMap;
 
+/// A meeting place within one element dimension: (dimension, place).
+type Place = (usize, (usize, usize));
+
 /// Two opposed neighbours, as element numbers (0-based, counted over
 /// the whole mesh in part order), if any.
 pub fn opposed_neighbours(mesh: &Mesh) -> Option<(usize, usize)> {
-    let mut at: HashMap<(usize, (usize, usize)), Vec<(usize, i8)>> = HashMap::new();
+    let mut at: HashMap<Place, Vec<(usize, i8)>> = HashMap::new();
     let mut n = 0;
     for p in &mesh.parts {
         for e in p.elems() {
