@@ -141,14 +141,59 @@ fn interpolate(xs: &[f64], ys: &[f64], t: f64) -> f64 {
     y0 + (y1 - y0) * (t - x0) / (x1 - x0)
 }
 
-/// INTG of a curve (the INTG entry, in `integrate.rs`, dispatches here).
+/// INTG of a curve (the INTG entry, in `integrate.rs`, dispatches here):
+/// a LISTREEL, the trapezoidal integral of every curve (between the
+/// points of numbers ENT1 and ENT2 when given), or of the one curve over
+/// each interval of two LISTENTI; with 'ABS', of the absolute value.
 pub(crate) fn intg_curve(a: &mut Args, e: Rc<Evolution>) -> Result<Vec<Value>> {
-    let n = a.opt::<i64>().unwrap_or(1);
-    let c = usize::try_from(n)
-        .ok()
-        .and_then(|i| i.checked_sub(1))
-        .and_then(|i| e.curves.get(i))
-        .ok_or_else(|| a.err(format!("curve {} does not exist (the object has {})", n, e.curves.len())))?;
-    let s: f64 = c.x.windows(2).zip(c.y.windows(2)).map(|(x, y)| (x[1] - x[0]) * (y[0] + y[1]) / 2.0).sum();
-    Ok(vec![Value::Float(s)])
+    let abs = a.keyword(&["ABS"]).is_some();
+    let ranges: Option<Vec<(i64, i64)>> = if let Some(l1) = a.opt::<Rc<Vec<i64>>>() {
+        let l2 = a.req::<Rc<Vec<i64>>>()?;
+        if l1.len() != l2.len() {
+            return Err(a.err(format!("the bounds are lists of {} and {} numbers", l1.len(), l2.len())));
+        }
+        if e.curves.len() != 1 {
+            return Err(a.err(format!("intervals as LISTENTI need a curve alone (the object has {})", e.curves.len())));
+        }
+        Some(l1.iter().copied().zip(l2.iter().copied()).collect())
+    } else if let Some(i1) = a.opt::<i64>() {
+        Some(vec![(i1, a.req::<i64>()?)])
+    } else {
+        None
+    };
+    let mut out = Vec::new();
+    for (k, c) in e.curves.iter().enumerate() {
+        if k > 0 && ranges.as_ref().is_some_and(|r| r.len() > 1) {
+            break;
+        }
+        let n = c.x.len().min(c.y.len());
+        let spans = ranges.clone().unwrap_or(vec![(1, n as i64)]);
+        for (i1, i2) in spans {
+            let ok = |i: i64| i >= 1 && i as usize <= n;
+            if !ok(i1) || !ok(i2) || i1 > i2 {
+                return Err(a.err(format!("the interval {i1} {i2} is not within the {n} points of the curve")));
+            }
+            let (lo, hi) = (i1 as usize - 1, i2 as usize);
+            out.push(trapezoid(&c.x[lo..hi], &c.y[lo..hi], abs));
+        }
+    }
+    Ok(vec![Value::ListReel(Rc::new(out))])
+}
+
+/// The integral of the piecewise linear curve (of its absolute value,
+/// exactly, when `abs`: a segment crossing zero is cut there).
+fn trapezoid(x: &[f64], y: &[f64], abs: bool) -> f64 {
+    x.windows(2)
+        .zip(y.windows(2))
+        .map(|(x, y)| {
+            let dx = x[1] - x[0];
+            if !abs {
+                dx * (y[0] + y[1]) / 2.0
+            } else if y[0] * y[1] < 0.0 {
+                dx * (y[0] * y[0] + y[1] * y[1]) / (2.0 * (y[0].abs() + y[1].abs()))
+            } else {
+                dx * (y[0].abs() + y[1].abs()) / 2.0
+            }
+        })
+        .sum()
 }

@@ -25,7 +25,7 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "INTG",
-        signature: "INTG ('ELEM') MMODEL MCHAML|CHPOINT (COMP) (MCHAML_CARA) | INTG EVOLUTIO (N)",
+        signature: "INTG ('ELEM') MMODEL MCHAML|CHPOINT (COMP) (MCHAML_CARA) | INTG EVOLUTIO ('ABS') (I1 I2 | LISTENTI1 LISTENTI2)",
         doc: "Integral of one component of a field over a model (thickness DIM3 in PLAN CONT, over the whole ring (2πr) in AXIS, along the length of bars and beams); 'ELEM' gives one value per element. Of an EVOLUTIO: the integral of its curve N (1 by default) by the trapezoidal rule.",
         example: "f = intg mo sig 'SMXX' ;",
         f: intg,

@@ -72,12 +72,14 @@ mod objet;
 mod opti;
 mod opti_own;
 mod ordo_cost;
+mod orient_check;
 mod pasapas;
 mod pasapas_fields;
 mod pasapas_model;
 mod pasapas_vary;
 mod poin_field;
 mod pointwise;
+mod poly_roots;
 mod post;
 mod pres_chel;
 mod pres_field;
@@ -200,6 +202,8 @@ impl Registry {
             prim::OPS,
             chpo_rigi::OPS,
             work::OPS,
+            poly_roots::OPS,
+            orient_check::OPS,
         ] {
             for d in table {
                 r.insert(OpSpec::from(d));

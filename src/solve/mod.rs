@@ -26,6 +26,7 @@ pub mod bilateral;
 pub mod cache;
 pub mod error;
 pub mod numbering;
+pub mod poly_roots;
 pub mod problem;
 pub mod simplex;
 pub mod twins;

@@ -38,6 +38,7 @@ pub mod line;
 pub mod motion;
 pub mod order;
 pub mod orient;
+pub mod orient_check;
 pub mod orient_to;
 pub mod pairing;
 pub mod partition;

@@ -62,7 +62,7 @@ pub(super) fn flip_perm(ty: ElemType) -> &'static [usize] {
 /// A meeting place: a node (as `(n, n)`) or an edge `(low, high)`.
 type Key = (usize, usize);
 
-fn connectors(ty: ElemType, e: &[usize]) -> Vec<(Key, i8)> {
+pub(super) fn connectors(ty: ElemType, e: &[usize]) -> Vec<(Key, i8)> {
     let c: Vec<usize> = corners(ty).iter().map(|&k| e[k]).collect();
     match ty.dim() {
         1 => vec![((c[1], c[1]), 1), ((c[0], c[0]), -1)],
