@@ -76,14 +76,8 @@ pub fn thermal_strain(
                 .collect();
             Ok(GaussField { comps, values })
         }
-        Formulation::Coq3
-        | Formulation::Dkt
-        | Formulation::Dst
-        | Formulation::Coq4
-        | Formulation::Coq6
-        | Formulation::Coq8
-        | Formulation::Coq2
-        | Formulation::Joint => Err(FemError::Unsupported { form: f.name(), elem: ty.name(), mode: mode.name() }),
+        // Shells and joints have no thermal strain here.
+        _ => Err(FemError::Unsupported { form: f.name(), elem: ty.name(), mode: mode.name() }),
     }
 }
 
@@ -103,23 +97,13 @@ fn check_solid(f: Formulation, ty: ElemType, mode: Mode) -> Result<(), FemError>
 /// [`beam::hooke`]. A strain component the field lacks counts as 0, but a
 /// field with none of them is not a strain field of this element.
 pub fn hooke(f: Formulation, ty: ElemType, mode: Mode, m: &Material, eps: &GaussField) -> Result<GaussField, FemError> {
-    if f.is_shell() {
-        return Err(FemError::NotFor { what: "Hooke's law on a strain field (ELAS)", form: f.name() });
-    }
     let wanted: Vec<&'static str> = match f {
         Formulation::Barr => vec!["EPSS"],
         Formulation::Pout | Formulation::Timo => vec!["EPSS", "GAXY", "GAXZ", "CURX", "CURY", "CURZ"],
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => solid::strain_comps(mode),
         Formulation::Joint => return super::joint::hooke(mode, m, eps),
-        Formulation::Coq3
-        | Formulation::Dkt
-        | Formulation::Dst
-        | Formulation::Coq4
-        | Formulation::Coq6
-        | Formulation::Coq8
-        | Formulation::Coq2 => {
-            unreachable!("refused above")
-        }
+        // The shells: their forces come from SIGM, not from a strain field.
+        _ => return Err(FemError::NotFor { what: "Hooke's law on a strain field (ELAS)", form: f.name() }),
     };
     if !wanted.iter().any(|w| eps.comps.contains(w)) {
         return Err(FemError::MissingComponent { comp: wanted[0], elem: ty.name() });
@@ -144,14 +128,8 @@ pub fn hooke(f: Formulation, ty: ElemType, mode: Mode, m: &Material, eps: &Gauss
                 .collect();
             Ok(GaussField { comps: solid::stress_comps(mode), values })
         }
-        Formulation::Coq3
-        | Formulation::Dkt
-        | Formulation::Dst
-        | Formulation::Coq4
-        | Formulation::Coq6
-        | Formulation::Coq8
-        | Formulation::Coq2
-        | Formulation::Joint => Err(FemError::Unsupported { form: f.name(), elem: ty.name(), mode: mode.name() }),
+        // Shells and joints returned above.
+        _ => Err(FemError::Unsupported { form: f.name(), elem: ty.name(), mode: mode.name() }),
     }
 }
 
