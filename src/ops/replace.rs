@@ -70,49 +70,54 @@ fn remp(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         Ok(item)
     };
     let bad = |v: &Value, want: &str| a.err(format!("a {} item cannot be replaced by a {}", want, v.type_name()));
+    // One loop for every list type: `conv` takes a new value or refuses it.
+    fn put<T: Clone>(
+        l: &[T],
+        places: &[usize],
+        each: &dyn Fn(usize) -> Result<Value>,
+        conv: impl Fn(Value) -> std::result::Result<T, Value>,
+        refuse: impl Fn(&Value) -> crate::error::Error,
+    ) -> Result<Rc<Vec<T>>> {
+        let mut v = l.to_vec();
+        for (k, &p) in places.iter().enumerate() {
+            v[p] = conv(each(k)?).map_err(|o| refuse(&o))?;
+        }
+        Ok(Rc::new(v))
+    }
     let new = match &list {
-        Value::ListReel(l) => {
-            let mut v = l.to_vec();
-            for (k, &p) in places.iter().enumerate() {
-                v[p] = match each(k)? {
-                    Value::Float(x) if x.is_finite() => x,
-                    Value::Int(i) => i as f64,
-                    o => return Err(bad(&o, "LISTREEL")),
-                };
-            }
-            Value::ListReel(Rc::new(v))
-        }
-        Value::ListEnti(l) => {
-            let mut v = l.to_vec();
-            for (k, &p) in places.iter().enumerate() {
-                v[p] = match each(k)? {
-                    Value::Int(i) => i,
-                    o => return Err(bad(&o, "LISTENTI")),
-                };
-            }
-            Value::ListEnti(Rc::new(v))
-        }
-        Value::ListMots(l) => {
-            let mut v = l.to_vec();
-            for (k, &p) in places.iter().enumerate() {
-                v[p] = match each(k)? {
-                    Value::Mot(m) => m.to_string(),
-                    o => return Err(bad(&o, "LISTMOTS")),
-                };
-            }
-            Value::ListMots(Rc::new(v))
-        }
-        Value::ListChpo(l) => {
-            let mut v = l.to_vec();
-            for (k, &p) in places.iter().enumerate() {
-                v[p] = match each(k)? {
-                    Value::Chpo(c) => c,
-                    o => return Err(bad(&o, "LISTCHPO")),
-                };
-            }
-            Value::ListChpo(Rc::new(v))
-        }
-        _ => unreachable!("checked above"),
+        Value::ListReel(l) => Value::ListReel(put(
+            l,
+            &places,
+            &each,
+            |o| match o {
+                Value::Float(x) if x.is_finite() => Ok(x),
+                Value::Int(i) => Ok(i as f64),
+                o => Err(o),
+            },
+            |o| bad(o, "LISTREEL"),
+        )?),
+        Value::ListEnti(l) => Value::ListEnti(put(
+            l,
+            &places,
+            &each,
+            |o| if let Value::Int(i) = o { Ok(i) } else { Err(o) },
+            |o| bad(o, "LISTENTI"),
+        )?),
+        Value::ListMots(l) => Value::ListMots(put(
+            l,
+            &places,
+            &each,
+            |o| if let Value::Mot(m) = o { Ok(m.to_string()) } else { Err(o) },
+            |o| bad(o, "LISTMOTS"),
+        )?),
+        Value::ListChpo(l) => Value::ListChpo(put(
+            l,
+            &places,
+            &each,
+            |o| if let Value::Chpo(c) = o { Ok(c) } else { Err(o) },
+            |o| bad(o, "LISTCHPO"),
+        )?),
+        o => return Err(a.err(format!("REMP changes a list in place, not a {}", o.type_name()))),
     };
     rebind(it, &list, &new);
     Ok(vec![])
