@@ -107,6 +107,18 @@ fn trac_of_a_volume_mesh() {
     assert_png(&dir.join("gibi_trac_2.png"));
 }
 
+/// Quadratic volumes draw their skin: a block of two CU20 shows its 10
+/// outer faces, the shared face hidden.
+#[test]
+fn trac_of_quadratic_volumes_draws_their_skin() {
+    let dir = scratch("trac_quad3d");
+    let mut gibi = Interpreter::builder().files(FilePolicy::Under(dir.clone())).build();
+    let s = "p1 = 0. 0. 0. ; p2 = 2. 0. 0. ; p3 = 2. 1. 0. ; p4 = 0. 1. 0. ;";
+    run(&mut gibi, &format!("opti dime 3 elem cu20 ; {} s = dall (droi 2 p1 p2) (droi 1 p2 p3) (droi 2 p3 p4) (droi 1 p4 p1) ; v = s volu tran 1 (0. 0. 1.) ; trac v ;", s));
+    let cu20 = assert_svg(&dir.join("gibi_trac_1.svg"));
+    assert_eq!(cu20.matches("<polygon").count() + cu20.matches("<path").count(), 10, "{}", cu20);
+}
+
 #[test]
 fn dess_of_curves() {
     let dir = scratch("dess");

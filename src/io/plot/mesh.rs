@@ -83,13 +83,10 @@ pub fn draw_mesh(p: &MeshPicture, format: Format, path: &Path) -> Result<()> {
 }
 
 /// Local node lists of the faces of a 3D element (outward normals).
-fn faces(ty: ElemType) -> &'static [&'static [usize]] {
-    match ty {
-        ElemType::Cub8 => &[&[0, 3, 2, 1], &[4, 5, 6, 7], &[0, 1, 5, 4], &[1, 2, 6, 5], &[2, 3, 7, 6], &[3, 0, 4, 7]],
-        ElemType::Tet4 => &[&[0, 2, 1], &[0, 1, 3], &[1, 2, 3], &[2, 0, 3]],
-        ElemType::Pri6 => &[&[0, 2, 1], &[3, 4, 5], &[0, 1, 4, 3], &[1, 2, 5, 4], &[2, 0, 3, 5]],
-        _ => &[],
-    }
+fn faces(ty: ElemType) -> Vec<Vec<usize>> {
+    // The element library's boundary faces: their node lists run round the
+    // face, so a quadratic face draws as its 6- or 8-sided outline.
+    crate::fem::shape::faces(ty).into_iter().map(|(_, f)| f).collect()
 }
 
 /// What a mesh shows: polygons (surface elements and boundary faces of
@@ -112,7 +109,7 @@ fn outline(m: &Mesh) -> Outline {
                 1 => o.lines.push(e.to_vec()),
                 2 => o.polys.push(e.to_vec()),
                 _ => {
-                    for f in faces(part.ty) {
+                    for f in &faces(part.ty) {
                         let face: Vec<usize> = f.iter().map(|&k| e[k]).collect();
                         let mut key = face.clone();
                         key.sort_unstable();
@@ -311,7 +308,7 @@ fn element_faces(cells: &[(ElemType, Vec<usize>, f64)]) -> Vec<(Vec<usize>, f64)
             1 => out.extend(e.windows(2).map(|w| (w.to_vec(), *v))),
             2 => out.push((e.clone(), *v)),
             _ => {
-                for f in faces(*ty) {
+                for f in &faces(*ty) {
                     let face: Vec<usize> = f.iter().map(|&k| e[k]).collect();
                     let mut key = face.clone();
                     key.sort_unstable();
