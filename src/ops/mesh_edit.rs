@@ -18,7 +18,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "ENVE", signature: "ENVE VOLUME", doc: "The envelope of a volume mesh: the faces that belong to one element only (TRI3/QUA4), oriented outwards as in their elements.", example: "peau = enve v ;", f: enve },
     OpDef { name: "CONT", signature: "CONT ('NOID') ('EXTE'|'INTE'|'TOUT') GEO", doc: "Contour: boundary edges of a surface, end points of a line.", example: "c = cont s ;", f: cont },
     OpDef { name: "ELIM", signature: "ELIM (crit) GEO (GEO2 …)", doc: "Merge nodes closer than crit, in every object (several meshes: their nodes with each other's).", example: "elim 1.e-5 l ;", f: elim },
-    OpDef { name: "INTE", signature: "GEO1 INTE GEO2 ('NOVERIF')", doc: "Elements common to two meshes (an empty mesh when there are none).", example: "c = s1 inte s2 ;", f: inte },
+    OpDef { name: "INTE", signature: "GEO1 INTE GEO2 ('NOVERIF') | S1B S2B C1 C2 = INTE 'GEOM' S1 S2 ('NOVERIF')", doc: "Elements common to two meshes (an empty mesh when there are none); with 'GEOM', two TRI3 surfaces cut along the curve where they cross, and that curve on the nodes of each.", example: "c = s1 inte s2 ;", f: inte },
     OpDef { name: "DIFF", signature: "DIFF GEO1 GEO2", doc: "Symmetric difference of two meshes.", example: "d = diff s1 s2 ;", f: diff },
     OpDef { name: "PLUS", signature: "OBJ PLUS VECTOR | GEO PLUS CHPOINT", doc: "A translated copy (geometric, not arithmetic), or the mesh moved by a displacement field.", example: "l2 = l plus (0. 1.) ;", f: plus },
     OpDef { name: "MOIN", signature: "OBJ MOIN VECTOR", doc: "A copy translated by minus the vector.", example: "l2 = l moin (0. 1.) ;", f: moin },
@@ -161,7 +161,10 @@ fn renumber(v: &mut Value, map: &mg::NodeMap, seen: &mut std::collections::HashS
     }
 }
 
-fn inte(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+fn inte(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    if a.keyword(&["GEOM"]).is_some() {
+        return super::mesh_cut::inte_geom(it, a);
+    }
     let x = req_geo(a)?;
     let y = req_geo(a)?;
     // No common element gives an empty mesh: Cast3M's procedures

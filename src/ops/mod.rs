@@ -50,6 +50,7 @@ mod manu_chml_fields;
 mod masq;
 mod math;
 mod mesh;
+mod mesh_cut;
 mod mesh_delaunay;
 mod mesh_edit;
 mod mesh_free;

@@ -48,6 +48,7 @@ pub mod query;
 pub mod regenerate;
 pub mod select;
 pub mod surf;
+pub mod surface_cut;
 pub mod sweep;
 pub mod symmetry;
 pub mod tetra;
