@@ -21,15 +21,18 @@
 pub mod arcs;
 pub mod between;
 pub mod contour;
+pub mod cote_swept;
 pub mod couture;
 pub mod dall;
 pub mod dall_support;
 pub mod dall_unequal;
+pub mod deduce;
 pub mod delaunay;
 pub mod edges;
 pub mod edit;
 pub mod extract;
 pub mod free;
+pub mod generatrix;
 pub mod grading;
 pub mod grid;
 pub mod isovalue;
@@ -53,6 +56,7 @@ pub mod symmetry;
 pub mod tetra;
 pub mod transform;
 mod vec3;
+pub mod winding;
 
 #[cfg(test)]
 mod tests;
