@@ -46,6 +46,7 @@ pub mod orient_to;
 pub mod pairing;
 pub mod partition;
 pub mod partition_more;
+pub mod points;
 pub mod polyline;
 pub mod query;
 pub mod regenerate;
