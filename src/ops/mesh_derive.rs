@@ -26,7 +26,7 @@ pub(crate) const OPS: &[OpDef] = &[
         name: "DEDU",
         signature: "OBJ1 .. OBJN DEDU 'TRAN' GEO1 GEO2 | DEDU 'TRAN' OBJ1 .. OBJN GEO1 GEO2",
         doc: "Each object (POINT, MAILLAGE, CHPOINT, or a TABLE of them) carried from GEO1 onto GEO2, a mesh of the same topology: node k of element e of GEO1 becomes node k of element e of GEO2. Every node of the objects must be a node of GEO1.",
-        example: "l2 = (l1 = (0. 0.) droi 2 (1. 0.)) dedu 'TRAN' l1 (l1 plus (0. 1.)) ;",
+        example: "u2 = dedu 'TRAN' (coor 1 bas) bas (bas plus (0. 1.)) ;",
         f: dedu,
     },
 ];
