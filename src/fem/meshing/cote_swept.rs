@@ -22,7 +22,7 @@ pub(crate) fn side(mesh: &Mesh, n: i64) -> Option<Mesh> {
     let parts: Vec<_> = mesh.parts.iter().filter(|p| !p.is_empty()).collect();
     let quads: Vec<[usize; 4]> = match parts.as_slice() {
         [p] if p.ty == ElemType::Qua4 => p.elems().map(|e| [e[0], e[1], e[2], e[3]]).collect(),
-        [p] if p.ty == ElemType::Tri3 && p.len() % 2 == 0 => {
+        [p] if p.ty == ElemType::Tri3 && p.len().is_multiple_of(2) => {
             let t: Vec<&[usize]> = p.elems().collect();
             let mut q = Vec::with_capacity(t.len() / 2);
             for pair in t.chunks(2) {
@@ -45,7 +45,7 @@ pub(crate) fn side(mesh: &Mesh, n: i64) -> Option<Mesh> {
     }
     let on_boundary = |a: usize, b: usize| uses.get(&key(a, b)) == Some(&1);
     let width = quads.iter().take_while(|q| on_boundary(q[0], q[1])).count();
-    if width == 0 || quads.len() % width != 0 {
+    if width == 0 || !quads.len().is_multiple_of(width) {
         return None;
     }
     if (width..quads.len()).any(|k| quads[k][0] != quads[k - width][3] || quads[k][1] != quads[k - width][2]) {
