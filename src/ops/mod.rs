@@ -50,8 +50,10 @@ mod manu_chml_fields;
 mod masq;
 mod math;
 mod mesh;
+mod mesh_contours;
 mod mesh_cut;
 mod mesh_delaunay;
+mod mesh_derive;
 mod mesh_edit;
 mod mesh_free;
 mod mesh_isov;
@@ -157,6 +159,8 @@ impl Registry {
             mesh_query::OPS,
             mesh_free::OPS,
             mesh_partition::OPS,
+            mesh_contours::OPS,
+            mesh_derive::OPS,
             mesh_delaunay::OPS,
             mesh_isov::OPS,
             mesh_lines::OPS,

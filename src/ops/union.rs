@@ -118,6 +118,11 @@ pub(crate) fn union(_: &mut Interp, a: &Args, x: Value, y: Value, noer: bool) ->
         (Evol(e), Evol(f)) => {
             Evol(Rc::new(crate::value::Evolution { curves: e.curves.iter().chain(f.curves.iter()).cloned().collect() }))
         }
+        // A point joins a mesh of points as one more POI1 element even if
+        // it is already there: decks build lists of points, repeats
+        // included, with `m = m ET p` (cinema1).
+        (Point(p), Mesh(m)) => Mesh(Rc::new(crate::fem::meshing::points::add_point(m, *p, true))),
+        (Mesh(m), Point(p)) => Mesh(Rc::new(crate::fem::meshing::points::add_point(m, *p, false))),
         (Point(_) | Mesh(_), Point(_) | Mesh(_)) => {
             Mesh(Rc::new(as_mesh(&x).unwrap_or_default().union(&as_mesh(&y).unwrap_or_default())))
         }

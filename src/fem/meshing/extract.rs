@@ -156,7 +156,14 @@ fn cont_edges(mesh: &Mesh, which: ContEdges) -> Result<Mesh, MeshError> {
 /// node (1 for quadrilaterals, at most 2 for triangles). Side `n` comes
 /// back as SEG2/SEG3 in contour direction, so for DALL it is the n-th side
 /// as given.
+///
+/// A closed line swept by TRAN or ROTA has no corners: its sides 1 and 3
+/// are then found from the sweep's layers ([`super::cote_swept`]).
 pub fn cote(mesh: &Mesh, n: i64) -> Result<Mesh, MeshError> {
+    cote_structured(mesh, n).or_else(|e| super::cote_swept::side(mesh, n).ok_or(e))
+}
+
+fn cote_structured(mesh: &Mesh, n: i64) -> Result<Mesh, MeshError> {
     const OP: &str = "COTE";
     if !(1..=4).contains(&n) {
         return fail(OP, format!("the side number must be 1 to 4 (got {n})"));

@@ -21,15 +21,18 @@
 pub mod arcs;
 pub mod between;
 pub mod contour;
+pub mod cote_swept;
 pub mod couture;
 pub mod dall;
 pub mod dall_support;
 pub mod dall_unequal;
+pub mod deduce;
 pub mod delaunay;
 pub mod edges;
 pub mod edit;
 pub mod extract;
 pub mod free;
+pub mod generatrix;
 pub mod grading;
 pub mod grid;
 pub mod isovalue;
@@ -43,6 +46,7 @@ pub mod orient_to;
 pub mod pairing;
 pub mod partition;
 pub mod partition_more;
+pub mod points;
 pub mod polyline;
 pub mod query;
 pub mod regenerate;
@@ -54,6 +58,7 @@ pub mod symmetry;
 pub mod tetra;
 pub mod transform;
 mod vec3;
+pub mod winding;
 
 #[cfg(test)]
 mod tests;

@@ -1,0 +1,107 @@
+//! Meshes derived from others: GENERATRICE (a line moved along a second
+//! line) and DEDU 'TRAN' (objects carried from one mesh onto another of
+//! the same topology). The geometry is `fem::meshing::{generatrix, deduce}`.
+
+use super::mesh::mesh_val;
+use super::{Args, OpDef};
+use crate::error::Result;
+use crate::eval::Interp;
+use crate::fem::mesh::Mesh;
+use crate::fem::meshing::deduce::node_map;
+use crate::fem::meshing::generatrix::generatrix;
+use crate::value::{Chpoint, Key, Table, Value};
+use std::cell::RefCell;
+use std::collections::HashMap;
+use std::rc::Rc;
+
+pub(crate) const OPS: &[OpDef] = &[
+    OpDef {
+        name: "GENE",
+        signature: "LINE1 GENE LINE2",
+        doc: "The surface of QUA4 swept by LINE1 (SEG2) moved parallel to itself along LINE2 (SEG2): one strip of elements per element of LINE2, row j being LINE1 shifted by the vector from the first node of LINE2 to its node j.",
+        example: "s = ((0. 0.) droi 3 (3. 0.)) gene ((0. 0.) droi 2 (0. 1.)) ;",
+        f: gene,
+    },
+    OpDef {
+        name: "DEDU",
+        signature: "OBJ1 .. OBJN DEDU 'TRAN' GEO1 GEO2 | DEDU 'TRAN' OBJ1 .. OBJN GEO1 GEO2",
+        doc: "Each object (POINT, MAILLAGE, CHPOINT, or a TABLE of them) carried from GEO1 onto GEO2, a mesh of the same topology: node k of element e of GEO1 becomes node k of element e of GEO2. Every node of the objects must be a node of GEO1.",
+        example: "u2 = dedu 'TRAN' (coor 1 bas) bas (bas plus (0. 1.)) ;",
+        f: dedu,
+    },
+];
+
+fn gene(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let l1 = a.req::<Rc<Mesh>>()?;
+    let l2 = a.req::<Rc<Mesh>>()?;
+    Ok(mesh_val(generatrix(&mut it.nodes, &l1, &l2)?))
+}
+
+fn dedu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    let mut objects = Vec::new();
+    while let Some(v) = a.left_value() {
+        objects.push(v);
+    }
+    objects.reverse();
+    if a.keyword(&["TRAN"]).is_none() {
+        return Err(a.err(
+            "gibi implements DEDU 'TRAN' only (the forms that move mesh nodes, 'ROTA' and 'ADAP' are not implemented)",
+        ));
+    }
+    objects.extend(a.rest());
+    if objects.len() < 3 {
+        return Err(a.missing("the objects to carry, then the meshes GEO1 and GEO2"));
+    }
+    let geo2 = objects.pop();
+    let geo1 = objects.pop();
+    let (Some(Value::Mesh(geo1)), Some(Value::Mesh(geo2))) = (geo1, geo2) else {
+        return Err(a.err("the last two operands of DEDU 'TRAN' must be the meshes GEO1 and GEO2"));
+    };
+    let map = node_map(&it.nodes, &geo1, &geo2)?;
+    if let [Value::Table(t)] = objects.as_slice() {
+        let mut out = Table::new();
+        for (k, v) in t.borrow().iter() {
+            let w = match (k, v) {
+                (Key::Mot(s), _) if s == "SOUSTYPE" => v.clone(),
+                _ => carry(a, &map, v)?,
+            };
+            out.set(k.clone(), w);
+        }
+        return Ok(vec![Value::Table(Rc::new(RefCell::new(out)))]);
+    }
+    objects.iter().map(|v| carry(a, &map, v)).collect()
+}
+
+/// One object on GEO1 as the same object on GEO2.
+fn carry(a: &Args, map: &HashMap<usize, usize>, v: &Value) -> Result<Value> {
+    let image = |n: usize| {
+        map.get(&n)
+            .copied()
+            .ok_or_else(|| a.err(format!("node {} of the {} is not a node of GEO1", n + 1, v.ty().name())))
+    };
+    Ok(match v {
+        Value::Point(p) => Value::Point(image(*p)?),
+        Value::Mesh(m) => {
+            let mut out = (**m).clone();
+            for p in &mut out.parts {
+                for n in &mut p.conn {
+                    *n = image(*n)?;
+                }
+            }
+            Value::Mesh(Rc::new(out))
+        }
+        Value::Chpo(c) => {
+            let mut entries = Vec::new();
+            for (n, comp, x) in c.entries() {
+                entries.push((image(n)?, comp, x));
+            }
+            Value::Chpo(Rc::new(Chpoint::from_entries(c.nature, entries)))
+        }
+        _ => {
+            return Err(a.err(format!(
+                "DEDU 'TRAN' carries POINT, MAILLAGE, CHPOINT or a TABLE of them, not a {}",
+                v.ty().name()
+            )))
+        }
+    })
+}
