@@ -338,6 +338,12 @@ impl<'a> Args<'a> {
         self.keyword(choices).ok_or_else(|| self.missing(&format!("one of {}", choices.join(" "))))
     }
 
+    /// The next right token as a word, not consumed: quoted text, a MOT,
+    /// or an unquoted word even when it names an operator (`CHAI FORMAT`).
+    pub fn peek_word(&self) -> Option<String> {
+        self.right_word()
+    }
+
     /// Any word on the right (not a symbol), consumed.
     pub fn word(&mut self) -> Option<String> {
         match self.st.right.front().map(|t| &t.kind)? {
@@ -486,6 +492,23 @@ impl Args<'_> {
     pub fn word_before_value(&mut self) -> Option<String> {
         match self.st.right.get(1).map(|t| &t.kind)? {
             TokKind::Val(v) if !matches!(v, Value::Mot(_) | Value::Proc(_)) => self.word(),
+            _ => None,
+        }
+    }
+
+    /// An unquoted word (even an operator's name) followed by a text or by
+    /// nothing, consumed: a name never assigned, which Cast3M reads as a
+    /// word where a text is expected (`CHAINE 'a' TRESCA ' b'`).
+    pub fn word_before_text(&mut self) -> Option<String> {
+        let w = match self.st.right.front().map(|t| &t.kind)? {
+            TokKind::Word(w) => w.clone(),
+            _ => return None,
+        };
+        match self.st.right.get(1).map(|t| &t.kind) {
+            None | Some(TokKind::Quoted(_)) | Some(TokKind::Val(Value::Mot(_))) => {
+                self.st.right.pop_front();
+                Some(w)
+            }
             _ => None,
         }
     }

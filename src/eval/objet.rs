@@ -42,6 +42,16 @@ pub fn is_bound(v: &Value) -> bool {
     matches!(v, Value::Host(h) if h.as_any().is::<Bound>())
 }
 
+/// Whether the last token read is the operator EXIS.
+fn after_exis(out: &[Tok]) -> bool {
+    let w = match out.last().map(|t| &t.kind) {
+        Some(TokKind::Word(w)) => w.to_string(),
+        Some(TokKind::Quoted(w)) => w.to_string(),
+        _ => return false,
+    };
+    w.trim().to_uppercase().starts_with("EXIS")
+}
+
 impl Interp {
     /// `% NAME` at `items[i]`: returns the index of the next item to read.
     /// After an OBJET it is a method call on it; otherwise it is the entry
@@ -71,6 +81,12 @@ impl Interp {
                 return Ok(i + 2);
             }
             if name != ATTACH && name != INHERIT && o.method(&name).is_none() {
+                // `EXIS %NAME` asks whether the entry exists: a missing one
+                // is a name bound to nothing, which EXIS answers FAUX.
+                if after_exis(out) {
+                    out.push(Tok { kind: TokKind::Word(format!("%{}", name)), span, named: false });
+                    return Ok(i + 2);
+                }
                 return Err(Error::runtime(format!(
                     "%{}: the OBJET of class {} has no entry or method {}",
                     name, o.class, name

@@ -167,7 +167,7 @@ const WORK_PAIRS: &[(&str, &str)] = &[
     ("M12", "RTST"),
 ];
 
-/// Strain energy density ½ σ:ε (ENER), component ENER, point by point.
+/// Strain energy density ½ σ:ε (ENER), component SCAL (a SCALAIRE field, as Cast3M names it), point by point.
 /// For bars and beams it is the energy per unit length ½ (N ε + M κ …).
 pub fn energy(sig: &GaussField, eps: &GaussField, elem: &'static str) -> Result<GaussField, FemError> {
     if sig.values.len() != eps.values.len() {
@@ -187,7 +187,7 @@ pub fn energy(sig: &GaussField, eps: &GaussField, elem: &'static str) -> Result<
         .zip(&eps.values)
         .map(|(s, e)| vec![0.5 * pairs.iter().map(|(i, j)| s[*i] * e[*j]).sum::<f64>()])
         .collect();
-    Ok(GaussField { comps: vec!["ENER"], values })
+    Ok(GaussField { comps: vec!["SCAL"], values })
 }
 
 /// The full symmetric tensor (xx, yy, zz, xy, xz, yz) of a stress point of

@@ -76,7 +76,7 @@ pub fn von_mises(f: Formulation, mode: Mode, m: &Material, sig: &GaussField) -> 
                 .collect()
         }
     };
-    Ok(GaussField { comps: vec!["VMIS"], values })
+    Ok(GaussField { comps: vec!["SCAL"], values })
 }
 
 /// Values at the element nodes from values at the points of

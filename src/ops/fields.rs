@@ -434,6 +434,9 @@ pub(crate) fn extr_mchaml(a: &mut Args, m: &Mchaml) -> Result<Vec<Value>> {
 /// EXTR on a model: its mesh (`'MAIL'`), or the model of the zones of
 /// some formulations, elements or behaviour words (`'FORM' 'MECANIQUE'`, `'ELEM' 'QUA4'`, `'COMP' 'PRESSION'`).
 pub(crate) fn extr_model(a: &mut Args, m: &Model) -> Result<Vec<Value>> {
+    if let Some(v) = super::model_zones::extr_zones(a, m) {
+        return Ok(vec![v]);
+    }
     if let Some((key, words)) = zone_selection(a, "COMP")? {
         return Ok(vec![Value::Model(Rc::new(m.zones_with(key, &words)))]);
     }

@@ -66,6 +66,7 @@ mod mesh_ruled;
 mod mesh_select;
 mod model;
 mod model_mixed;
+mod model_zones;
 mod nodal_field;
 mod noise;
 mod nomc_mchaml;

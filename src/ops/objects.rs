@@ -212,8 +212,8 @@ fn chai(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     loop {
         // Operands pushed before CHAI come first, as written.
         if a.left_len() == 0 {
-            if is_format_word(a.peek_right()) {
-                a.right_any();
+            if is_format_word(a.peek_word()) {
+                a.word();
                 let f = a.opt_right::<String>().ok_or_else(|| a.missing("a Fortran format such as '(F8.3)'"))?;
                 let e = format::parse(&f).map_err(|m| a.err(m))?;
                 match e {
@@ -235,7 +235,13 @@ fn chai(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 continue;
             }
         }
-        let Some(v) = a.opt::<Value>() else { break };
+        let v = match a.word_before_text() {
+            Some(w) => Value::mot(w),
+            None => match a.opt::<Value>() {
+                Some(v) => v,
+                None => break,
+            },
+        };
         match v {
             Value::Mot(m) => s.push_str(&text.as_ref().map_or_else(|| m.to_string(), |e| format::text(e, &m))),
             Value::Int(i) => s.push_str(&int.as_ref().map_or_else(|| i.to_string(), |e| format::int(e, i))),
@@ -259,13 +265,15 @@ fn chai(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 
 /// `'FORMAT'` (or `'FORM'`, `'FORMA'`): not any word that starts with
 /// FORM, so a text like 'FORMULE' stays a text.
-fn is_format_word(v: Option<Value>) -> bool {
-    match v {
-        Some(Value::Mot(w)) => {
-            let w = w.trim();
-            w.len() >= 4 && "FORMAT".starts_with(w)
+/// Unquoted too: `CHAINE FORMAT '(F9.2)' …` (FORM names an operator, but
+/// CHAI reads the word as its keyword).
+fn is_format_word(w: Option<String>) -> bool {
+    match w {
+        Some(w) => {
+            let w = w.trim().to_uppercase();
+            w.len() >= 4 && "FORMAT".starts_with(&w)
         }
-        _ => false,
+        None => false,
     }
 }
 

@@ -179,7 +179,7 @@ fn vmis(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         let (form, mode) = (formulation(mz), zone_mode(mz)?);
         let mat = material_for(mz, &fields);
         let mut nz = MchamlZone { mesh: z.mesh.clone(), element: z.element.clone(), ..Default::default() };
-        nz.comps = vec!["VMIS".into()];
+        nz.comps = vec!["SCAL".into()];
         for e in 0..z.values.len() {
             let g = crate::fem::stress::von_mises(form, mode, &mat, &to_gauss(z, e)).map_err(fem_err)?;
             nz.values.push(g.values);

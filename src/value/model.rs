@@ -109,20 +109,45 @@ impl Mchaml {
     }
 
     /// `ET`: the zones of both; material data given on the same mesh in
-    /// two fields (MATE … ET CARA …) join into one zone.
+    /// two fields (MATE … ET CARA …) join into one zone, and so do point
+    /// values on the same elements and points under other component names
+    /// (N11 ET N22 is one field of two components, as Cast3M makes it).
     pub fn merge(&self, b: &Mchaml) -> Mchaml {
         let mut out = self.clone();
         for z in &b.zones {
-            match out.zones.iter_mut().find(|x| x.mesh == z.mesh && x.values.is_empty() && z.values.is_empty()) {
-                Some(x) => {
-                    x.constants.extend(z.constants.clone());
-                    x.vectors.extend(z.vectors.clone());
-                    x.laws.extend(z.laws.clone());
+            if let Some(x) =
+                out.zones.iter_mut().find(|x| x.mesh == z.mesh && x.values.is_empty() && z.values.is_empty())
+            {
+                x.constants.extend(z.constants.clone());
+                x.vectors.extend(z.vectors.clone());
+                x.laws.extend(z.laws.clone());
+            } else if let Some(x) = out.zones.iter_mut().find(|x| x.joins_components(z)) {
+                for (ex, ez) in x.values.iter_mut().zip(&z.values) {
+                    for (px, pz) in ex.iter_mut().zip(ez) {
+                        px.extend_from_slice(pz);
+                    }
                 }
-                None => out.zones.push(z.clone()),
+                x.comps.extend(z.comps.iter().cloned());
+            } else {
+                out.zones.push(z.clone());
             }
         }
         out
+    }
+}
+
+impl MchamlZone {
+    /// Whether `z` holds point values on the same elements and points as
+    /// this zone under component names this zone does not have.
+    fn joins_components(&self, z: &MchamlZone) -> bool {
+        self.mesh == z.mesh
+            && !self.values.is_empty()
+            && self.at_nodes == z.at_nodes
+            && self.values.len() == z.values.len()
+            && self.values.iter().zip(&z.values).all(|(p, q)| p.len() == q.len())
+            && self.constants.is_empty()
+            && z.constants.is_empty()
+            && z.comps.iter().all(|c| !self.comps.contains(c))
     }
 }
 

@@ -1,7 +1,8 @@
 //! Element fields of different layouts combined zone by zone (`+`, `-`):
 //! the zones of both, components united where two zones lie on the same
-//! elements. Two single-component zones pair whatever their names (a VMIS
-//! field less a SCAL one), the result keeping the left name.
+//! elements. Components pair by name only: a component one side lacks is
+//! joined to the result (aaa5.notice, aaa4.notice: "sinon il realise
+//! l'adjonction"), so SI11 + SI22 holds both.
 
 use super::model::{Mchaml, MchamlZone};
 
@@ -182,10 +183,9 @@ impl Mchaml {
                 }
             }
             // Where each component of b goes in the result.
-            let single = za.comps.len() == 1 && zb.comps.len() == 1;
             let mut to: Vec<usize> = Vec::new();
             for c in &zb.comps {
-                let j = if single { Some(0) } else { z.comps.iter().position(|x| x == c) };
+                let j = z.comps.iter().position(|x| x == c);
                 to.push(match j {
                     Some(j) => j,
                     None if fill => {

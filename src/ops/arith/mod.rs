@@ -235,7 +235,18 @@ fn ge(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 
 /// EGA/NEG equality, with an optional absolute tolerance for numbers.
 fn equal(it: &Interp, a: &mut Args) -> Result<bool> {
-    let (x, y) = operands(a)?;
+    // A word compared with an unquoted name that is also an operator's
+    // (`NEG (TYPE T) TABLE`) compares with the name: Cast3M reads it as
+    // a word there.
+    let x = match a.left_value() {
+        Some(v) => v,
+        None => a.right_any().ok_or_else(|| a.missing("a left operand"))?,
+    };
+    let word = if matches!(x, Value::Mot(_)) { a.word_before_text() } else { None };
+    let y = match word {
+        Some(w) => Value::mot(w),
+        None => a.right_any().ok_or_else(|| a.missing("a right operand"))?,
+    };
     let tol = if x.is_number() { a.opt_num_right().unwrap_or(0.0) } else { 0.0 };
     use Value::*;
     Ok(match (&x, &y) {
