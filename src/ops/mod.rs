@@ -52,6 +52,7 @@ mod math;
 mod mesh;
 mod mesh_delaunay;
 mod mesh_edit;
+mod mesh_fill;
 mod mesh_free;
 mod mesh_isov;
 mod mesh_lines;
