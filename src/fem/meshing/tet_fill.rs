@@ -177,9 +177,9 @@ fn classify(op: &'static str, t: &Tets, s: &Surface) -> Result<Vec<usize>, MeshE
     let n = t.tets.len();
     let mut side = vec![u8::MAX; n];
     let mut stack = vec![];
-    for k in 0..n {
+    for (k, sk) in side.iter_mut().enumerate() {
         if t.alive[k] && t.touches_corner(k) {
-            side[k] = 0;
+            *sk = 0;
             stack.push(k);
         }
     }
