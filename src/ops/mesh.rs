@@ -22,7 +22,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "DALL", signature: "DALL LINE1 LINE2 LINE3 LINE4 ('PLAN' | 'SPHE' CENTRE | 'CYLI' P1 P2 | 'CONI' APEX P2)", doc: "A structured surface (OPTI ELEM QUA4, TRI3, QUA8, TRI6) from four sides forming a closed contour.", example: "s = dall bas dro hau gau ;", f: dall },
     OpDef { name: "TRAN", signature: "GEO TRAN (n) ('DINI' d1) ('DFIN' d2) VECTOR", doc: "Sweep a line into a surface or a surface into a volume along a vector.", example: "s = l tran 4 (0. 1.) ;", f: tran },
     OpDef { name: "ROTA", signature: "GEO ROTA (n) ANGLE CENTRE (AXIS_POINT)", doc: "Sweep by rotation (angle in degrees) about a point (2D) or an axis (3D).", example: "s = l rota 8 90. o ;", f: rota },
-    OpDef { name: "VOLU", signature: "VOLU (n) SURF1 SURF2 | VOLU (n) SURF 'TRAN' VECTOR | VOLU (n) SURF 'ROTA' ANGLE P1 (P2)", doc: "Volume between two compatible surfaces, or swept from a surface by a translation or a rotation (as TRAN and ROTA).", example: "v = volu 3 s1 s2 ;", f: volu },
+    OpDef { name: "VOLU", signature: "VOLU SURF_CLOSED ('VERB') | VOLU (n) SURF1 SURF2 | VOLU (n) SURF 'TRAN' VECTOR | VOLU (n) SURF 'ROTA' ANGLE P1 (P2)", doc: "Tetrahedra filling a closed surface (TRI3, or QUA4 cut in two; no node added), the volume between two compatible surfaces, or swept from a surface by a translation or a rotation (as TRAN and ROTA).", example: "v = volu 3 s1 s2 ;", f: volu },
 ];
 
 /// A POINT (as a POI1 mesh) or a MAILLAGE, whichever comes first
@@ -233,7 +233,7 @@ fn volu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 Some(s) => s,
                 None => a.req::<Rc<Mesh>>()?,
             };
-            let s2 = a.req::<Rc<Mesh>>()?;
+            let Some(s2) = a.opt::<Rc<Mesh>>() else { return super::mesh_fill::volu_closed(it, a, &s1) };
             more_spacing(a, &mut sp)?;
             let m = mg::volu(&mut it.nodes, &from_face(&s1, 2)?, &from_face(&s2, 1)?, &sp)?;
             Ok(mesh_val(grown(&s1, m, Some(&s2))))

@@ -13,7 +13,7 @@ use std::rc::Rc;
 pub(crate) const OPS: &[OpDef] = &[OpDef {
     name: "TRIA",
     signature: "TRIA POINTS ('CONV') | TRIA LINES (n_max | size)",
-    doc: "Delaunay triangulation: of a POI1 point set (SEG2 chain in 1D, TRI3 over the convex hull in 2D), or of the inside of closed SEG2 lines in the plane with no node added (with a size: free triangles of that size, as SURF).",
+    doc: "Delaunay triangulation: of a POI1 point set (SEG2 chain in 1D, TRI3 over the convex hull in 2D, TET4 over it in 3D), or of the inside of closed SEG2 lines in the plane with no node added (with a size: free triangles of that size, as SURF).",
     example: "t = tria ((0. 0.) et (1. 0.) et (0. 1.) et (1. 1.)) ;",
     f: tria,
 }];
@@ -57,9 +57,11 @@ fn tria(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             // Points of one plane in 3D are triangulated in that plane.
             _ => match in_plane(&coords) {
                 Some(pts) => mg::delaunay::points_2d("TRIA", &pts)?.iter().flat_map(|t| t.map(|k| ids[k])).collect(),
-                None => return Err(a.err(
-                    "the Delaunay tetrahedrisation of points in 3D is not available: gibi triangulates points in 1D and 2D, and points of one plane in 3D",
-                )),
+                None => {
+                    let tets = mg::tet_fill::points_3d("TRIA", &coords)?;
+                    let conn = tets.iter().flat_map(|t| t.map(|k| ids[k])).collect();
+                    return Ok(vec![Value::Mesh(Rc::new(Mesh::single(Part::with(ElemType::Tet4, conn))))]);
+                }
             },
         };
         let ty = if dim == 1 { ElemType::Seg2 } else { ElemType::Tri3 };

@@ -55,6 +55,7 @@ mod mesh_cut;
 mod mesh_delaunay;
 mod mesh_derive;
 mod mesh_edit;
+mod mesh_fill;
 mod mesh_free;
 mod mesh_isov;
 mod mesh_lines;
