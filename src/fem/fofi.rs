@@ -1,7 +1,12 @@
-//! FOFI: the nodal forces of the quadratic part of the strain, the
-//! analogue of BSIG for ½ ∇uᵀ∇u: the forces F whose work in any V is
-//! ∫ S_ij U_k,i V_k,j (fofi.notice). The G-theta procedures (DJ/DA) build
-//! the load of their auxiliary problem with it.
+//! FOFI: nodal forces of a stress field S through the gradient of a field
+//! U, the forces F whose work in any V is ∫ S : (∇V·∇U) = ∫ S_ij V_i,k
+//! U_k,j. The notice's ASCII formula pairs S with a product of the two
+//! gradients without showing which indices contract; this is the reading
+//! the G-theta procedures need: for DJ/DA they load their auxiliary
+//! problem with BSIG(D:sym(∇u·∇π) − σ div π) + FOFI(σ, ∇π), which is
+//! −(dK/dπ)·u, the derivative of the stiffness when the mesh moves along
+//! π, exactly when FOFI has this form (rupt11 checks dJ/da to 0.5 %;
+//! the other pairing S_ij U_k,i V_k,j is 77 % off there).
 
 use super::element::{FemError, Formulation, GaussField, Mode};
 use super::material::Material;
@@ -29,9 +34,9 @@ fn stress_name(mode: Mode, i: usize, j: usize) -> Option<&'static str> {
     })
 }
 
-/// `Σ_k w_k S_ij U_c,i ∂V/∂x_j` for each node and component c, in
-/// [`super::element::ElemMatrix`] dof order, over the stress points of the
-/// massive element. In AXIS the hoop term S_θθ (U_r/r)(V_r/r) acts on
+/// `Σ_p w_p S_cj U_k,j ∂N/∂x_k` for each node and component c (V = N e_c),
+/// in [`super::element::ElemMatrix`] dof order, over the stress points of
+/// the massive element. In AXIS the hoop term S_θθ (V_r/r)(U_r/r) acts on
 /// the radial component.
 pub fn quadratic_forces(
     f: Formulation,
@@ -64,11 +69,11 @@ pub fn quadratic_forces(
     for (k, p) in pts.iter().enumerate() {
         let s = |i: usize, j: usize| stress_name(mode, i, j).and_then(|n| sig.get(n, k)).unwrap_or(0.0);
         let g = |i: usize, j: usize| grad.get(gnames[3 * i + j], k).unwrap_or(0.0);
-        // a[c][j] = Σ_i U_c,i S_ij: the force density against V_c,j.
+        // a[c][k] = Σ_j S_cj U_k,j: the force density against V_c,k.
         let mut a = [[0.0; 3]; 3];
         for (c, row) in a.iter_mut().enumerate() {
-            for (j, v) in row.iter_mut().enumerate() {
-                *v = (0..3).map(|i| g(c, i) * s(i, j)).sum();
+            for (k, v) in row.iter_mut().enumerate() {
+                *v = (0..3).map(|j| s(c, j) * g(k, j)).sum();
             }
         }
         for (node, dn) in p.dndx.iter().enumerate() {

@@ -1,6 +1,6 @@
-//! FOFI: nodal forces of a stress field working in the quadratic part of
-//! the strain, ∫ S_ij U_k,i V_k,j (fofi.notice), on massive models. The
-//! numerics are in `fem::fofi`.
+//! FOFI: nodal forces of a stress field S through the gradient of a field
+//! U, whose work in any V is ∫ S : (∇V·∇U) (fofi.notice), on massive
+//! models. The numerics, and why this pairing, are in `fem::fofi`.
 
 use super::model::{formulation, material_for, zone_mode};
 use super::post::{to_gauss, zone_of};
@@ -16,7 +16,7 @@ use std::rc::Rc;
 pub(crate) const OPS: &[OpDef] = &[OpDef {
     name: "FOFI",
     signature: "FOFI MMODEL MCHAML_STRESS MCHAML_GRADIENT (MCHAML_CARA)",
-    doc: "Nodal forces F of a stress field S in the gradient field of a displacement U (GRAD): the forces whose work in any V is ∫ S_ij U_k,i V_k,j, the analogue of BSIG for the quadratic part of the strain (with the hoop term S_θθ U_r V_r / r² in AXIS). Massive elements only.",
+    doc: "Nodal forces F of a stress field S through the gradient field of a displacement U (GRAD): the forces whose work in any V is ∫ S : (∇V·∇U) = ∫ S_ij V_i,k U_k,j, the analogue of BSIG for terms quadratic in the gradients (with the hoop term S_θθ U_r V_r / r² in AXIS); G_THETA's DJ/DA uses it for the stiffness derivative of a moving mesh. Massive elements only.",
     example: "f = fofi mo sig (grad mo u) ;",
     f: fofi,
 }];
