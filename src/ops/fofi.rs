@@ -30,8 +30,11 @@ fn fofi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let is_grad = |f: &Mchaml| f.zones.iter().any(|z| z.comps.iter().any(|c| c == "UX,X" || c == "UR,R"));
     let is_sig = |f: &Mchaml| f.zones.iter().any(|z| z.comps.iter().any(|c| c == "SMXX" || c == "SMRR"));
     let sig = fields.iter().find(|f| is_sig(f)).cloned().ok_or_else(|| a.missing("MCHAML of stresses (SIGM)"))?;
-    let grad =
-        fields.iter().find(|f| is_grad(f)).cloned().ok_or_else(|| a.missing("MCHAML of displacement gradients (GRAD)"))?;
+    let grad = fields
+        .iter()
+        .find(|f| is_grad(f))
+        .cloned()
+        .ok_or_else(|| a.missing("MCHAML of displacement gradients (GRAD)"))?;
     let mut out = Chpoint::new(Nature::Discret);
     for z in &sig.zones {
         let mz = zone_of(&model, z).ok_or_else(|| a.err("the stress field does not belong to this model"))?;
@@ -57,9 +60,8 @@ fn fofi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 }
                 let x: Vec<[f64; 3]> = nodes.iter().map(|n| it.nodes.get(*n)).collect();
                 let gf = gradient_of(g, e, mode);
-                let f =
-                    crate::fem::fofi::quadratic_forces(form, p.ty, mode, &x, &mat, &to_gauss(z, e), &gf)
-                        .map_err(|err| a.err(format!("element {}: {}", e + 1, err)))?;
+                let f = crate::fem::fofi::quadratic_forces(form, p.ty, mode, &x, &mat, &to_gauss(z, e), &gf)
+                    .map_err(|err| a.err(format!("element {}: {}", e + 1, err)))?;
                 for (k, n) in nodes.iter().enumerate() {
                     for (c, d) in duals.iter().enumerate() {
                         out.add(*n, d, f[k * duals.len() + c], true);
@@ -78,6 +80,9 @@ fn gradient_of(g: &MchamlZone, e: usize, mode: crate::fem::element::Mode) -> Gau
     let names = gradient_comps(mode);
     let cols: Vec<Option<usize>> = names.iter().map(|n| g.comps.iter().position(|c| c == n)).collect();
     let comps = names.iter().zip(&cols).filter(|(_, c)| c.is_some()).map(|(n, _)| *n).collect();
-    let values = g.values[e].iter().map(|pt| cols.iter().flatten().map(|c| pt.get(*c).copied().unwrap_or(0.0)).collect()).collect();
+    let values = g.values[e]
+        .iter()
+        .map(|pt| cols.iter().flatten().map(|c| pt.get(*c).copied().unwrap_or(0.0)).collect())
+        .collect();
     GaussField { comps, values }
 }
