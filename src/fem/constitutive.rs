@@ -167,8 +167,11 @@ const WORK_PAIRS: &[(&str, &str)] = &[
     ("M12", "RTST"),
 ];
 
-/// Strain energy density ½ σ:ε (ENER), component SCAL (a SCALAIRE field, as Cast3M names it), point by point.
-/// For bars and beams it is the energy per unit length ½ (N ε + M κ …).
+/// The contracted product σ:ε (ENER), component SCAL (a SCALAIRE field,
+/// as Cast3M names it), point by point: the notice's "produit tensoriel
+/// contracté", twice the strain energy density (Cast3M's procedures halve
+/// it themselves: G_THETA's 0.5*ENER). For bars and beams it is
+/// N ε + M κ … per unit length.
 pub fn energy(sig: &GaussField, eps: &GaussField, elem: &'static str) -> Result<GaussField, FemError> {
     if sig.values.len() != eps.values.len() {
         return Err(FemError::WrongPointCount { elem, expected: sig.values.len(), got: eps.values.len() });
@@ -185,7 +188,7 @@ pub fn energy(sig: &GaussField, eps: &GaussField, elem: &'static str) -> Result<
         .values
         .iter()
         .zip(&eps.values)
-        .map(|(s, e)| vec![0.5 * pairs.iter().map(|(i, j)| s[*i] * e[*j]).sum::<f64>()])
+        .map(|(s, e)| vec![pairs.iter().map(|(i, j)| s[*i] * e[*j]).sum::<f64>()])
         .collect();
     Ok(GaussField { comps: vec!["SCAL"], values })
 }
@@ -341,7 +344,8 @@ mod tests {
     fn energy_pairs_stresses_with_strains() {
         let sig = GaussField { comps: vec!["SMXX", "SMYY", "SMZZ", "SMXY"], values: vec![vec![2.0, 4.0, 1.0, 3.0]] };
         let eps = GaussField { comps: vec!["EPXX", "EPYY", "EPZZ", "GAXY"], values: vec![vec![1.0, 1.0, 0.0, 2.0]] };
-        assert_eq!(energy(&sig, &eps, "QUA4").unwrap().values, vec![vec![6.0]]);
+        // 2·1 + 4·1 + 3·2, engineering shear: no half.
+        assert_eq!(energy(&sig, &eps, "QUA4").unwrap().values, vec![vec![12.0]]);
         let wrong = GaussField { comps: vec!["UX"], values: vec![vec![1.0]] };
         assert!(energy(&sig, &wrong, "QUA4").is_err());
     }

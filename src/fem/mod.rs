@@ -17,6 +17,7 @@ pub mod dst;
 pub mod element;
 pub mod enclosed;
 pub mod flow;
+pub mod fofi;
 pub mod hooke_matrix;
 pub mod incomp;
 pub mod integrate;

@@ -46,6 +46,15 @@ fn depl(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     // `DEPL 'PLUS' GEO VECTOR`: the keyword first, then the meshes (a
     // point there would be the vector).
     while objs.is_empty() || matches!(a.peek_right(), Some(Value::Mesh(_))) {
+        // With nothing to move yet, a POINT right after the keyword is
+        // the object (`DEPL 'PLUS' P1 (1. 0.)`): the vector comes after.
+        if objs.is_empty() {
+            if let Some(Value::Point(p)) = a.peek_right() {
+                a.right_any();
+                objs.push(Mesh::points(&[p]));
+                continue;
+            }
+        }
         match a.opt_right::<Rc<Mesh>>() {
             Some(m) => objs.push((*m).clone()),
             None => break,

@@ -32,6 +32,7 @@ mod export;
 mod extract;
 mod fields;
 mod fit;
+mod fofi;
 mod format;
 mod fourier;
 mod fracture;
@@ -209,6 +210,7 @@ impl Registry {
             prim::OPS,
             chpo_rigi::OPS,
             work::OPS,
+            fofi::OPS,
             poly_roots::OPS,
             orient_check::OPS,
         ] {
