@@ -102,6 +102,7 @@ mod superele;
 mod symmetry;
 mod tables;
 mod temps;
+mod heat;
 mod thermo;
 mod thermo_field;
 mod transform;
@@ -186,6 +187,7 @@ impl Registry {
             reso::OPS,
             post::OPS,
             thermo::OPS,
+            heat::OPS,
             hooke::OPS,
             principal::OPS,
             rtens::OPS,
