@@ -67,10 +67,9 @@ pub(crate) fn model(it: &Interp, a: &mut Args, geo: &Mesh) -> Result<Vec<Value>>
             // The element follows the mesh geometry, as for massive
             // mechanical models; a name that does not fit is caught below.
         } else {
-            return Err(a.err(format!(
-                "THERMIQUE {} is not available (isotropic conduction on massive elements is)",
-                w
-            )));
+            return Err(
+                a.err(format!("THERMIQUE {} is not available (isotropic conduction on massive elements is)", w))
+            );
         }
     }
     let mode = it.opts.mode.clone();
@@ -110,11 +109,23 @@ fn thermal_args(a: &mut Args) -> Result<(Rc<Model>, Vec<Rc<Mchaml>>)> {
     Ok((model, fields))
 }
 
-type ElemFn<'f> = dyn Fn(ElemType, element::Mode, &[[f64; 3]], &element::Material) -> std::result::Result<element::ElemMatrix, element::FemError>
+type ElemFn<'f> = dyn Fn(
+        ElemType,
+        element::Mode,
+        &[[f64; 3]],
+        &element::Material,
+    ) -> std::result::Result<element::ElemMatrix, element::FemError>
     + 'f;
 
 /// One block per mesh part of the element matrices `f` gives.
-fn assemble(it: &Interp, a: &Args, model: &Model, fields: &[Rc<Mchaml>], subtype: Subtype, f: &ElemFn) -> Result<Rigidite> {
+fn assemble(
+    it: &Interp,
+    a: &Args,
+    model: &Model,
+    fields: &[Rc<Mchaml>],
+    subtype: Subtype,
+    f: &ElemFn,
+) -> Result<Rigidite> {
     let mut rig = Rigidite::new(subtype);
     for zone in &model.zones {
         let mode = zone_mode(zone)?;

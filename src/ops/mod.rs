@@ -35,6 +35,7 @@ mod fit;
 mod format;
 mod fourier;
 mod fracture;
+mod heat;
 mod hooke;
 mod hyperbolic;
 mod insert;
@@ -61,6 +62,7 @@ mod mesh_query;
 mod mesh_repair;
 mod mesh_ruled;
 mod mesh_select;
+mod mesh_verify;
 mod model;
 mod model_mixed;
 mod nodal_field;
@@ -102,7 +104,6 @@ mod superele;
 mod symmetry;
 mod tables;
 mod temps;
-mod heat;
 mod thermo;
 mod thermo_field;
 mod transform;
@@ -188,6 +189,7 @@ impl Registry {
             post::OPS,
             thermo::OPS,
             heat::OPS,
+            mesh_verify::OPS,
             hooke::OPS,
             principal::OPS,
             rtens::OPS,

@@ -53,6 +53,7 @@ pub mod symmetry;
 pub mod tetra;
 pub mod transform;
 mod vec3;
+pub mod verify;
 
 #[cfg(test)]
 mod tests;
