@@ -28,8 +28,6 @@ const OTHER: &str = "`gibi --list-operators` lists what gibi implements";
 pub(crate) const HINTS: &[(&str, &str)] = &[
     ("ACQU", "read data with LIRE"),
     ("AMOR", STATICS),
-    ("CAPA", STATICS),
-    ("COND", STATICS),
     ("DYNAMIC", STATICS),
     ("DYNE", STATICS),
     ("ECOU", STATICS),

@@ -68,6 +68,8 @@ pub enum Formulation {
     /// Linear elastic joint (JOI2, JOI3, JOI4) on RAC2, RAC3, LIA3, LIA4
     /// (see [`joint`]).
     Joint,
+    /// Heat conduction on the massive geometries (see [`super::thermal`]).
+    Thermal,
 }
 
 impl Formulation {
@@ -88,6 +90,7 @@ impl Formulation {
             Formulation::Coq8 => "COQ8",
             Formulation::Coq2 => "COQ2",
             Formulation::Joint => "JOI2",
+            Formulation::Thermal => "THERMIQUE",
         }
     }
 
@@ -161,6 +164,7 @@ pub fn node_dofs(f: Formulation, mode: Mode) -> Result<&'static [&'static str], 
         Formulation::Coq6 | Formulation::Coq8 => super::thick_shell::dofs(f, mode),
         Formulation::Coq2 => coq2::dofs(mode),
         Formulation::Joint => joint::dofs(mode),
+        Formulation::Thermal => Ok(super::thermal::DOFS),
     }
 }
 
@@ -168,6 +172,7 @@ pub fn node_dofs(f: Formulation, mode: Mode) -> Result<&'static [&'static str], 
 pub fn node_duals(f: Formulation, mode: Mode) -> Result<&'static [&'static str], FemError> {
     let d = node_dofs(f, mode)?;
     Ok(match d.len() {
+        _ if d[0] == "T" => super::thermal::DUALS,
         _ if d[0] == "UR" && d.len() == 3 => &["FR", "FZ", "MT"],
         _ if d[0] == "UR" => &["FR", "FZ"],
         2 => &["FX", "FY"],
@@ -212,7 +217,7 @@ fn check(f: Formulation, ty: ElemType, mode: Mode) -> Result<(), FemError> {
         Formulation::Barr | Formulation::Pout | Formulation::Timo => ty == ElemType::Seg2,
         Formulation::Q4ri => ty == ElemType::Qua4,
         Formulation::Q8ri => ty == ElemType::Qua8,
-        Formulation::Solid => ty.dim() >= 2,
+        Formulation::Solid | Formulation::Thermal => ty.dim() >= 2,
         Formulation::Incomp => super::incomp::geometry_ok(ty),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => ty == shell::geometry(f),
         Formulation::Coq6 | Formulation::Coq8 => ty == super::thick_shell::geometry(f),
@@ -244,6 +249,7 @@ pub fn stiffness(
         Formulation::Coq6 | Formulation::Coq8 => super::thick_shell::unavailable("the stiffness (RIGI)", f),
         Formulation::Coq2 => coq2::stiffness(mode, x, m),
         Formulation::Joint => joint::stiffness(ty, mode, x, m),
+        Formulation::Thermal => super::thermal::conductivity(ty, mode, x, m),
     }
 }
 
@@ -276,6 +282,7 @@ pub fn mass(
             let dofs = (0..x.len()).flat_map(|i| names.iter().map(move |&d| (i, d))).collect();
             Ok(ElemMatrix { dofs, k: vec![0.0; n * n] })
         }
+        Formulation::Thermal => super::thermal::capacity(ty, mode, x, m, lumped),
     }
 }
 
@@ -300,6 +307,7 @@ pub fn stress(
         Formulation::Coq6 | Formulation::Coq8 => super::thick_shell::unavailable("SIGM", f),
         Formulation::Coq2 => coq2::stress(mode, x, m, u),
         Formulation::Joint => joint::stress(ty, mode, x, m, u),
+        Formulation::Thermal => Err(FemError::NotFor { what: "SIGM", form: f.name() }),
     }
 }
 
@@ -318,6 +326,7 @@ pub fn gradient(
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => {
             solid::gradient(f, ty, mode, x, u)
         }
+        Formulation::Thermal => super::thermal::gradient(ty, mode, x, u),
         _ => Err(FemError::NotFor { what: "GRAD", form: f.name() }),
     }
 }
@@ -345,6 +354,7 @@ pub fn strain(
         Formulation::Coq6 | Formulation::Coq8 => super::thick_shell::unavailable("EPSI", f),
         Formulation::Coq2 => coq2::strain(mode, x, u),
         Formulation::Joint => joint::strain(ty, mode, x, m, u),
+        Formulation::Thermal => Err(FemError::NotFor { what: "EPSI", form: f.name() }),
     }
 }
 
@@ -372,6 +382,7 @@ pub fn internal_forces(
         Formulation::Coq6 | Formulation::Coq8 => super::thick_shell::unavailable("BSIG", f),
         Formulation::Coq2 => coq2::internal_forces(mode, x, m, sig),
         Formulation::Joint => joint::internal_forces(ty, mode, x, m, sig),
+        Formulation::Thermal => Err(FemError::NotFor { what: "BSIG", form: f.name() }),
     }
 }
 
@@ -384,6 +395,7 @@ pub fn gauss_points(f: Formulation, ty: ElemType) -> Vec<([f64; 3], f64)> {
             vec![([-1.0, 0.0, 0.0], 1.0), ([1.0, 0.0, 0.0], 1.0)]
         }
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => solid::rule(f, ty),
+        Formulation::Thermal => solid::rule(Formulation::Solid, ty),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => shell::rule(ty),
         Formulation::Coq6 | Formulation::Coq8 => super::thick_shell::rule(f),
         Formulation::Coq2 => coq2::rule(),

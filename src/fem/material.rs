@@ -38,6 +38,10 @@ pub struct Material {
     /// Tangential and normal stiffnesses of joints, per unit area.
     pub ks: Option<f64>,
     pub kn: Option<f64>,
+    /// Thermal conductivity (MATE 'K') and specific heat (MATE 'C') of a
+    /// THERMIQUE model.
+    pub cond: Option<f64>,
+    pub capa: Option<f64>,
     /// A Hooke matrix given in place of the elastic constants (RIGI of a
     /// HOOKE field): entries named "STRESS/STRAIN" (SMXX/EPXX …). When
     /// present it is the elasticity matrix, whatever YOUN and NU say.
@@ -69,6 +73,8 @@ impl Material {
             "DZ" => self.dz = v,
             "KS" => self.ks = v,
             "KN" => self.kn = v,
+            "K" => self.cond = v,
+            "C" => self.capa = v,
             _ => return false,
         }
         true

@@ -170,6 +170,33 @@ pub struct Part {
 /// The same elements are the same part whatever their colour: a model
 /// finds its material by its mesh, and colouring a mesh for a picture
 /// must not change the mechanics.
+/// The connectivity of the elements of `p` not yet in `mesh`. A
+/// procedure that grows a mesh one element at a time (`m = m ET e` in a
+/// loop) would hash the whole mesh at every step: a few elements are
+/// looked for by comparison instead, many through a set of the mesh's.
+fn new_elements(mesh: &Mesh, p: &Part) -> Vec<usize> {
+    let n = p.ty.nodes();
+    let same = || mesh.parts.iter().filter(|q| q.ty == p.ty).flat_map(|q| q.conn.chunks(n));
+    if p.len() <= 8 {
+        let mut new: Vec<usize> = Vec::with_capacity(p.conn.len());
+        let mut present = vec![false; p.len()];
+        for e in same() {
+            for (k, f) in p.conn.chunks(n).enumerate() {
+                // The first node settles almost every comparison.
+                if !present[k] && e[0] == f[0] && e == f {
+                    present[k] = true;
+                }
+            }
+        }
+        for (f, _) in p.conn.chunks(n).zip(&present).filter(|(_, here)| !**here) {
+            new.extend_from_slice(f);
+        }
+        return new;
+    }
+    let existing: rustc_hash::FxHashSet<&[usize]> = same().collect();
+    p.conn.chunks(n).filter(|e| !existing.contains(e)).flatten().copied().collect()
+}
+
 impl PartialEq for Part {
     fn eq(&self, other: &Part) -> bool {
         self.ty == other.ty && self.conn == other.conn
@@ -249,15 +276,12 @@ impl Mesh {
     pub fn union(&self, other: &Mesh) -> Mesh {
         let mut out = self.clone();
         for p in &other.parts {
-            let n = p.ty.nodes();
             let last = out.parts.iter().rposition(|q| q.ty == p.ty);
             let Some(last) = last else {
                 out.parts.push(p.clone());
                 continue;
             };
-            let existing: HashSet<&[usize]> =
-                out.parts.iter().filter(|q| q.ty == p.ty).flat_map(|q| q.conn.chunks(n)).collect();
-            let new: Vec<usize> = p.conn.chunks(n).filter(|e| !existing.contains(e)).flatten().copied().collect();
+            let new = new_elements(&out, p);
             match out.parts.iter_mut().find(|q| q.ty == p.ty && q.colour == p.colour) {
                 Some(q) => q.conn.extend(new),
                 None if !new.is_empty() => out.parts.insert(last + 1, Part { ty: p.ty, conn: new, colour: p.colour }),

@@ -36,6 +36,7 @@ pub mod skin;
 pub mod solid;
 pub mod stress;
 pub mod surface_vectors;
+pub mod thermal;
 pub mod thick_shell;
 pub mod vec3;
 pub mod work;

@@ -52,7 +52,7 @@ pub fn rule(f: Formulation, ty: ElemType) -> Vec<QPoint> {
     }
 }
 
-fn mass_rule(ty: ElemType) -> Vec<QPoint> {
+pub(super) fn mass_rule(ty: ElemType) -> Vec<QPoint> {
     match ty {
         ElemType::Tri3 => tri(3),
         ElemType::Tri6 => tri(7),

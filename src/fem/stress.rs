@@ -17,7 +17,9 @@ use super::shape::eval;
 pub fn von_mises(f: Formulation, mode: Mode, m: &Material, sig: &GaussField) -> Result<GaussField, FemError> {
     let at = |v: &[f64], name: &str| sig.comps.iter().position(|c| *c == name).map_or(0.0, |i| v[i]);
     let values = match f {
-        Formulation::Joint => return Err(FemError::NotFor { what: "a von Mises stress (VMIS)", form: f.name() }),
+        Formulation::Joint | Formulation::Thermal => {
+            return Err(FemError::NotFor { what: "a von Mises stress (VMIS)", form: f.name() })
+        }
         Formulation::Barr | Formulation::Pout | Formulation::Timo => {
             let elem = f.name();
             let a = m.positive(m.sect, "SECT", elem)?;

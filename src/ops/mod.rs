@@ -36,6 +36,7 @@ mod fofi;
 mod format;
 mod fourier;
 mod fracture;
+mod heat;
 mod hooke;
 mod hyperbolic;
 mod insert;
@@ -66,6 +67,7 @@ mod mesh_query;
 mod mesh_repair;
 mod mesh_ruled;
 mod mesh_select;
+mod mesh_verify;
 mod model;
 mod model_mixed;
 mod model_zones;
@@ -194,6 +196,8 @@ impl Registry {
             reso::OPS,
             post::OPS,
             thermo::OPS,
+            heat::OPS,
+            mesh_verify::OPS,
             hooke::OPS,
             principal::OPS,
             rtens::OPS,

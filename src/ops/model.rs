@@ -43,6 +43,9 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     if formulation.starts_with("CHAR") {
         return super::pres_model::model(it, a, &geo);
     }
+    if formulation.starts_with("THER") {
+        return super::heat::model(it, a, &geo);
+    }
     if !formulation.starts_with("MECA") {
         return Err(a.err(format!("only the MECANIQUE formulation is available, not {}", formulation)));
     }
@@ -226,7 +229,7 @@ fn contact_model(it: &mut Interp, a: &mut Args, geo: &Mesh) -> Result<Vec<Value>
 
 const PROPS: &[&str] = &[
     "YOUN", "NU", "RHO", "ALPH", "TREF", "SECT", "INRY", "INRZ", "TORS", "SECY", "SECZ", "EPAI", "DIM3", "EXCE", "DX",
-    "DY", "DZ", "VECT", "JEU", "ADHE", "SIGY", "H", "KS", "KN", "ALPN",
+    "DY", "DZ", "VECT", "JEU", "ADHE", "SIGY", "H", "KS", "KN", "ALPN", "K", "C",
 ];
 
 fn props(it: &Interp, a: &mut Args, subtype: &str) -> Result<Vec<Value>> {
@@ -355,6 +358,9 @@ pub(crate) fn shell_geometry(element: &str) -> Option<ElemType> {
 }
 
 pub(crate) fn formulation(zone: &ModelZone) -> Formulation {
+    if zone.formulation == super::heat::FORMULATION {
+        return Formulation::Thermal;
+    }
     match zone.element.as_str() {
         "COQ3" => Formulation::Coq3,
         "DKT" => Formulation::Dkt,

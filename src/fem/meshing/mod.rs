@@ -61,6 +61,7 @@ pub mod tet_recover;
 pub mod tetra;
 pub mod transform;
 mod vec3;
+pub mod verify;
 pub mod winding;
 
 #[cfg(test)]

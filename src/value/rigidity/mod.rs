@@ -21,6 +21,9 @@ pub enum Subtype {
     Rigidite,
     Masse,
     Blocage,
+    /// Heat conduction and capacity matrices (COND, CAPA).
+    Conductivite,
+    Capacite,
 }
 
 impl Subtype {
@@ -29,6 +32,8 @@ impl Subtype {
             Subtype::Rigidite => "RIGIDITE",
             Subtype::Masse => "MASSE",
             Subtype::Blocage => "BLOCAGE",
+            Subtype::Conductivite => "CONDUCTIVITE",
+            Subtype::Capacite => "CAPACITE",
         }
     }
 }
