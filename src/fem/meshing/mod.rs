@@ -52,6 +52,7 @@ pub mod sweep;
 pub mod symmetry;
 pub mod tetra;
 pub mod transform;
+pub mod tri6_split;
 mod vec3;
 
 #[cfg(test)]
