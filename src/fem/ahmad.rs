@@ -100,9 +100,16 @@ struct Point {
     det: f64,
 }
 
-/// The per-dof displacement field at a point, u = w φ: for each element
-/// dof its direction w and the physical gradient of its scalar φ.
-fn fields(g: &Geom, p: [f64; 3], zeta: f64) -> Option<(Vec<([f64; 3], [f64; 3])>, [[f64; 3]; 3], f64)> {
+/// The per-dof displacement fields at a point, u = w φ: for each element
+/// dof its direction w and the physical gradient of its scalar φ; the
+/// point's frame (e1, e2, e3) and det J.
+struct Fields {
+    cols: Vec<([f64; 3], [f64; 3])>,
+    frame: [[f64; 3]; 3],
+    det: f64,
+}
+
+fn fields(g: &Geom, p: [f64; 3], zeta: f64) -> Option<Fields> {
     let h = g.e + zeta * g.t / 2.0;
     let s = eval(g.ty, p);
     let [a1, a2] = tangents(g.ty, &g.x, Some((&g.v, h)), p);
@@ -127,14 +134,15 @@ fn fields(g: &Geom, p: [f64; 3], zeta: f64) -> Option<(Vec<([f64; 3], [f64; 3])>
             out.push((cross(ed, *v), pr));
         }
     }
-    Some((out, [e1, e2, e3], det))
+    Some(Fields { cols: out, frame: [e1, e2, e3], det })
+}
+
+fn folded(f: Formulation) -> FemError {
+    FemError::Degenerate { elem: f.name(), why: "the element is folded, or thicker than its curvature allows".into() }
 }
 
 fn point(g: &Geom, f: Formulation, p: [f64; 3], zeta: f64) -> Result<Point, FemError> {
-    let (cols, e, det) = fields(g, p, zeta).ok_or_else(|| FemError::Degenerate {
-        elem: f.name(),
-        why: "the element is folded, or thicker than its curvature allows".into(),
-    })?;
+    let Fields { cols, frame: e, det } = fields(g, p, zeta).ok_or_else(|| folded(f))?;
     let n = cols.len();
     let mut b = [vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]];
     // e_a · G e_b with G = w ⊗ P: (e_a·w)(P·e_b).
@@ -260,10 +268,7 @@ pub fn mass(f: Formulation, mode: Mode, x: &[[f64; 3]], m: &Material, lumped: bo
     let mut k = vec![0.0; n * n];
     for (p, w) in plane_rule(g.ty, true) {
         for (z, wz) in gauss_1d(2) {
-            let (_, _, det) = fields(&g, p, z).ok_or_else(|| FemError::Degenerate {
-                elem: f.name(),
-                why: "the element is folded, or thicker than its curvature allows".into(),
-            })?;
+            let det = fields(&g, p, z).ok_or_else(|| folded(f))?.det;
             let h = g.e + z * g.t / 2.0;
             let s = eval(g.ty, p);
             // Each dof's displacement vector at the point.
