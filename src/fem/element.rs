@@ -246,7 +246,7 @@ pub fn stiffness(
         Formulation::Incomp => super::incomp::stiffness(ty, mode, x, m),
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri => solid::stiffness(f, ty, mode, x, m),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => shell::stiffness(f, mode, x, m),
-        Formulation::Coq6 | Formulation::Coq8 => super::thick_shell::unavailable("the stiffness (RIGI)", f),
+        Formulation::Coq6 | Formulation::Coq8 => super::ahmad::stiffness(f, mode, x, m),
         Formulation::Coq2 => coq2::stiffness(mode, x, m),
         Formulation::Joint => joint::stiffness(ty, mode, x, m),
         Formulation::Thermal => super::thermal::conductivity(ty, mode, x, m),
@@ -273,7 +273,7 @@ pub fn mass(
         Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => {
             shell::mass(f, mode, x, m, lumped)
         }
-        Formulation::Coq6 | Formulation::Coq8 => super::thick_shell::unavailable("the mass (MASS)", f),
+        Formulation::Coq6 | Formulation::Coq8 => super::ahmad::mass(f, mode, x, m, lumped),
         Formulation::Coq2 => coq2::mass(mode, x, m, lumped),
         // A joint has no thickness, hence no mass.
         Formulation::Joint => {

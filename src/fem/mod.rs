@@ -5,6 +5,7 @@
 //! [`loads`] (pressure), post-processing in [`stress`] (VMIS, Gauss points
 //! to nodes). Conventions (dof order, AXIS per radian, output points) are
 //! documented at the top of [`element`] and [`quadrature`].
+pub mod ahmad;
 pub mod bar;
 pub mod beam;
 pub mod beam_skin;

@@ -1,7 +1,8 @@
 //! COQ6 (on TRI6) and COQ8 (on QUA8): Cast3M's curved thick shells with
-//! six dofs per node. gibi knows their geometry (models, their points,
-//! surface vectors and jacobians, VSUR, JACO); their stiffness, mass and
-//! stresses are not implemented yet and are refused by name.
+//! six dofs per node: their geometry (models, their points, surface
+//! vectors and jacobians, VSUR, JACO). The stiffness and mass are in
+//! [`super::ahmad`]; stresses and strains are not implemented yet and are
+//! refused by name.
 
 use super::element::{FemError, Formulation, Mode};
 use super::mesh::ElemType;

@@ -174,12 +174,15 @@ fn tran(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     Ok(mesh_val(swept_surface(it, m)))
 }
 
-/// A line swept under `OPTI ELEM TRI3` gives triangles, as DALL does (each
-/// quadrangle cut along its first diagonal); volumes are left as swept.
-pub(crate) fn swept_surface(it: &Interp, m: Mesh) -> Mesh {
-    let tri = ElemType::from_name(&it.opts.elem) == Some(ElemType::Tri3);
-    if tri && m.parts.iter().any(|p| p.ty == ElemType::Qua4) {
+/// A line swept under `OPTI ELEM TRI3` (TRI6) gives triangles, as DALL
+/// does (each quadrangle cut along its first diagonal); volumes are left
+/// as swept.
+pub(crate) fn swept_surface(it: &mut Interp, m: Mesh) -> Mesh {
+    let ty = ElemType::from_name(&it.opts.elem);
+    if ty == Some(ElemType::Tri3) && m.parts.iter().any(|p| p.ty == ElemType::Qua4) {
         mg::change_to_triangles(&m)
+    } else if ty == Some(ElemType::Tri6) && m.parts.iter().any(|p| p.ty == ElemType::Qua8) {
+        mg::tri6_split::qua8_to_tri6(&mut it.nodes, &m)
     } else {
         m
     }

@@ -98,6 +98,7 @@ mod principal;
 mod prob;
 mod products;
 mod projection;
+mod rela_cori;
 mod rela_mili;
 mod replace;
 mod reso;

@@ -79,7 +79,7 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             behaviour.push(w);
         } else {
             return Err(a.err(format!(
-                "{} is not supported (elastic isotropic BARR, POUT, TIMO, COQ2, COQ3, DKT, COQ4 and massive elements are)",
+                "{} is not supported (elastic isotropic BARR, POUT, TIMO, COQ2, COQ3, DKT, COQ4, COQ6, COQ8 and massive elements are)",
                 w
             )));
         }

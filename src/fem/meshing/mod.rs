@@ -60,6 +60,7 @@ pub mod tet_fill;
 pub mod tet_recover;
 pub mod tetra;
 pub mod transform;
+pub mod tri6_split;
 mod vec3;
 pub mod verify;
 pub mod winding;
