@@ -99,6 +99,7 @@ mod simplex;
 mod special;
 mod spectra;
 mod superele;
+mod cmct;
 mod symmetry;
 mod tables;
 mod temps;
@@ -191,6 +192,7 @@ impl Registry {
             rtens::OPS,
             integrate::OPS,
             superele::OPS,
+            cmct::OPS,
             fracture::OPS,
             export::OPS,
             evol::OPS,

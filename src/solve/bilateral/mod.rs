@@ -22,6 +22,7 @@ pub mod direct;
 pub mod eliminate;
 pub mod lagrange;
 pub mod linear;
+pub mod mult_masters;
 mod nd;
 pub mod ordering;
 pub mod pool;
