@@ -209,7 +209,8 @@ fn build(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         w
     };
     let wanted: std::collections::HashSet<(usize, String)> = wanted.into_iter().collect();
-    let mut keep: Vec<usize> = asm.dofs.iter().enumerate().filter(|(_, d)| wanted.contains(*d)).map(|(i, _)| i).collect();
+    let mut keep: Vec<usize> =
+        asm.dofs.iter().enumerate().filter(|(_, d)| wanted.contains(*d)).map(|(i, _)| i).collect();
     // Multiplier masters: the conditions whose LX is wanted.
     let conds: Vec<usize> =
         (0..asm.mult_nodes.len()).filter(|&k| wanted.contains(&(asm.mult_nodes[k], "LX".to_string()))).collect();

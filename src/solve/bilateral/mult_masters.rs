@@ -54,7 +54,13 @@ impl MultiplierMasters {
             // a coupling far above its own stiffness would pass its pivot
             // for a zero one.
             let k = terms.iter().map(|&(j, _)| row_max[j]).filter(|&r| r > 0.0).fold(f64::INFINITY, f64::min);
-            let k = if k.is_finite() { k } else if global > 0.0 { global } else { 1.0 };
+            let k = if k.is_finite() {
+                k
+            } else if global > 0.0 {
+                global
+            } else {
+                1.0
+            };
             let chat = terms.iter().fold(0.0f64, |a, &(_, v)| a.max(v.abs()));
             let s = if chat > 0.0 { k / chat } else { 1.0 };
             scale.push(s);

@@ -35,7 +35,8 @@ impl Rigidite {
         }
         let lx = || (vec![(0, "LX".to_string())], vec!["FLX".to_string()]);
         let (d1, u1) = lx();
-        let mut diag = Block { nodes_per_elem: 1, conn: vec![], dofs: d1, duals: u1, mats: vec![], symmetry: Symmetry::Symmetric };
+        let mut diag =
+            Block { nodes_per_elem: 1, conn: vec![], dofs: d1, duals: u1, mats: vec![], symmetry: Symmetry::Symmetric };
         let mut pairs = Block {
             nodes_per_elem: 2,
             conn: vec![],
