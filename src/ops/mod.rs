@@ -15,6 +15,7 @@ mod chan_support;
 mod chargement;
 mod chargement_extr;
 mod chpo_rigi;
+mod cmct;
 mod colour;
 mod config;
 mod contact;
@@ -204,6 +205,7 @@ impl Registry {
             rtens::OPS,
             integrate::OPS,
             superele::OPS,
+            cmct::OPS,
             fracture::OPS,
             export::OPS,
             evol::OPS,

@@ -8,7 +8,9 @@ use super::{dofs, Args, OpDef};
 use crate::error::Result;
 use crate::eval::Interp;
 use crate::fem::mesh::Mesh;
-use crate::solve::bilateral::schur::{schur_onto, SchurOnto};
+use crate::solve::bilateral::mult_masters::MultiplierMasters;
+use crate::solve::bilateral::schur::{schur_onto_signed, SchurOnto};
+use crate::solve::{Load, Solution};
 use crate::value::rigidity::{Block, Subtype, Symmetry};
 use crate::value::{Chpoint, HostObject, Nature, Rigidite, Value};
 use std::any::Any;
@@ -28,6 +30,31 @@ pub struct SuperElem {
     schur: SchurOnto,
     /// Master unknowns (node, component), in the order of the condensed matrix.
     masters: Vec<(usize, String)>,
+    /// When masters are multipliers (LX): the augmented system condensed.
+    mult: Option<MultiplierMasters>,
+    /// Physical value / condensed unknown of each master (1 but for a
+    /// scaled multiplier).
+    scale: Vec<f64>,
+}
+
+impl SuperElem {
+    /// A load of the rigidity as one of the condensed system.
+    fn load(&self, l: Load) -> Load {
+        match &self.mult {
+            Some(mm) => mm.load(&l),
+            None => l,
+        }
+    }
+
+    /// The expansion of master values as a solution of the rigidity.
+    fn expand(&self, load: &Load, tail: &[f64]) -> Solution {
+        let tail: Vec<f64> = tail.iter().zip(&self.scale).map(|(v, s)| v / s).collect();
+        let s = self.schur.expand(load, &tail);
+        match &self.mult {
+            Some(mm) => mm.solution(&s),
+            None => s,
+        }
+    }
 }
 
 impl std::fmt::Debug for SuperElem {
@@ -52,12 +79,14 @@ fn as_super(v: &Value) -> Option<&SuperElem> {
     }
 }
 
+/// The SUPERELE, wherever it stands among the arguments (`SUPER sup
+/// 'CHARGE' f` as well as `SUPER 'CHARGE' sup f`).
 fn req_super(a: &mut Args) -> Result<Rc<dyn HostObject>> {
-    let v = a.req::<Value>()?;
-    match &v {
-        Value::Host(h) if as_super(&v).is_some() => Ok(h.clone()),
-        other => Err(a.err(format!("expected SUPERELE, found {}", other.type_name()))),
-    }
+    let found = a.opt_with(|v| match v {
+        Value::Host(h) if as_super(v).is_some() => Some(h.clone()),
+        _ => None,
+    });
+    found.ok_or_else(|| a.missing("SUPERELE"))
 }
 
 fn supe(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
@@ -67,11 +96,11 @@ fn supe(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             let h = req_super(a)?;
             let s = h.as_any().downcast_ref::<SuperElem>().expect("checked");
             let f = a.req::<Rc<Chpoint>>()?;
-            let load = assemble::load(it, &s.asm, &[&f]).map_err(|e| a.err(e.message))?;
+            let load = s.load(assemble::load(it, &s.asm, &[&f]).map_err(|e| a.err(e.message))?);
             let fc = s.schur.load(&load);
             let mut out = Chpoint::new(Nature::Discret);
-            for ((n, c), v) in s.masters.iter().zip(fc) {
-                out.add(*n, &dofs::dual_of(c), v, true);
+            for (((n, c), v), sc) in s.masters.iter().zip(fc).zip(&s.scale) {
+                out.add(*n, &dofs::dual_of(c), v / sc, true);
             }
             Ok(vec![Value::Chpo(Rc::new(out))])
         }
@@ -84,7 +113,7 @@ fn supe(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 None => assemble::load(it, &s.asm, &[]).map_err(|e| a.err(e.message))?,
             };
             let tail: Vec<f64> = s.masters.iter().map(|(n, c)| um.get(*n, c).unwrap_or(0.0)).collect();
-            let sol = s.schur.expand(&load, &tail);
+            let sol = s.expand(&s.load(load), &tail);
             Ok(vec![Value::Chpo(Rc::new(solution_field(&s.asm, &sol)))])
         }
         _ => masse(it, a),
@@ -99,12 +128,12 @@ fn masse(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let s = h.as_any().downcast_ref::<SuperElem>().expect("checked");
     let m = a.req::<Rc<Rigidite>>()?;
     let with_modes = a.keyword(&["LCHP"]).is_some();
-    let load = assemble::load(it, &s.asm, &[]).map_err(|e| a.err(e.message))?;
+    let load = s.load(assemble::load(it, &s.asm, &[]).map_err(|e| a.err(e.message))?);
     let d = s.masters.len();
     let modes: Vec<Rc<Chpoint>> = (0..d)
         .map(|j| {
             let tail: Vec<f64> = (0..d).map(|i| if i == j { 1.0 } else { 0.0 }).collect();
-            Rc::new(solution_field(&s.asm, &s.schur.expand(&load, &tail)))
+            Rc::new(solution_field(&s.asm, &s.expand(&load, &tail)))
         })
         .collect();
     let mut mats = vec![0.0; d * d];
@@ -166,25 +195,48 @@ fn build(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     // Masters: every unknown of the rigidity at the nodes of a mesh, the
     // unknowns of a second rigidity, or the (node, component) of a field.
     let wanted: Vec<(usize, String)> = if let Some(r2) = a.opt::<Rc<Rigidite>>() {
-        r2.number().dofs
+        let a2 = r2.number();
+        let mut w = a2.dofs;
+        w.extend(a2.mult_nodes.iter().map(|&n| (n, "LX".to_string())));
+        w
     } else if let Some(ch) = a.opt::<Rc<Chpoint>>() {
         ch.entries().map(|(n, c, _)| (n, c.to_string())).collect()
     } else {
         let geo: Mesh = super::mesh::req_geo(a)?;
         let nodes: std::collections::HashSet<usize> = geo.node_list().into_iter().collect();
-        asm.dofs.iter().filter(|(n, _)| nodes.contains(n)).cloned().collect()
+        let mut w: Vec<(usize, String)> = asm.dofs.iter().filter(|(n, _)| nodes.contains(n)).cloned().collect();
+        w.extend(asm.mult_nodes.iter().filter(|n| nodes.contains(n)).map(|&n| (n, "LX".to_string())));
+        w
     };
-    let keep: Vec<usize> = asm.dofs.iter().enumerate().filter(|(_, d)| wanted.contains(d)).map(|(i, _)| i).collect();
-    if keep.is_empty() {
+    let wanted: std::collections::HashSet<(usize, String)> = wanted.into_iter().collect();
+    let mut keep: Vec<usize> =
+        asm.dofs.iter().enumerate().filter(|(_, d)| wanted.contains(*d)).map(|(i, _)| i).collect();
+    // Multiplier masters: the conditions whose LX is wanted.
+    let conds: Vec<usize> =
+        (0..asm.mult_nodes.len()).filter(|&k| wanted.contains(&(asm.mult_nodes[k], "LX".to_string()))).collect();
+    if keep.is_empty() && conds.is_empty() {
         return Err(a.err("no master unknown: the masters share no unknown with the rigidity"));
     }
-    let schur = schur_onto(&asm.problem, &keep).map_err(|e| explain(it, &r, &asm, e, &[]))?;
+    let mult = (!conds.is_empty()).then(|| MultiplierMasters::new(&asm.problem, &conds));
     let n = asm.problem.k.n;
-    if schur.unknowns().iter().any(|&j| j >= n) {
+    let problem = match &mult {
+        Some(mm) => {
+            keep.extend((0..conds.len()).map(|t| mm.unknown(t)));
+            &mm.problem
+        }
+        None => &asm.problem,
+    };
+    let schur = schur_onto_signed(problem, &keep, n).map_err(|e| explain(it, &r, &asm, e, &[]))?;
+    if schur.unknowns().iter().any(|&j| j >= problem.k.n) {
         return Err(a.err("conditions acting on master unknowns are not supported: impose them after condensation"));
     }
-    let masters: Vec<(usize, String)> = schur.unknowns().iter().map(|&j| asm.dofs[j].clone()).collect();
-    let s = SuperElem { asm, schur, masters };
+    let masters: Vec<(usize, String)> = schur
+        .unknowns()
+        .iter()
+        .map(|&j| if j < n { asm.dofs[j].clone() } else { (asm.mult_nodes[conds[j - n]], "LX".to_string()) })
+        .collect();
+    let scale = schur.unknowns().iter().map(|&j| mult.as_ref().map_or(1.0, |mm| mm.scale_of(j))).collect();
+    let s = SuperElem { asm, schur, masters, mult, scale };
     Ok(vec![Value::Host(Rc::new(s))])
 }
 
@@ -207,7 +259,7 @@ pub(crate) fn extr(a: &mut Args, v: &Value) -> Result<Vec<Value>> {
         let mut mats = Vec::with_capacity(d * d);
         for i in 0..d {
             for j in 0..d {
-                mats.push(m[(i, j)]);
+                mats.push(m[(i, j)] / (s.scale[i] * s.scale[j]));
             }
         }
         Ok(vec![Value::Rigi(Rc::new(condensed(s, Subtype::Rigidite, mats)))])

@@ -101,7 +101,12 @@ impl Assembled {
                 match (self.mult.get(&n), self.twins.get(&n)) {
                     (Some(&k), _) => d[k] += v,
                     (None, Some(_)) => *twins.entry(n).or_default() += v,
-                    (None, None) => return Err(LoadError::NoCondition { node: n }),
+                    // A condensed rigidity over multipliers (SUPER onto LX,
+                    // CMCT) holds LX as an ordinary unknown, loaded by FLX.
+                    (None, None) => match self.find(n, c) {
+                        Some(i) => f[i] += v,
+                        None => return Err(LoadError::NoCondition { node: n }),
+                    },
                 }
                 continue;
             }

@@ -11,13 +11,21 @@ use crate::value::{Nature, Value};
 use std::rc::Rc;
 
 /// The component-wise result when three lists follow two fields, else
-/// None (the lists are not read: the ordinary rules apply).
-pub(super) fn apply(a: &mut Args, op: Bin, x: &Value, y: &Value) -> Result<Option<Value>> {
+/// None (the lists are not read: the ordinary rules apply). `first`: the
+/// first list, already read between the operands (the prefix form
+/// `'*' X L1 Y L2 L3`).
+pub(super) fn apply(
+    a: &mut Args,
+    op: Bin,
+    x: &Value,
+    y: &Value,
+    first: Option<Rc<Vec<String>>>,
+) -> Result<Option<Value>> {
     let fields = matches!((x, y), (Value::Chpo(_), Value::Chpo(_)) | (Value::Mchaml(_), Value::Mchaml(_)));
     if !fields || op == Bin::Pow {
         return Ok(None);
     }
-    let Some(l1) = a.opt_right::<Rc<Vec<String>>>() else { return Ok(None) };
+    let Some(l1) = first.or_else(|| a.opt_right::<Rc<Vec<String>>>()) else { return Ok(None) };
     let l2 = a.opt_right::<Rc<Vec<String>>>().ok_or_else(|| a.missing("a second LISTMOTS (the components of OBJ2)"))?;
     let l3 = a.opt_right::<Rc<Vec<String>>>().ok_or_else(|| a.missing("a third LISTMOTS (the result's components)"))?;
     check_lists(&l1, &l2, &l3).map_err(|e| a.err(e))?;

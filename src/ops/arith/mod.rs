@@ -144,7 +144,15 @@ fn binary(it: &mut Interp, a: &mut Args, op: Bin) -> Result<Vec<Value>> {
     if let Some(e) = arith::divides_by_zero(op, &x, &y) {
         return Err(a.err(e));
     }
-    let r = match components::apply(a, op, &x, &y)? {
+    // The prefix form `'*' X L1 Y L2 L3`: the first list between the fields.
+    let mut first = None;
+    if let (Value::Chpo(_) | Value::Mchaml(_), Value::ListMots(l)) = (&x, &y) {
+        if a.has_any::<Value>() {
+            first = Some(l.clone());
+            y = a.right_any().ok_or_else(|| a.missing("the second field"))?;
+        }
+    }
+    let r = match components::apply(a, op, &x, &y, first)? {
         Some(r) => r,
         None => table::apply(it, a, op, &x, &y)?,
     };
@@ -192,7 +200,7 @@ fn table_sum(it: &mut Interp, a: &mut Args) -> Result<Option<Value>> {
         return Err(a.err("+ of an empty TABLE has nothing to sum".to_string()));
     };
     for v in it_items {
-        let r = match components::apply(a, Bin::Add, &acc, &v)? {
+        let r = match components::apply(a, Bin::Add, &acc, &v, None)? {
             Some(r) => r,
             None => table::apply(it, a, Bin::Add, &acc, &v)?,
         };

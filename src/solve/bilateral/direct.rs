@@ -11,6 +11,7 @@ use faer::Mat;
 use super::lagrange::Doubled;
 use super::linear::{LuFactor, SymFactor, ZeroPivot};
 use super::ordering;
+use super::redundant::Redundant;
 use crate::solve::error::SolveError;
 use crate::solve::problem::{Kind, Load, Problem, Solution};
 
@@ -49,11 +50,38 @@ pub struct Factorization {
     sys: Doubled,
     engine: Engine,
     opts: DirectOptions,
+    /// Conditions left out as consistent duplicates of others.
+    redundant: Redundant,
 }
 
 impl Factorization {
-    /// Checks, assembles, orders and factorises `p`.
+    /// Checks, assembles, orders and factorises `p`. A condition that the
+    /// others imply is dropped (see [`super::redundant`]): each solve then
+    /// checks that its imposed value agrees.
     pub fn new(p: &Problem, opts: &DirectOptions) -> Result<Self, SolveError> {
+        let mut redundant = Redundant::none(p);
+        loop {
+            let reduced;
+            let q = if redundant.is_empty() {
+                p
+            } else {
+                reduced = redundant.reduced(p);
+                &reduced
+            };
+            match Self::build(q, opts) {
+                Ok((sys, engine)) => return Ok(Factorization { sys, engine, opts: *opts, redundant }),
+                Err(Built::Dependent(rows)) => {
+                    if !redundant.drop_row(p, rows[0], &rows) {
+                        return Err(SolveError::DependentConditions { conditions: rows });
+                    }
+                }
+                Err(Built::Failed(e)) => return Err(e),
+            }
+        }
+    }
+
+    /// One attempt of [`Factorization::new`].
+    fn build(p: &Problem, opts: &DirectOptions) -> Result<(Doubled, Engine), Built> {
         let mut sys = Doubled::new(p, &[])?;
         check_structure(p)?;
         let stab = if opts.stab { STAB } else { 0.0 };
@@ -65,22 +93,32 @@ impl Factorization {
             let fwd = ordering::doubled_order(p, &primal, &[]);
             let mut f = SymFactor::analyse(&sys.col_ptr, &sys.row_idx, fwd)?;
             if let Err(z) = f.factor(&sys.col_ptr, &sys.row_idx, &sys.values, &sys.row_scale, usize::MAX, None) {
-                return Err(diagnose(&sys, &mut f, z));
+                return Err(match diagnose(&sys, &mut f, z) {
+                    SolveError::DependentConditions { conditions } => Built::Dependent(conditions),
+                    e => Built::Failed(e),
+                });
             }
             Engine::Ldlt(f)
         } else {
             Engine::Lu(LuFactor::new(&sys.col_ptr, &sys.row_idx, &sys.values)?)
         };
-        Ok(Factorization { sys, engine, opts: *opts })
+        Ok((sys, engine))
     }
 
-    /// Whether `p` has the structure this factorisation was built for.
+    /// Whether `p` has the structure this factorisation was built for
+    /// (never, once a condition was dropped: the caller factorises anew).
     pub fn same_pattern(&self, p: &Problem) -> bool {
-        self.sys.same_pattern(p)
+        self.redundant.is_empty() && self.sys.same_pattern(p)
     }
 
-    /// New values, same structure: numeric factorisation only.
+    /// New values, same structure: numeric factorisation only. With
+    /// dropped conditions, the new values may make other rows dependent:
+    /// everything is redone.
     pub fn refactor(&mut self, p: &Problem) -> Result<(), SolveError> {
+        if !self.redundant.is_empty() {
+            *self = Factorization::new(p, &self.opts)?;
+            return Ok(());
+        }
         let stab = if self.opts.stab { STAB } else { 0.0 };
         self.sys.fill(p, stab)?;
         let sys = &self.sys;
@@ -119,6 +157,25 @@ impl Factorization {
     /// [`Factorization::solve`] with the residual check chosen per call
     /// ('NOID' on a reused factorisation, 'SOUC' after an inaccurate solve).
     pub fn solve_checked(&self, loads: &[Load], check_residual: bool) -> Result<Vec<Solution>, SolveError> {
+        if self.redundant.is_empty() {
+            return self.solve_factorised(loads, check_residual);
+        }
+        let m = self.redundant.given();
+        if let Some(l) = loads.iter().find(|l| l.f.len() != self.sys.n || l.d.len() != m) {
+            return Err(SolveError::Other(format!(
+                "load sizes ({}, {}) do not match ({}, {m})",
+                l.f.len(),
+                l.d.len(),
+                self.sys.n
+            )));
+        }
+        let reduced: Vec<Load> = loads.iter().map(|l| self.redundant.load(l)).collect();
+        let sols = self.solve_factorised(&reduced, check_residual)?;
+        loads.iter().zip(sols).map(|(l, s)| self.redundant.expand(l, s)).collect()
+    }
+
+    /// The solve of the factorised (reduced) system.
+    fn solve_factorised(&self, loads: &[Load], check_residual: bool) -> Result<Vec<Solution>, SolveError> {
         let (n, m) = (self.sys.n, self.sys.m);
         let dim = self.sys.dim();
         for l in loads {
@@ -197,6 +254,19 @@ impl Factorization {
     /// doubled rows), each relative to the size of its terms.
     fn backward_error(&self, b: &Mat<f64>, z: &Mat<f64>) -> f64 {
         backward_error(&self.sys, b, z)
+    }
+}
+
+/// Why one factorisation attempt stopped.
+enum Built {
+    /// A multiplier pivot vanished: this row (first) depends on the others.
+    Dependent(Vec<usize>),
+    Failed(SolveError),
+}
+
+impl From<SolveError> for Built {
+    fn from(e: SolveError) -> Self {
+        Built::Failed(e)
     }
 }
 

@@ -11,7 +11,8 @@
 //!   system in unknown and condition numbers;
 //! * [`pool`]: the last factorisations kept by the interpreter, and the
 //!   policy that reuses them; [`rigid_modes`]: 'ENSE', a singular system
-//!   solved with each free rigid mode held;
+//!   solved with each free rigid mode held; [`redundant`]: conditions
+//!   implied by others, dropped when their values agree;
 //! * [`schur`]: the interrupted factorisation onto a trailing block (SUPER,
 //!   and the unilateral condensations);
 //! * [`eliminate`]: conditions eliminated by substitution instead (the
@@ -21,9 +22,11 @@ pub mod direct;
 pub mod eliminate;
 pub mod lagrange;
 pub mod linear;
+pub mod mult_masters;
 mod nd;
 pub mod ordering;
 pub mod pool;
+mod redundant;
 pub mod rigid_modes;
 pub mod schur;
 

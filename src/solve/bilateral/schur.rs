@@ -61,6 +61,9 @@ pub(crate) struct Interrupted {
     /// LDLᵀ of G = −S/4 (D on the diagonal, unit L strictly below), read
     /// from the factor, shared with every [`Condensed`] without a copy.
     pub(crate) tail_factor: Option<std::rc::Rc<Mat<f64>>>,
+    /// Primal unknowns from this one on are multipliers written as
+    /// unknowns ([`super::mult_masters`]): shifted like multipliers.
+    pub(crate) negative_from: usize,
 }
 
 /// A plain tail pivot smaller than this fraction of its 4α is taken as
@@ -90,6 +93,19 @@ impl Interrupted {
         sys: Option<Doubled>,
         plain: bool,
     ) -> Result<Option<Self>, SolveError> {
+        Self::try_new_signed(p, fwd, cut, sys, plain, usize::MAX)
+    }
+
+    /// [`Interrupted::try_new`] with the primal unknowns from
+    /// `negative_from` on shifted as multipliers.
+    fn try_new_signed(
+        p: &Problem,
+        fwd: Vec<usize>,
+        cut: usize,
+        sys: Option<Doubled>,
+        plain: bool,
+        negative_from: usize,
+    ) -> Result<Option<Self>, SolveError> {
         check_structure(p)?;
         if !p.k.symmetric {
             return Err(SolveError::Other("condensation needs a symmetric stiffness".into()));
@@ -105,7 +121,8 @@ impl Interrupted {
         if tail.is_empty() || n_sup == 0 || sup.supernode_begin()[n_sup - 1] > cut {
             return Ok(None);
         }
-        let mut it = Interrupted { sys, factor, cut, tail, schur: Mat::zeros(0, 0), plain, tail_factor: None };
+        let mut it =
+            Interrupted { sys, factor, cut, tail, schur: Mat::zeros(0, 0), plain, tail_factor: None, negative_from };
         // The system was just built: it already holds the values of `p`.
         it.numeric(p, false)?;
         Ok(Some(it))
@@ -125,7 +142,7 @@ impl Interrupted {
                     } else {
                         -4.0 * self.sys.scaling.alpha[t - n - m]
                     }
-                } else if t >= n {
+                } else if t >= n || t >= self.negative_from {
                     -self.sys.row_scale[t]
                 } else {
                     self.sys.row_scale[t].max(f64::MIN_POSITIVE)
@@ -345,6 +362,12 @@ impl SchurOnto {
 /// Builds the condensation of `p` (all conditions as equalities) onto the
 /// primal unknowns `keep`.
 pub fn schur_onto(p: &Problem, keep: &[usize]) -> Result<SchurOnto, SolveError> {
+    schur_onto_signed(p, keep, usize::MAX)
+}
+
+/// [`schur_onto`] where the primal unknowns from `negative_from` on are
+/// multipliers written as unknowns (their Schur complement is negative).
+pub fn schur_onto_signed(p: &Problem, keep: &[usize], negative_from: usize) -> Result<SchurOnto, SolveError> {
     super::lagrange::validate(p)?;
     let n = p.k.n;
     let mut seen = vec![false; n];
@@ -375,7 +398,9 @@ pub fn schur_onto(p: &Problem, keep: &[usize]) -> Result<SchurOnto, SolveError> 
     } {
         cut -= 1;
     }
-    Ok(SchurOnto { core: Interrupted::new(p, fwd, cut, None, false)? })
+    let core = Interrupted::try_new_signed(p, fwd, cut, None, false, negative_from)?
+        .ok_or_else(|| SolveError::Other("the condensed block does not form one trailing supernode".into()))?;
+    Ok(SchurOnto { core })
 }
 #[cfg(test)]
 #[path = "tests/schur.rs"]

@@ -9,6 +9,7 @@
 //! field of a solution.
 
 pub mod algebra;
+mod cmct;
 pub mod numbering;
 mod primal;
 

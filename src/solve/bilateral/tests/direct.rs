@@ -117,18 +117,39 @@ fn doubly_blocked_and_untouched() {
     assert_eq!(Factorization::new(&p, &Default::default()).unwrap_err(), SolveError::Untouched { dofs: vec![3] });
 }
 
+fn proportional_relations() -> Problem {
+    Problem { k: bars(1.0), conditions: vec![eq(&[(0, 1.0)]), eq(&[(1, 1.0), (2, -1.0)]), eq(&[(2, 2.0), (1, -2.0)])] }
+}
+
 #[test]
-fn proportional_relations_are_dependent() {
-    let p = Problem {
-        k: bars(1.0),
-        conditions: vec![eq(&[(0, 1.0)]), eq(&[(1, 1.0), (2, -1.0)]), eq(&[(2, 2.0), (1, -2.0)])],
-    };
-    match Factorization::new(&p, &Default::default()) {
+fn consistent_proportional_relations_are_dropped() {
+    // u1 − u2 = −1 and 2u2 − 2u1 = 2 say the same: one row carries the
+    // reaction (−0.5 on unknown 2), the dropped one gets none.
+    let s = solve(&proportional_relations(), &[load([0.0; 3], &[0.0, -1.0, 2.0])], &Default::default()).unwrap();
+    close(&s[0].u, &[0.0, 0.0, 1.0]);
+    let l = &s[0].lambda;
+    assert!(l[1] == 0.0 || l[2] == 0.0, "{l:?}");
+    close(&[-l[1] + 2.0 * l[2]], &[-0.5]);
+}
+
+#[test]
+fn inconsistent_proportional_relations_are_refused() {
+    let f = Factorization::new(&proportional_relations(), &Default::default()).unwrap();
+    match f.solve(&[load([0.0; 3], &[0.0, -1.0, 0.0])]) {
         Err(SolveError::DependentConditions { conditions }) => {
             assert!(conditions.contains(&1) && conditions.contains(&2));
         }
         other => panic!("{other:?}"),
     }
+}
+
+#[test]
+fn a_relation_implied_by_two_blocks() {
+    // u0 = 0, u2 = 1 and u2 − u0 = 1: the third row follows from the others.
+    let p = Problem { k: bars(1.0), conditions: vec![eq(&[(0, 1.0)]), eq(&[(2, 1.0)]), eq(&[(2, 1.0), (0, -1.0)])] };
+    let s = solve(&p, &[load([0.0; 3], &[0.0, 1.0, 1.0])], &Default::default()).unwrap();
+    close(&s[0].u, &[0.0, 1.0 / 3.0, 1.0]);
+    assert!(solve(&p, &[load([0.0; 3], &[0.0, 1.0, 2.0])], &Default::default()).is_err());
 }
 
 #[test]
