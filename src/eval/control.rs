@@ -32,9 +32,9 @@ impl Interp {
                 Ok(Flow::Next)
             }
             Stmt::If { branches, otherwise, span } => {
-                for b in branches {
+                for (k, b) in branches.iter().enumerate() {
                     self.echo(&b.cond);
-                    if self.condition(&b.cond)? {
+                    if self.condition(&b.cond, k > 0)? {
                         return self.nested(*span, |it| it.exec_block(&b.body));
                     }
                 }
@@ -80,10 +80,15 @@ impl Interp {
         }
     }
 
-    fn condition(&mut self, cond: &Instr) -> Result<bool> {
+    /// The test of a SI, or of a SINON when `sinon`: Cast3M decks write
+    /// `'SINON' 'ERREUR' 0 ;` with no `;` after SINON, so an instruction
+    /// there that gives no value is a plain SINON whose first instruction
+    /// has just run.
+    fn condition(&mut self, cond: &Instr, sinon: bool) -> Result<bool> {
         let vals = self.eval_items(&cond.items).map_err(|e| e.with_span_if_missing(cond.span, &self.source))?;
         match vals.as_slice() {
             [Value::Bool(b)] => Ok(*b),
+            [] if sinon => Ok(true),
             [v] => Err(Error::runtime(format!("SI needs a LOGIQUE, found {}", v.type_name())).at(cond.span)),
             _ => Err(Error::runtime(format!("SI needs one LOGIQUE, found {} values", vals.len())).at(cond.span)),
         }
