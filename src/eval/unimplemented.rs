@@ -54,7 +54,7 @@ fn hint(e: &Entry) -> &'static str {
         "Mecanique" | "Mechanics" => STATICS,
         "Post-traitement" => POST,
         "Entree-Sortie" => FILES,
-        "Thermique" => "gibi's thermal side is thermal loading: EPTH turns a temperature field into strains",
+        "Thermique" => "gibi's thermal side is steady conduction (MODE 'THERMIQUE', COND, CAPA, RESO) and thermal loading (EPTH turns a temperature field into strains)",
         _ => OTHER,
     }
 }

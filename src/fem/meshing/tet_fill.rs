@@ -69,7 +69,8 @@ pub fn volu_closed(op: &'static str, nodes: &Nodes, surf: &Mesh) -> Result<Mesh,
             *edge_use.entry([a, b]).or_default() += 1;
         }
     }
-    if let Some((e, _)) = edge_use.iter().find(|(_, &n)| n % 2 == 1) {
+    // The first open edge in node order: the same message at every run.
+    if let Some(e) = edge_use.iter().filter(|(_, &n)| n % 2 == 1).map(|(e, _)| *e).min() {
         return fail(
             op,
             format!(
