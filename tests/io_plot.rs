@@ -193,7 +193,7 @@ fn trac_of_an_element_field() {
     let means: Vec<f64> =
         vm.zones[0].values.iter().map(|e| e.iter().map(|p| p[0]).sum::<f64>() / e.len() as f64).collect();
     let (lo, hi) = means.iter().fold((f64::MAX, f64::MIN), |(a, b), &v| (a.min(v), b.max(v)));
-    assert!(svg.contains("VMIS") && svg.contains(&format!("{:.3e}", hi)) && svg.contains(&format!("{:.3e}", lo)));
+    assert!(svg.contains("SCAL") && svg.contains(&format!("{:.3e}", hi)) && svg.contains(&format!("{:.3e}", lo)));
     let fills: Vec<&str> = svg.lines().filter(|l| l.starts_with("<polygon")).collect();
     assert_eq!(fills.len(), 32, "one filled polygon per element");
     let mut colours: Vec<&str> = fills.iter().filter_map(|l| l.split("fill=\"").nth(1)).collect();
