@@ -58,6 +58,7 @@ mod mesh_cut;
 mod mesh_delaunay;
 mod mesh_derive;
 mod mesh_edit;
+mod mesh_moin_geo;
 mod mesh_fill;
 mod mesh_free;
 mod mesh_isov;
