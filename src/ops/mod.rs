@@ -100,6 +100,7 @@ mod principal;
 mod prob;
 mod products;
 mod projection;
+mod rela_accro;
 mod rela_cori;
 mod rela_mili;
 mod replace;
