@@ -18,7 +18,12 @@ use std::rc::Rc;
 /// or a vertex of the element and those nodes play no part.
 const ZERO: f64 = 1e-12;
 
-pub(super) fn rela_accro(it: &mut Interp, a: &mut Args, kind: Kind, geo1: &crate::fem::mesh::Mesh) -> Result<Vec<Value>> {
+pub(super) fn rela_accro(
+    it: &mut Interp,
+    a: &mut Args,
+    kind: Kind,
+    geo1: &crate::fem::mesh::Mesh,
+) -> Result<Vec<Value>> {
     let geo2 = req_geo(a)?;
     let mut comps: Vec<String> = match a.opt::<Rc<Vec<String>>>() {
         Some(l) => l.iter().map(|c| c.trim().to_uppercase()).collect(),
