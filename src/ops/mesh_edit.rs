@@ -195,6 +195,9 @@ fn translate(it: &mut Interp, a: &mut Args, sign: f64) -> Result<Vec<Value>> {
     if let [Value::Mesh(m), Value::Chpo(u)] = objs.as_slice() {
         return Ok(mesh_val(moved_by_field(it, m, u, sign)));
     }
+    if let ([Value::Mesh(g2), Value::Mesh(g1)], true) = (objs.as_slice(), sign < 0.0) {
+        return super::mesh_moin_geo::mesh_minus_mesh(it, a, g2, g1);
+    }
     let v = match objs.pop() {
         Some(Value::Point(p)) if !objs.is_empty() => it.nodes.get(p).map(|c| c * sign),
         _ => return Err(a.missing("a vector (POINT)")),
