@@ -292,12 +292,26 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         _ => {
             // CHPO / NOEUD / GRAVITE: element values to nodes (averaged over
             // the elements for CHPO), or to each element's centre.
+            // `CHAN 'CHAM' 'RIGIDITE' CHAM1 MODL1`: the support may also
+            // come right after 'CHAM'.
+            // CHAN 'CHPO' CHPO1 (MODL1) (chan.notice table): a node field
+            // is already one; it is given back as it is.
+            if k == "CHPO" {
+                if let Some(c) = early.clone().or_else(|| a.opt::<Rc<Chpoint>>()) {
+                    a.opt::<Rc<Model>>();
+                    return Ok(vec![Value::Chpo(c)]);
+                }
+            }
+            let support_first =
+                if k == "CHAM" { a.keyword(&["NOEUD", "GRAVITE", "STRESSES", "RIGIDITE", "MASSE"]) } else { None };
             let model = a.req::<Rc<Model>>()?;
             let m = a.req::<Rc<Mchaml>>()?;
             // CHAN 'CHAM' of an element field: to the support named after
             // it, the nodes by default.
             let k = match k {
-                "CHAM" => a.keyword(&["NOEUD", "GRAVITE", "STRESSES", "RIGIDITE", "MASSE"]).unwrap_or("NOEUD"),
+                "CHAM" => support_first
+                    .or_else(|| a.keyword(&["NOEUD", "GRAVITE", "STRESSES", "RIGIDITE", "MASSE"]))
+                    .unwrap_or("NOEUD"),
                 _ => k,
             };
             if matches!(k, "STRESSES" | "RIGIDITE" | "MASSE") {
