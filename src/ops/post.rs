@@ -214,7 +214,8 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             Ok(vec![Value::Mesh(Rc::new(mg::change_to_quadratic(&mut it.nodes, &m)?))])
         }
         "TRI3" => Ok(vec![Value::Mesh(Rc::new(mg::change_to_triangles(&super::mesh::req_geo(a)?)))]),
-        "QUA4" | "SEG2" | "LINE" => Ok(vec![Value::Mesh(Rc::new(mg::change_to_linear(&super::mesh::req_geo(a)?)))]),
+        "SEG2" => Ok(vec![Value::Mesh(Rc::new(mg::change_to_seg2(&super::mesh::req_geo(a)?)))]),
+        "QUA4" | "LINE" => Ok(vec![Value::Mesh(Rc::new(mg::change_to_linear(&super::mesh::req_geo(a)?)))]),
         "INCO" => {
             let r = a.req::<Rc<Rigidite>>()?;
             let old = a.req::<Rc<Vec<String>>>()?;
