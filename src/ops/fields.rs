@@ -64,8 +64,8 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "RESU",
-        signature: "RESU CHPOINT",
-        doc: "Resultant: the sum of each component, on the first node of the field.",
+        signature: "RESU CHPOINT|MCHAML",
+        doc: "Resultant: the sum of each component, on the first node of the field (of an MCHAML: over every point of every element, as one POI1 element).",
         example: "r = resu f ;",
         f: resu,
     },
@@ -335,6 +335,10 @@ fn defo(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 fn resu(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    if let Some(m) = a.opt::<Rc<Mchaml>>() {
+        let r = m.resultant().ok_or_else(|| a.err("the field is empty"))?;
+        return Ok(vec![Value::Mchaml(Rc::new(r))]);
+    }
     let ch = a.req::<Rc<Chpoint>>()?;
     let first = *ch.nodes.first().ok_or_else(|| a.err("the field is empty"))?;
     let mut out = Chpoint::new(Nature::Discret);

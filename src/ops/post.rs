@@ -214,7 +214,8 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             Ok(vec![Value::Mesh(Rc::new(mg::change_to_quadratic(&mut it.nodes, &m)?))])
         }
         "TRI3" => Ok(vec![Value::Mesh(Rc::new(mg::change_to_triangles(&super::mesh::req_geo(a)?)))]),
-        "QUA4" | "SEG2" | "LINE" => Ok(vec![Value::Mesh(Rc::new(mg::change_to_linear(&super::mesh::req_geo(a)?)))]),
+        "SEG2" => Ok(vec![Value::Mesh(Rc::new(mg::change_to_seg2(&super::mesh::req_geo(a)?)))]),
+        "QUA4" | "LINE" => Ok(vec![Value::Mesh(Rc::new(mg::change_to_linear(&super::mesh::req_geo(a)?)))]),
         "INCO" => {
             let r = a.req::<Rc<Rigidite>>()?;
             let old = a.req::<Rc<Vec<String>>>()?;
@@ -292,12 +293,26 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         _ => {
             // CHPO / NOEUD / GRAVITE: element values to nodes (averaged over
             // the elements for CHPO), or to each element's centre.
+            // `CHAN 'CHAM' 'RIGIDITE' CHAM1 MODL1`: the support may also
+            // come right after 'CHAM'.
+            // CHAN 'CHPO' CHPO1 (MODL1) (chan.notice table): a node field
+            // is already one; it is given back as it is.
+            if k == "CHPO" {
+                if let Some(c) = early.clone().or_else(|| a.opt::<Rc<Chpoint>>()) {
+                    a.opt::<Rc<Model>>();
+                    return Ok(vec![Value::Chpo(c)]);
+                }
+            }
+            let support_first =
+                if k == "CHAM" { a.keyword(&["NOEUD", "GRAVITE", "STRESSES", "RIGIDITE", "MASSE"]) } else { None };
             let model = a.req::<Rc<Model>>()?;
             let m = a.req::<Rc<Mchaml>>()?;
             // CHAN 'CHAM' of an element field: to the support named after
             // it, the nodes by default.
             let k = match k {
-                "CHAM" => a.keyword(&["NOEUD", "GRAVITE", "STRESSES", "RIGIDITE", "MASSE"]).unwrap_or("NOEUD"),
+                "CHAM" => support_first
+                    .or_else(|| a.keyword(&["NOEUD", "GRAVITE", "STRESSES", "RIGIDITE", "MASSE"]))
+                    .unwrap_or("NOEUD"),
                 _ => k,
             };
             if matches!(k, "STRESSES" | "RIGIDITE" | "MASSE") {

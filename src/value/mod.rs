@@ -12,6 +12,7 @@ mod display;
 pub mod field;
 pub mod finite;
 mod mchaml_broadcast;
+mod mchaml_resultant;
 pub(crate) mod mchaml_scale;
 pub mod model;
 mod model_union;

@@ -320,6 +320,22 @@ pub fn change_to_triangles(mesh: &Mesh) -> Mesh {
     merge_same_types(parts)
 }
 
+/// `CHAN 'SEG2'`: a line of SEG3 becomes the same line of SEG2, each SEG3
+/// cut at its middle node into two SEG2 (every node kept, the line's
+/// node order unchanged, as procedures counting nodes along it expect);
+/// other elements as `change_to_linear`.
+pub fn change_to_seg2(mesh: &Mesh) -> Mesh {
+    let parts = mesh
+        .parts
+        .iter()
+        .flat_map(|p| match p.ty {
+            ElemType::Seg3 => vec![(ElemType::Seg2, p.elems().flat_map(|e| [e[0], e[1], e[1], e[2]]).collect())],
+            _ => change_to_linear(&Mesh::single(p.clone())).parts.into_iter().map(|q| (q.ty, q.conn)).collect(),
+        })
+        .collect();
+    merge_same_types(parts)
+}
+
 fn merge_same_types(parts: Vec<(ElemType, Vec<usize>)>) -> Mesh {
     let mut out: Vec<(ElemType, Vec<usize>)> = Vec::new();
     for (ty, conn) in parts {
