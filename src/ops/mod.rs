@@ -38,6 +38,7 @@ mod format;
 mod fourier;
 mod fracture;
 mod heat;
+mod hist;
 mod hooke;
 mod hyperbolic;
 mod insert;
@@ -75,6 +76,7 @@ mod model_zones;
 mod nodal_field;
 mod noise;
 mod nomc_mchaml;
+mod ntab;
 mod nuage;
 mod objects;
 mod objet;
@@ -144,6 +146,8 @@ impl Registry {
             lists::OPS,
             noise::OPS,
             covariance::OPS,
+            hist::OPS,
+            ntab::OPS,
             fourier::OPS,
             fit::OPS,
             spectra::OPS,
