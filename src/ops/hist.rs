@@ -5,19 +5,27 @@
 use super::{Args, OpDef};
 use crate::error::Result;
 use crate::eval::Interp;
+use crate::fem::colour::Colour;
 use crate::value::signal::histogram;
-use crate::value::Value;
+use crate::value::{Model, Value};
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[OpDef {
     name: "HIST",
-    signature: "LENT1 (LENT2) = HIST LVAL1 LCLAS1 (LVAL2 LCLAS2 …) ('CLAS') ('OCCU')   (LVAL, LCLAS: LISTREEL)",
-    doc: "Sorts N events (coordinate i of each in LVALi) into classes: LCLASi holds the strictly increasing bounds of the Ni intervals of coordinate i (closed below, open above; the last keeps its top). 'CLAS' gives the global class of each event, k = k1 + N1 (k2 - 1) + N1 N2 (k3 - 1) + …, 0 when outside the bounds; 'OCCU' the number of events in each class. Without either, both, classes first.",
+    signature: "LENT1 (LENT2) = HIST LVAL1 LCLAS1 (LVAL2 LCLAS2 …) ('CLAS') ('OCCU')   (LVAL, LCLAS: LISTREEL) | EVOL = HIST (colour) MMODEL MCHAML ('ABS') LRE (MOT | LISTMOTS)",
+    doc: "Sorts N events (coordinate i of each in LVALi) into classes: LCLASi holds the strictly increasing bounds of the Ni intervals of coordinate i (closed below, open above; the last keeps its top). 'CLAS' gives the global class of each event, k = k1 + N1 (k2 - 1) + N1 N2 (k3 - 1) + …, 0 when outside the bounds; 'OCCU' the number of events in each class. Without either, both, classes first. With a model and an element field: one curve per component (all, or those named) of the density of its values (absolute with 'ABS') over the classes of LRE, each value counting once: share of the values in a class / its width, at each bound (the last repeats).",
     example: "lc lo = hist (prog 0.2 0.7) (prog 0. 0.5 1.) ;",
     f: hist,
 }];
 
 fn hist(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    // Curves carry no colour in gibi: a colour word is read and dropped.
+    if a.peek_word().is_some_and(|w| Colour::from_name(&w).is_some()) {
+        a.word();
+    }
+    if a.opt::<Rc<Model>>().is_some() {
+        return super::hist_field::hist_field(a);
+    }
     let mut values = Vec::new();
     let mut bounds = Vec::new();
     while let Some(v) = a.opt::<Rc<Vec<f64>>>() {

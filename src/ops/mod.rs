@@ -39,6 +39,7 @@ mod fourier;
 mod fracture;
 mod heat;
 mod hist;
+mod hist_field;
 mod hooke;
 mod hyperbolic;
 mod insert;

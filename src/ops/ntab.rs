@@ -26,9 +26,8 @@ fn ntab(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let mut col_titles: HashMap<usize, String> = HashMap::new();
     let mut row_titles: HashMap<usize, String> = HashMap::new();
     let (mut sort_rows, mut sort_cols) = (None, None);
-    loop {
-        // Whole words: 'TITR' and 'TITCOU' share their first letters.
-        let Some(w) = a.word() else { break };
+    // Whole words: 'TITR' and 'TITCOU' share their first letters.
+    while let Some(w) = a.word() {
         match w.to_uppercase().as_str() {
             "TITR" | "TITRE" => title = Some(a.req::<String>()?),
             "STITR" | "STITRE" => subtitle = Some(a.req::<String>()?),

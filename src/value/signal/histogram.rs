@@ -54,3 +54,33 @@ mod tests {
         assert_eq!(o, vec![2, 0, 0, 0, 1, 1, 0, 0]);
     }
 }
+
+/// The density of `values` over the intervals of `bounds` (strictly
+/// increasing): the share of the values in each interval divided by its
+/// width, so that it sums (times the widths) to the share inside the
+/// bounds. One value per bound, the last repeating the last interval's,
+/// as a step curve drawn on the bounds ends.
+pub fn density(values: &[f64], bounds: &[f64]) -> Vec<f64> {
+    let n = bounds.len() - 1;
+    let mut counts = vec![0usize; n];
+    for &x in values {
+        if let Some(k) = interval(x, bounds) {
+            counts[k] += 1;
+        }
+    }
+    let total = values.len().max(1) as f64;
+    let mut d: Vec<f64> =
+        counts.iter().zip(bounds.windows(2)).map(|(c, w)| *c as f64 / total / (w[1] - w[0])).collect();
+    d.push(d[n - 1]);
+    d
+}
+
+#[cfg(test)]
+mod density_tests {
+    #[test]
+    fn shares_over_widths() {
+        // 4 values: 1 in [0,1), 3 in [1,3]: 0.25/1 and 0.75/2.
+        let d = super::density(&[0.5, 1.0, 2.0, 3.0], &[0.0, 1.0, 3.0]);
+        assert_eq!(d, vec![0.25, 0.375, 0.375]);
+    }
+}
