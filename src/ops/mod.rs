@@ -38,6 +38,8 @@ mod format;
 mod fourier;
 mod fracture;
 mod heat;
+mod hist;
+mod hist_field;
 mod hooke;
 mod hyperbolic;
 mod insert;
@@ -76,6 +78,7 @@ mod model_zones;
 mod nodal_field;
 mod noise;
 mod nomc_mchaml;
+mod ntab;
 mod nuage;
 mod objects;
 mod objet;
@@ -146,6 +149,8 @@ impl Registry {
             lists::OPS,
             noise::OPS,
             covariance::OPS,
+            hist::OPS,
+            ntab::OPS,
             fourier::OPS,
             fit::OPS,
             spectra::OPS,

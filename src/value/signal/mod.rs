@@ -7,6 +7,7 @@ pub mod complex;
 pub mod covariance;
 pub mod fit;
 pub mod fourier;
+pub mod histogram;
 pub mod noise;
 pub mod oscillator;
 pub mod pearson;
