@@ -100,6 +100,23 @@ pub(super) struct Point {
     pub(super) r: f64,
 }
 
+/// The geometries of massive (continuum) elements: surfaces in the 2D
+/// modes, volumes in TRID. Mechanics and heat conduction share them.
+pub fn is_massive(ty: ElemType) -> bool {
+    matches!(
+        ty,
+        ElemType::Tri3
+            | ElemType::Tri6
+            | ElemType::Qua4
+            | ElemType::Qua8
+            | ElemType::Cub8
+            | ElemType::Tet4
+            | ElemType::Pri6
+            | ElemType::Cu20
+            | ElemType::Pr15
+    )
+}
+
 fn check(ty: ElemType, mode: Mode, x: &[[f64; 3]]) -> Result<usize, FemError> {
     let dim = ty.dim();
     let ok = match dim {
@@ -107,20 +124,7 @@ fn check(ty: ElemType, mode: Mode, x: &[[f64; 3]]) -> Result<usize, FemError> {
         3 => mode == Mode::Trid,
         _ => false,
     };
-    if !ok
-        || !matches!(
-            ty,
-            ElemType::Tri3
-                | ElemType::Tri6
-                | ElemType::Qua4
-                | ElemType::Qua8
-                | ElemType::Cub8
-                | ElemType::Tet4
-                | ElemType::Pri6
-                | ElemType::Cu20
-                | ElemType::Pr15
-        )
-    {
+    if !ok || !is_massive(ty) {
         return Err(FemError::Unsupported { form: "massive", elem: ty.name(), mode: mode.name() });
     }
     if x.len() != ty.nodes() {

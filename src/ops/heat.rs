@@ -40,19 +40,7 @@ const BEHAVIOURS: &[&str] = &["ISOTROPE", "CONDUCTION"];
 
 /// The massive geometries a conduction model takes, by analysis mode.
 fn accepts(ty: ElemType, trid: bool) -> bool {
-    let massive = matches!(
-        ty,
-        ElemType::Tri3
-            | ElemType::Tri6
-            | ElemType::Qua4
-            | ElemType::Qua8
-            | ElemType::Cub8
-            | ElemType::Tet4
-            | ElemType::Pri6
-            | ElemType::Cu20
-            | ElemType::Pr15
-    );
-    massive && (ty.dim() == 3) == trid
+    crate::fem::solid::is_massive(ty) && (ty.dim() == 3) == trid
 }
 
 /// `MODE mesh 'THERMIQUE' ('ISOTROPE') ('CONDUCTION') (element)`: one zone
