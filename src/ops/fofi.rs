@@ -52,24 +52,9 @@ fn fofi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         }
         let mat = material_for(mz, &fields);
         let duals = element::node_duals(form, mode).map_err(|e| a.err(e.to_string()))?;
-        let mut e = 0;
-        for p in &z.mesh.parts {
-            for nodes in p.elems() {
-                if e >= z.values.len() {
-                    return Err(a.err(format!("the stress field has no values on element {}", e + 1)));
-                }
-                let x: Vec<[f64; 3]> = nodes.iter().map(|n| it.nodes.get(*n)).collect();
-                let gf = gradient_of(g, e, mode);
-                let f = crate::fem::fofi::quadratic_forces(form, p.ty, mode, &x, &mat, &to_gauss(z, e), &gf)
-                    .map_err(|err| a.err(format!("element {}: {}", e + 1, err)))?;
-                for (k, n) in nodes.iter().enumerate() {
-                    for (c, d) in duals.iter().enumerate() {
-                        out.add(*n, d, f[k * duals.len() + c], true);
-                    }
-                }
-                e += 1;
-            }
-        }
+        super::integrate::scatter_forces(it, a, z, duals, &mut out, |ty, x, e| {
+            crate::fem::fofi::quadratic_forces(form, ty, mode, x, &mat, &to_gauss(z, e), &gradient_of(g, e, mode))
+        })?;
     }
     Ok(vec![Value::Chpo(Rc::new(out))])
 }

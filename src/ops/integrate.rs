@@ -273,22 +273,38 @@ fn bsig(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         let (form, mode) = (formulation(mz), zone_mode(mz)?);
         let mat = material_for(mz, &fields);
         let duals = element::node_duals(form, mode).map_err(|e| fem_err(a, e))?;
-        let mut e = 0;
-        for p in &z.mesh.parts {
-            for nodes in p.elems() {
-                if e >= z.values.len() {
-                    return Err(a.err(format!("the stress field has no values on element {}", e + 1)));
-                }
-                let f = element::internal_forces(form, p.ty, mode, &coords(it, nodes), &mat, &to_gauss(z, e))
-                    .map_err(|err| a.err(format!("element {}: {}", e + 1, err)))?;
-                for (k, n) in nodes.iter().enumerate() {
-                    for (c, d) in duals.iter().enumerate() {
-                        out.add(*n, d, f[k * duals.len() + c], true);
-                    }
-                }
-                e += 1;
-            }
-        }
+        scatter_forces(it, a, z, duals, &mut out, |ty, x, e| {
+            element::internal_forces(form, ty, mode, x, &mat, &to_gauss(z, e))
+        })?;
     }
     Ok(vec![Value::Chpo(Rc::new(out))])
+}
+
+/// Add to `out` the nodal forces that `forces(type, coordinates, element)`
+/// gives for each element of a stress zone (in ElemMatrix dof order, with
+/// the node duals `duals`): BSIG's and FOFI's common assembly.
+pub(crate) fn scatter_forces<E: std::fmt::Display>(
+    it: &Interp,
+    a: &Args,
+    z: &crate::value::model::MchamlZone,
+    duals: &[&str],
+    out: &mut Chpoint,
+    mut forces: impl FnMut(crate::fem::mesh::ElemType, &[[f64; 3]], usize) -> std::result::Result<Vec<f64>, E>,
+) -> Result<()> {
+    let mut e = 0;
+    for p in &z.mesh.parts {
+        for nodes in p.elems() {
+            if e >= z.values.len() {
+                return Err(a.err(format!("the stress field has no values on element {}", e + 1)));
+            }
+            let f = forces(p.ty, &coords(it, nodes), e).map_err(|err| a.err(format!("element {}: {}", e + 1, err)))?;
+            for (k, n) in nodes.iter().enumerate() {
+                for (c, d) in duals.iter().enumerate() {
+                    out.add(*n, d, f[k * duals.len() + c], true);
+                }
+            }
+            e += 1;
+        }
+    }
+    Ok(())
 }
