@@ -5,13 +5,13 @@
 //! numerics are in `fem::thermal`.
 
 use super::model::{formulation, material_for, zone_mode};
-use super::{dofs, Args, OpDef};
+use super::{Args, OpDef};
 use crate::error::{Error, Result};
 use crate::eval::Interp;
 use crate::fem::element::{self, Formulation};
 use crate::fem::mesh::{ElemType, Mesh};
 use crate::value::model::ModelZone;
-use crate::value::rigidity::{Block, Subtype, Symmetry};
+use crate::value::rigidity::{Subtype, Symmetry};
 use crate::value::{Mchaml, Model, Rigidite, Value};
 use std::rc::Rc;
 
@@ -119,21 +119,9 @@ fn assemble(
         let mode = zone_mode(zone)?;
         let mat = material_for(zone, fields);
         for part in &zone.mesh.parts {
-            let mut block: Option<Block> = None;
-            for (e, nodes) in part.elems().enumerate() {
-                let x: Vec<[f64; 3]> = nodes.iter().map(|n| it.nodes.get(*n)).collect();
-                let em = f(part.ty, mode, &x, &mat).map_err(|err| a.err(format!("element {}: {}", e + 1, err)))?;
-                let b = block.get_or_insert_with(|| Block {
-                    nodes_per_elem: part.ty.nodes(),
-                    conn: Vec::with_capacity(part.conn.len()),
-                    dofs: em.dofs.iter().map(|(l, c)| (*l, c.to_string())).collect(),
-                    duals: em.dofs.iter().map(|(_, c)| dofs::dual_of(c)).collect(),
-                    mats: Vec::with_capacity(part.len() * em.k.len()),
-                    symmetry: Symmetry::Symmetric,
-                });
-                b.conn.extend_from_slice(nodes);
-                b.mats.extend_from_slice(&em.k);
-            }
+            let block = super::element_block::part_block(it, part, Symmetry::Symmetric, |e, x| {
+                f(part.ty, mode, x, &mat).map_err(|err| a.err(format!("element {}: {}", e + 1, err)))
+            })?;
             rig.blocks.extend(block);
         }
     }

@@ -7,7 +7,7 @@ use super::{Args, OpDef, PointId};
 use crate::error::{Error, Result};
 use crate::eval::Interp;
 use crate::fem::kp;
-use crate::value::rigidity::{Block, Subtype, Symmetry};
+use crate::value::rigidity::{Subtype, Symmetry};
 use crate::value::{Model, Rigidite, Value};
 use std::rc::Rc;
 
@@ -34,26 +34,10 @@ fn kp_op(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     for zone in &model.zones {
         let form = formulation(zone);
         for part in &zone.mesh.parts {
-            let npe = part.ty.nodes();
-            let mut x = vec![[0.0; 3]; npe];
-            let mut block: Option<Block> = None;
-            for (e, nodes) in part.elems().enumerate() {
-                for (k, n) in nodes.iter().enumerate() {
-                    x[k] = it.nodes.get(*n);
-                }
-                let em = kp::gradient_stiffness(form, &x, rg, dir)
-                    .map_err(|err| a.err(format!("KP: element {}: {}", e + 1, err)))?;
-                let b = block.get_or_insert_with(|| Block {
-                    nodes_per_elem: npe,
-                    conn: Vec::with_capacity(part.conn.len()),
-                    dofs: em.dofs.iter().map(|(l, c)| (*l, c.to_string())).collect(),
-                    duals: em.dofs.iter().map(|(_, c)| super::dofs::dual_of(c)).collect(),
-                    mats: Vec::with_capacity(part.len() * em.k.len()),
-                    symmetry: if dir.is_some() { Symmetry::General } else { Symmetry::Symmetric },
-                });
-                b.conn.extend_from_slice(nodes);
-                b.mats.extend_from_slice(&em.k);
-            }
+            let symmetry = if dir.is_some() { Symmetry::General } else { Symmetry::Symmetric };
+            let block = super::element_block::part_block(it, part, symmetry, |e, x| {
+                kp::gradient_stiffness(form, x, rg, dir).map_err(|err| a.err(format!("KP: element {}: {}", e + 1, err)))
+            })?;
             rig.blocks.push(block.ok_or_else(|| Error::runtime("KP: the model has no element"))?);
         }
     }

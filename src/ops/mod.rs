@@ -24,6 +24,7 @@ mod covariance;
 mod curves;
 mod dofs;
 mod elem_field;
+mod element_block;
 mod empty;
 mod evol;
 mod evol_extr;

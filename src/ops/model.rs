@@ -440,27 +440,11 @@ pub(crate) fn stiffness_block(
     part: &crate::fem::mesh::Part,
     mats: &[Material],
 ) -> Result<Block> {
-    let npe = part.ty.nodes();
-    let mut block: Option<Block> = None;
-    let mut x = vec![[0.0; 3]; npe];
-    for (e, nodes) in part.elems().enumerate() {
-        for (k, n) in nodes.iter().enumerate() {
-            x[k] = it.nodes.get(*n);
-        }
+    let block = super::element_block::part_block(it, part, Symmetry::Symmetric, |e, x| {
         let mat = if mats.len() == 1 { &mats[0] } else { &mats[e] };
-        let em = element::stiffness(form, part.ty, mode, &x, mat)
-            .map_err(|err| Error::runtime(format!("element {}: {}", e + 1, fem_err(err).message)))?;
-        let b = block.get_or_insert_with(|| Block {
-            nodes_per_elem: npe,
-            conn: Vec::with_capacity(part.conn.len()),
-            dofs: em.dofs.iter().map(|(l, c)| (*l, c.to_string())).collect(),
-            duals: em.dofs.iter().map(|(_, c)| dofs::dual_of(c)).collect(),
-            mats: Vec::with_capacity(part.len() * em.k.len()),
-            symmetry: Symmetry::Symmetric,
-        });
-        b.conn.extend_from_slice(nodes);
-        b.mats.extend_from_slice(&em.k);
-    }
+        element::stiffness(form, part.ty, mode, x, mat)
+            .map_err(|err| Error::runtime(format!("element {}: {}", e + 1, fem_err(err).message)))
+    })?;
     block.ok_or_else(|| Error::runtime("the model has no element"))
 }
 

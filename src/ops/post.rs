@@ -8,7 +8,7 @@ use crate::fem::element::{self, GaussField};
 use crate::fem::mesh::{ElemType, Mesh};
 use crate::fem::meshing as mg;
 use crate::value::model::{MchamlZone, ModelZone};
-use crate::value::rigidity::{Block, Subtype, Symmetry};
+use crate::value::rigidity::{Subtype, Symmetry};
 use crate::value::{Chpoint, Mchaml, Model, Nature, Rigidite, Value};
 use std::rc::Rc;
 
@@ -556,21 +556,9 @@ fn model_mass(it: &Interp, model: Rc<Model>, fields: Vec<Rc<Mchaml>>, lumped: bo
         let (form, mode) = (formulation(zone), zone_mode(zone)?);
         let mat = material_for(zone, &fields);
         for part in &zone.mesh.parts {
-            let mut block: Option<Block> = None;
-            for nodes in part.elems() {
-                let x: Vec<[f64; 3]> = nodes.iter().map(|n| it.nodes.get(*n)).collect();
-                let em = element::mass(form, part.ty, mode, &x, &mat, lumped).map_err(fem_err)?;
-                let b = block.get_or_insert_with(|| Block {
-                    nodes_per_elem: part.ty.nodes(),
-                    conn: vec![],
-                    dofs: em.dofs.iter().map(|(l, c)| (*l, c.to_string())).collect(),
-                    duals: em.dofs.iter().map(|(_, c)| dofs::dual_of(c)).collect(),
-                    mats: vec![],
-                    symmetry: Symmetry::Symmetric,
-                });
-                b.conn.extend_from_slice(nodes);
-                b.mats.extend_from_slice(&em.k);
-            }
+            let block = super::element_block::part_block(it, part, Symmetry::Symmetric, |_, x| {
+                element::mass(form, part.ty, mode, x, &mat, lumped).map_err(fem_err)
+            })?;
             rig.blocks.extend(block);
         }
     }
