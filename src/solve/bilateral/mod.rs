@@ -27,6 +27,7 @@ mod nd;
 pub mod ordering;
 pub mod pool;
 mod redundant;
+mod refine;
 pub mod rigid_modes;
 pub mod schur;
 
