@@ -105,7 +105,9 @@ mod products;
 mod projection;
 mod rela_accro;
 mod rela_cori;
+mod raff;
 mod rela_mili;
+mod rela_model;
 mod replace;
 mod reso;
 mod restrict;
@@ -222,6 +224,7 @@ impl Registry {
             variable::OPS,
             pasapas::OPS,
             prim::OPS,
+            raff::OPS,
             chpo_rigi::OPS,
             work::OPS,
             fofi::OPS,
