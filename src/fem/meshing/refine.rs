@@ -17,6 +17,7 @@
 
 use super::MeshError;
 use crate::fem::integrate::measure;
+use crate::fem::locate::locate;
 use crate::fem::mesh::{Colour, ElemType, Mesh, Nodes, Part};
 use crate::fem::shape;
 use std::collections::{BTreeMap, HashMap};
@@ -188,6 +189,52 @@ fn sides(root: &Root) -> Vec<(ElemType, Vec<usize>)> {
     }
 }
 
+/// A point's name: its weights on nodes that do not hang, scaled to sum
+/// to N³.
+type Name = Vec<(usize, i128)>;
+
+/// Scale of the weights of a hanging node on the corners of its side.
+const TIE_BITS: u32 = 30;
+
+/// The weights of each hanging node of `mesh` (its MULT elements) on the
+/// corners of the side it lies on (a SEG3's middle node does not name a
+/// place: the weights are the linear ones of its ends).
+fn hanging_places(nodes: &Nodes, mesh: &Mesh) -> Result<HashMap<usize, Vec<(usize, i128)>>, MeshError> {
+    let mut out = HashMap::new();
+    for p in &mesh.parts {
+        let Some(side) = p.ty.tie_side() else { continue };
+        for e in p.elems() {
+            let xs: Vec<[f64; 3]> = e[1..].iter().map(|&n| nodes.get(n)).collect();
+            let xi = locate(side, &xs, nodes.get(e[0])).ok_or_else(|| {
+                MeshError::new("RAFF", format!("the hanging node {} is not on the side it is tied to", e[0] + 1))
+            })?;
+            let (corners, w): (Vec<usize>, Vec<f64>) = match side {
+                ElemType::Seg3 => (vec![e[1], e[3]], shape::eval(ElemType::Seg2, xi).n),
+                _ => (e[1..].to_vec(), shape::eval(side, xi).n),
+            };
+            let scale = (1i64 << TIE_BITS) as f64;
+            let ws = corners.into_iter().zip(w).map(|(n, w)| (n, (w * scale).round() as i128)).filter(|x| x.1 != 0);
+            out.insert(e[0], ws.collect());
+        }
+    }
+    Ok(out)
+}
+
+/// A root's name of a point, with the hanging nodes replaced by their
+/// places: the same point gets one name from every element it is in.
+fn expand(name: Vec<(usize, i64)>, alias: &HashMap<usize, Vec<(usize, i128)>>) -> Name {
+    let mut acc: BTreeMap<usize, i128> = BTreeMap::new();
+    let mut stack: Vec<(usize, i128, u32)> = name.into_iter().map(|(n, w)| (n, w as i128, 0)).collect();
+    while let Some((n, w, depth)) = stack.pop() {
+        match alias.get(&n) {
+            // A chain of ties longer than this would be a loop.
+            Some(ms) if depth < 64 => stack.extend(ms.iter().map(|&(m, t)| (m, (w * t) >> TIE_BITS, depth + 1))),
+            _ => *acc.entry(n).or_default() += w,
+        }
+    }
+    acc.into_iter().filter(|e| e.1 != 0).collect()
+}
+
 /// Refine `mesh` (TRI3, TRI6, QUA4, QUA8 or CUB8 elements) until every
 /// element's size (the side of a square of its area, of a cube of its
 /// volume; a triangle counts as half a square) is at most the smallest
@@ -195,7 +242,8 @@ fn sides(root: &Root) -> Vec<(ElemType, Vec<usize>)> {
 pub fn refine(nodes: &mut Nodes, mesh: &Mesh, density: &dyn Fn(usize) -> Option<f64>) -> Result<Mesh, MeshError> {
     let fail = |m: String| MeshError::new("RAFF", m);
     let mut roots = Vec::new();
-    for p in &mesh.parts {
+    let alias = hanging_places(nodes, mesh)?;
+    for p in mesh.parts.iter().filter(|p| p.ty.tie_side().is_none()) {
         if !matches!(p.ty, ElemType::Tri3 | ElemType::Tri6 | ElemType::Qua4 | ElemType::Qua8 | ElemType::Cub8) {
             return Err(fail(format!("{} elements cannot be refined (TRI3, TRI6, QUA4, QUA8 and CUB8 can)", p.ty.name())));
         }
@@ -248,7 +296,13 @@ pub fn refine(nodes: &mut Nodes, mesh: &Mesh, density: &dyn Fn(usize) -> Option<
     }
     let deepest = leaves.iter().map(|l| l.level).max().unwrap_or(0);
     // The nodes of the leaves, made once per name.
-    let mut made: HashMap<Vec<(usize, i64)>, usize> = HashMap::new();
+    let mut made: HashMap<Name, usize> = HashMap::new();
+    // A node that hangs in the mesh given (a mesh refined before) is the
+    // point of the coarser side it lies on: named so, the coarser
+    // element's points there find it.
+    for &h in alias.keys() {
+        made.insert(expand(vec![(h, N * N * N)], &alias), h);
+    }
     let mut parts: BTreeMap<(ElemType, Colour), Vec<usize>> = BTreeMap::new();
     let mut leaf_nodes: Vec<Vec<usize>> = Vec::with_capacity(leaves.len());
     for leaf in &leaves {
@@ -258,7 +312,7 @@ pub fn refine(nodes: &mut Nodes, mesh: &Mesh, density: &dyn Fn(usize) -> Option<
             let name = r.name(p);
             let n = match r.own_node(&name) {
                 Some(n) => n,
-                None => *made.entry(name).or_insert_with(|| {
+                None => *made.entry(expand(name, &alias)).or_insert_with(|| {
                     let v = r.interpolate(p, value);
                     nodes.push([v[0], v[1], v[2]], v[3])
                 }),
@@ -284,7 +338,7 @@ pub fn refine(nodes: &mut Nodes, mesh: &Mesh, density: &dyn Fn(usize) -> Option<
             let len = (N >> leaf.level) / step;
             let mut visit = |p: Pt| {
                 let name = r.name(p);
-                let found = r.own_node(&name).or_else(|| made.get(&name).copied());
+                let found = r.own_node(&name).or_else(|| made.get(&expand(name, &alias)).copied());
                 if let Some(n) = found.filter(|n| !own.contains(n)) {
                     if hanging.get(&n).is_none_or(|h| h.0 > leaf.level) {
                         hanging.insert(n, (leaf.level, side, own.clone()));
