@@ -33,8 +33,7 @@ type Pt = [i64; 3];
 /// Corner offsets of a square and a cube on the reference grid, in
 /// Cast3M's node order (counter-clockwise; a cube's bottom then top).
 const SQUARE: [[i64; 3]; 4] = [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]];
-const CUBE: [[i64; 3]; 8] =
-    [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]];
+const CUBE: [[i64; 3]; 8] = [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]];
 const CUBE_EDGES: [[usize; 2]; 12] =
     [[0, 1], [1, 2], [2, 3], [3, 0], [4, 5], [5, 6], [6, 7], [7, 4], [0, 4], [1, 5], [2, 6], [3, 7]];
 
@@ -156,7 +155,9 @@ fn children(tri: bool, leaf: &Leaf) -> Vec<Leaf> {
         .iter()
         .map(|o| {
             let base = [c[0][0] + o[0] * half, c[0][1] + o[1] * half, c[0][2] + o[2] * half];
-            child(offsets.iter().map(|d| [base[0] + d[0] * half, base[1] + d[1] * half, base[2] + d[2] * half]).collect())
+            child(
+                offsets.iter().map(|d| [base[0] + d[0] * half, base[1] + d[1] * half, base[2] + d[2] * half]).collect(),
+            )
         })
         .collect()
 }
@@ -175,7 +176,9 @@ fn element_points(root: &Root, leaf: &Leaf) -> Vec<Pt> {
 /// faces for a cube.
 fn sides(root: &Root) -> Vec<(ElemType, Vec<usize>)> {
     match root.ty {
-        ElemType::Tri3 => vec![(ElemType::Seg2, vec![0, 1]), (ElemType::Seg2, vec![1, 2]), (ElemType::Seg2, vec![2, 0])],
+        ElemType::Tri3 => {
+            vec![(ElemType::Seg2, vec![0, 1]), (ElemType::Seg2, vec![1, 2]), (ElemType::Seg2, vec![2, 0])]
+        }
         ElemType::Qua4 => (0..4).map(|k| (ElemType::Seg2, vec![k, (k + 1) % 4])).collect(),
         ElemType::Tri6 | ElemType::Qua8 => {
             let n = root.ty.nodes();
@@ -183,7 +186,7 @@ fn sides(root: &Root) -> Vec<(ElemType, Vec<usize>)> {
         }
         _ => {
             let mut v: Vec<_> = CUBE_EDGES.iter().map(|e| (ElemType::Seg2, e.to_vec())).collect();
-            v.extend(shape::faces(ElemType::Cub8).into_iter());
+            v.extend(shape::faces(ElemType::Cub8));
             v
         }
     }
@@ -235,7 +238,8 @@ fn expand(name: Vec<(usize, i64)>, alias: &HashMap<usize, Vec<(usize, i128)>>) -
     acc.into_iter().filter(|e| e.1 != 0).collect()
 }
 
-/// Refine `mesh` (TRI3, TRI6, QUA4, QUA8 or CUB8 elements) until every
+/// Refine `mesh` (TRI3, TRI6, QUA4, QUA8 or CUB8 elements, and the MULT
+/// elements of an earlier refinement) until every
 /// element's size (the side of a square of its area, of a cube of its
 /// volume; a triangle counts as half a square) is at most the smallest
 /// density at its corners, `density` giving it at the mesh's nodes.
@@ -245,7 +249,10 @@ pub fn refine(nodes: &mut Nodes, mesh: &Mesh, density: &dyn Fn(usize) -> Option<
     let alias = hanging_places(nodes, mesh)?;
     for p in mesh.parts.iter().filter(|p| p.ty.tie_side().is_none()) {
         if !matches!(p.ty, ElemType::Tri3 | ElemType::Tri6 | ElemType::Qua4 | ElemType::Qua8 | ElemType::Cub8) {
-            return Err(fail(format!("{} elements cannot be refined (TRI3, TRI6, QUA4, QUA8 and CUB8 can)", p.ty.name())));
+            return Err(fail(format!(
+                "{} elements cannot be refined (TRI3, TRI6, QUA4, QUA8 and CUB8 can)",
+                p.ty.name()
+            )));
         }
         for e in p.elems() {
             roots.push(Root { ty: p.ty, conn: e.to_vec(), colour: p.colour });
