@@ -47,7 +47,7 @@ pub fn jacobian(ty: ElemType, x: &[[f64; 3]], p: [f64; 3]) -> f64 {
 /// for curved quadratic ones.
 fn measure_rule(ty: ElemType) -> Vec<QPoint> {
     match ty {
-        ElemType::Poi1 => vec![],
+        ElemType::Poi1 | ElemType::Mult3 | ElemType::Mult4 | ElemType::Mult5 => vec![],
         ElemType::Seg2 => seg(3),
         // |dx/dξ| of a curved SEG3 is a square root, not a polynomial:
         // 3 Gauss points on each quarter keep the length to about 1e-6.

@@ -33,6 +33,14 @@ pub enum ElemType {
     Rac3,
     Lia3,
     Lia4,
+    /// Relation elements (Cast3M's MULT, made by RAFF): a hanging node,
+    /// then the nodes of the coarser side it lies on: a SEG2 (`Mult3`), a
+    /// SEG3 (`Mult4`) or a QUA4 face (`Mult5`). They carry no mechanics:
+    /// MODE keeps them aside and RELA of the model ties the hanging node
+    /// to that side. Not in `ALL`: they have no reference element.
+    Mult3,
+    Mult4,
+    Mult5,
 }
 
 impl ElemType {
@@ -74,13 +82,16 @@ impl ElemType {
             ElemType::Rac2 => 4,
             ElemType::Rac3 | ElemType::Lia3 => 6,
             ElemType::Lia4 => 8,
+            ElemType::Mult3 => 3,
+            ElemType::Mult4 => 4,
+            ElemType::Mult5 => 5,
         }
     }
 
     /// Topological dimension (0 point, 1 line, 2 surface, 3 volume).
     pub fn dim(self) -> usize {
         match self {
-            ElemType::Poi1 => 0,
+            ElemType::Poi1 | ElemType::Mult3 | ElemType::Mult4 | ElemType::Mult5 => 0,
             ElemType::Seg2 | ElemType::Seg3 | ElemType::Rac2 | ElemType::Rac3 => 1,
             ElemType::Tri3 | ElemType::Tri6 | ElemType::Qua4 | ElemType::Qua8 | ElemType::Lia3 | ElemType::Lia4 => 2,
             ElemType::Cub8 | ElemType::Tet4 | ElemType::Pri6 | ElemType::Cu20 | ElemType::Pr15 => 3,
@@ -106,6 +117,7 @@ impl ElemType {
             ElemType::Rac3 => "RAC3",
             ElemType::Lia3 => "LIA3",
             ElemType::Lia4 => "LIA4",
+            ElemType::Mult3 | ElemType::Mult4 | ElemType::Mult5 => "MULT",
         }
     }
 
@@ -121,6 +133,16 @@ impl ElemType {
     }
 
     /// Parse a Cast3M element name (exact 4 letters).
+    /// The side a relation element's hanging node lies on.
+    pub fn tie_side(self) -> Option<ElemType> {
+        match self {
+            ElemType::Mult3 => Some(ElemType::Seg2),
+            ElemType::Mult4 => Some(ElemType::Seg3),
+            ElemType::Mult5 => Some(ElemType::Qua4),
+            _ => None,
+        }
+    }
+
     pub fn from_name(s: &str) -> Option<ElemType> {
         ElemType::ALL.into_iter().find(|t| t.name() == s)
     }

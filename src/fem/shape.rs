@@ -25,6 +25,8 @@ pub fn ref_nodes(ty: ElemType) -> Vec<[f64; 3]> {
     let q8 = [(-1., -1.), (0., -1.), (1., -1.), (1., 0.), (1., 1.), (0., 1.), (-1., 1.), (-1., 0.)];
     match ty {
         ElemType::Poi1 => vec![[0.0; 3]],
+        // A relation element is its hanging node: every node at the origin.
+        ElemType::Mult3 | ElemType::Mult4 | ElemType::Mult5 => vec![[0.0; 3]; ty.nodes()],
         ElemType::Seg2 => vec![[-1., 0., 0.], [1., 0., 0.]],
         ElemType::Seg3 => vec![[-1., 0., 0.], [0., 0., 0.], [1., 0., 0.]],
         ElemType::Tri3 => vec![[0., 0., 0.], [1., 0., 0.], [0., 1., 0.]],
@@ -85,6 +87,11 @@ pub fn eval(ty: ElemType, p: [f64; 3]) -> Shape {
     let [x, y, z] = p;
     match ty {
         ElemType::Poi1 => Shape { n: vec![1.0], dn: vec![[0.0; 3]] },
+        ElemType::Mult3 | ElemType::Mult4 | ElemType::Mult5 => {
+            let mut n = vec![0.0; ty.nodes()];
+            n[0] = 1.0;
+            Shape { n, dn: vec![[0.0; 3]; ty.nodes()] }
+        }
         ElemType::Seg2 => Shape { n: vec![0.5 * (1. - x), 0.5 * (1. + x)], dn: vec![[-0.5, 0., 0.], [0.5, 0., 0.]] },
         ElemType::Seg3 => Shape {
             n: vec![0.5 * x * (x - 1.), 1. - x * x, 0.5 * x * (x + 1.)],
@@ -251,7 +258,7 @@ pub fn faces(ty: ElemType) -> Vec<(ElemType, Vec<usize>)> {
         lists.iter().map(|l| (t, l.to_vec())).collect()
     };
     match ty {
-        Poi1 => vec![],
+        Poi1 | Mult3 | Mult4 | Mult5 => vec![],
         Seg2 => f(Poi1, &[&[0], &[1]]),
         Seg3 => f(Poi1, &[&[0], &[2]]),
         Tri3 => f(Seg2, &[&[0, 1], &[1, 2], &[2, 0]]),

@@ -55,6 +55,8 @@ pub fn vtk_cell(ty: ElemType) -> (u8, &'static [usize]) {
         ElemType::Rac3 => (7, &[0, 1, 2, 5, 4, 3]),
         ElemType::Lia3 => (13, &[0, 1, 2, 3, 4, 5]),
         ElemType::Lia4 => (12, &[0, 1, 2, 3, 4, 5, 6, 7]),
+        // A relation element is drawn as its hanging node.
+        ElemType::Mult3 | ElemType::Mult4 | ElemType::Mult5 => (1, &[0]),
     }
 }
 

@@ -22,8 +22,8 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "RELA",
-        signature: "RELA ('MINI'|'MAXI') (c1) comp1 GEO1 (+|-) (c2) comp2 GEO2 … | RELA ('MINI'|'MAXI') CHPOINT ('DUAL' CHPOINT) | RELA 'ENSE' comp… GEO | RELA 'MILI' (LISTMOTS) GEO | RELA 'CORI' 'DEPL' 'ROTA' GEO1 (GEO2) | RELA GEO1 'ACCRO' GEO2 (LISTMOTS) (FLOT)",
-        doc: "Linear relations between unknowns, node by node (MINI: >= d, MAXI: <= d). From a field, one relation whose coefficients are the field's values; 'DUAL' gives a non-associated reaction direction (the system is then solved as non-symmetric). 'ENSE': each listed component takes one common value on all the nodes. 'MILI': mid-side nodes of quadratic elements follow the mean of their edge's vertices (default: the displacements). 'CORI' 'DEPL' 'ROTA': the nodes of GEO1 (with rotations) and GEO2 move as one rigid body with GEO1's first node. GEO1 'ACCRO' GEO2: each node of GEO1 inside an element of GEO2 follows the interpolation of that element's nodes.",
+        signature: "RELA ('MINI'|'MAXI') (c1) comp1 GEO1 (+|-) (c2) comp2 GEO2 … | RELA ('MINI'|'MAXI') CHPOINT ('DUAL' CHPOINT) | RELA 'ENSE' comp… GEO | RELA 'MILI' (LISTMOTS) GEO | RELA 'CORI' 'DEPL' 'ROTA' GEO1 (GEO2) | RELA GEO1 'ACCRO' GEO2 (LISTMOTS) (FLOT) | RELA MMODEL",
+        doc: "Linear relations between unknowns, node by node (MINI: >= d, MAXI: <= d). From a field, one relation whose coefficients are the field's values; 'DUAL' gives a non-associated reaction direction (the system is then solved as non-symmetric). 'ENSE': each listed component takes one common value on all the nodes. 'MILI': mid-side nodes of quadratic elements follow the mean of their edge's vertices (default: the displacements). 'CORI' 'DEPL' 'ROTA': the nodes of GEO1 (with rotations) and GEO2 move as one rigid body with GEO1's first node. GEO1 'ACCRO' GEO2: each node of GEO1 inside an element of GEO2 follows the interpolation of that element's nodes. Of a model: each relation element (MULT, from RAFF) of its meshes ties its hanging node to the side it lies on.",
         example: "r = rela 'MINI' 1. 'UX' pb - 1. 'UX' pa ;",
         f: rela,
     },
@@ -168,6 +168,9 @@ fn rela(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     }
     if a.keyword(&["CORI"]).is_some() {
         return super::rela_cori::rela_cori(it, a, kind);
+    }
+    if let Some(m) = a.opt::<Rc<crate::value::Model>>() {
+        return super::rela_model::rela_model(it, a, kind, &m);
     }
     if let Some(Value::Mesh(g1)) = a.peek_right() {
         let taken = a.right_any();

@@ -112,7 +112,7 @@ fn empty(it: &Interp, a: &Args, ty: &str, sub: Option<&str>) -> Result<Value> {
         // The subtype of a curve (REEL or COMPLEXE) changes nothing here.
         "EVOLUTIO" => Ok(Value::Evol(Rc::new(Evolution::default()))),
         "MCHAML" => no_subtype(Value::Mchaml(Rc::new(Mchaml::default()))),
-        "MMODEL" => no_subtype(Value::Model(Rc::new(Model { zones: Vec::new() }))),
+        "MMODEL" => no_subtype(Value::Model(Rc::new(Model { zones: Vec::new(), ties: Vec::new() }))),
         "LISTENTI" => no_subtype(Value::ListEnti(Rc::new(Vec::new()))),
         "LISTREEL" => no_subtype(Value::ListReel(Rc::new(Vec::new()))),
         "LISTMOTS" => no_subtype(Value::ListMots(Rc::new(Vec::new()))),

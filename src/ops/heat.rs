@@ -78,7 +78,7 @@ pub(crate) fn model(it: &Interp, a: &mut Args, geo: &Mesh) -> Result<Vec<Value>>
             mode: mode.clone(),
         })
         .collect();
-    Ok(vec![Value::Model(Rc::new(Model { zones }))])
+    Ok(vec![Value::Model(Rc::new(Model { zones, ties: Vec::new() }))])
 }
 
 /// The model and material fields of COND and CAPA; every zone must be a

@@ -52,6 +52,11 @@ fn elem(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     if let Some(ty) = ty {
         return Ok(mesh_val(mg::elem_type(&m, ty)));
     }
+    if a.keyword_next(&["MULT"]).is_some() {
+        // Relation elements (RAFF's) come in three sizes, one type each.
+        let parts = m.parts.iter().filter(|p| p.ty.tie_side().is_some()).cloned().collect();
+        return Ok(mesh_val(Mesh { parts }));
+    }
     let w = a.word().ok_or_else(|| a.missing("an element type, a colour, a number or APPU"))?;
     if let Some(ty) = ElemType::from_name(&w.to_uppercase()) {
         return Ok(mesh_val(mg::elem_type(&m, ty)));

@@ -104,9 +104,11 @@ mod principal;
 mod prob;
 mod products;
 mod projection;
+mod raff;
 mod rela_accro;
 mod rela_cori;
 mod rela_mili;
+mod rela_model;
 mod replace;
 mod reso;
 mod restrict;
@@ -223,6 +225,7 @@ impl Registry {
             variable::OPS,
             pasapas::OPS,
             prim::OPS,
+            raff::OPS,
             chpo_rigi::OPS,
             work::OPS,
             fofi::OPS,

@@ -30,7 +30,17 @@ const FORMS: &[&str] = &[
 const BEHAVIOURS: &[&str] = &["ELASTIQUE", "ISOTROPE", "EPSILON"];
 
 fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let geo = req_geo(a)?;
+    // Relation elements (RAFF's MULT) carry no mechanics: the model keeps
+    // them aside for RELA.
+    let (geo, ties): (Vec<_>, Vec<_>) = req_geo(a)?.parts.into_iter().partition(|p| p.ty.tie_side().is_none());
+    let mut out = mode_on(it, a, Mesh { parts: geo })?;
+    if let Some(Value::Model(m)) = out.first_mut() {
+        Rc::make_mut(m).ties = ties;
+    }
+    Ok(out)
+}
+
+fn mode_on(it: &mut Interp, a: &mut Args, geo: Mesh) -> Result<Vec<Value>> {
     // CONTACT is read as a word before any operator check: its first four
     // letters name the operator CONT.
     let formulation = match a.keyword_next(&["CONTACT"]) {
@@ -116,7 +126,7 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             return Err(a.err(format!("{} shells need OPTI DIME 3 MODE TRID, not mode {}", element, mode)));
         }
     }
-    let mut model = Model { zones: vec![] };
+    let mut model = Model { zones: vec![], ties: Vec::new() };
     if let Some(&(_, ty)) = incomp::NAMES.iter().find(|(n, _)| *n == element) {
         return incompressible_model(a, geo, formulation, behaviour, element, ty, mode);
     }
@@ -170,7 +180,7 @@ fn incompressible_model(
             mode: mode.clone(),
         })
         .collect();
-    Ok(vec![Value::Model(Rc::new(Model { zones }))])
+    Ok(vec![Value::Model(Rc::new(Model { zones, ties: Vec::new() }))])
 }
 
 /// `'EPSI' MOT`: how strains are computed. gibi's elements use small
@@ -224,7 +234,7 @@ fn contact_model(it: &mut Interp, a: &mut Args, geo: &Mesh) -> Result<Vec<Value>
             mode: it.opts.mode.clone(),
         })
         .collect();
-    Ok(vec![Value::Model(Rc::new(Model { zones }))])
+    Ok(vec![Value::Model(Rc::new(Model { zones, ties: Vec::new() }))])
 }
 
 const PROPS: &[&str] = &[

@@ -41,5 +41,5 @@ pub(super) fn shells_by_geometry(
             }),
         }
     }
-    Ok(vec![Value::Model(Rc::new(Model { zones }))])
+    Ok(vec![Value::Model(Rc::new(Model { zones, ties: Vec::new() }))])
 }

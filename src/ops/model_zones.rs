@@ -15,7 +15,7 @@ pub(crate) fn extr_zones(a: &mut Args, m: &Model) -> Option<Value> {
             let mut t = Table::new();
             for (i, z) in m.zones.iter().enumerate() {
                 let k = 2 * i as i64;
-                t.set(Key::Int(k + 1), Value::Model(Rc::new(Model { zones: vec![z.clone()] })));
+                t.set(Key::Int(k + 1), Value::Model(Rc::new(Model { zones: vec![z.clone()], ties: Vec::new() })));
                 t.set(Key::Int(k + 2), Value::Mesh(Rc::new(z.mesh.clone())));
             }
             Some(Value::Table(Rc::new(RefCell::new(t))))

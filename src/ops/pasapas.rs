@@ -359,7 +359,7 @@ fn initial_state(it: &mut Interp, a: &Args, run: &mut Run, input: &Input, temp0:
         // mechanical model and its material, the kind of run, and the
         // temperature the expansion coefficients refer to.
         let (mech, _) = pmodel::split(&input.model);
-        let mod_mec = Model { zones: mech.into_iter().cloned().collect() };
+        let mod_mec = Model { zones: mech.into_iter().cloned().collect(), ties: input.model.ties.clone() };
         w.set(key("MOD_MEC"), Value::Model(Rc::new(mod_mec)));
         if let Some(m) = input.cara.first() {
             w.set(key("MAT_MEC"), Value::Mchaml(m.clone()));

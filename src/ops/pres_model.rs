@@ -63,7 +63,7 @@ pub(crate) fn model(it: &Interp, a: &mut Args, geo: &Mesh) -> Result<Vec<Value>>
             mode: it.opts.mode.clone(),
         })
         .collect();
-    Ok(vec![Value::Model(Rc::new(Model { zones }))])
+    Ok(vec![Value::Model(Rc::new(Model { zones, ties: Vec::new() }))])
 }
 
 /// PRES mop 'PRES' p|CHPOINT: the pressure at every element node.

@@ -63,7 +63,8 @@ fn redu(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 .collect();
             // No element on the mesh: an empty model, as Cast3M gives
             // (its integrals are zero).
-            Value::Model(Rc::new(Model { zones }))
+            let ties = mo.ties_within(&zones);
+            Value::Model(Rc::new(Model { zones, ties }))
         }
         v => return Err(a.missing(&format!("CHPOINT, MCHAML, RIGIDITE or MMODEL (found a {})", v.type_name()))),
     }])

@@ -128,9 +128,7 @@ pub(crate) fn union(_: &mut Interp, a: &Args, x: Value, y: Value, noer: bool) ->
         }
         (Chpo(p), Chpo(q)) => Chpo(Rc::new(p.merge(q, noer).map_err(|e| a.err(e))?)),
         (Rigi(p), Rigi(q)) => Rigi(Rc::new(p.union(q))),
-        (Model(p), Model(q)) => {
-            Model(Rc::new(crate::value::Model { zones: p.zones.iter().chain(q.zones.iter()).cloned().collect() }))
-        }
+        (Model(p), Model(q)) => Model(Rc::new(p.union(q))),
         (Mchaml(p), Mchaml(q)) => Mchaml(Rc::new(p.merge(q))),
         // Loads join part by part, in order (several parts may share a name:
         // PASAPAS and TIRE sum them).

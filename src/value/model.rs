@@ -7,6 +7,10 @@ use std::collections::BTreeMap;
 #[derive(Debug, Clone)]
 pub struct Model {
     pub zones: Vec<ModelZone>,
+    /// The relation elements (MULT, from RAFF) of the meshes the model was
+    /// made on: they carry no mechanics and RELA of the model turns them
+    /// into the conditions that tie hanging nodes.
+    pub ties: Vec<crate::fem::mesh::Part>,
 }
 
 #[derive(Debug, Clone)]
@@ -204,6 +208,27 @@ pub enum ZoneKey {
 }
 
 impl Model {
+    /// The zones of both models, and the relation elements of both.
+    pub fn union(&self, other: &Model) -> Model {
+        let ties = Mesh { parts: self.ties.clone() }.union(&Mesh { parts: other.ties.clone() });
+        Model { zones: self.zones.iter().chain(other.zones.iter()).cloned().collect(), ties: ties.parts }
+    }
+
+    /// The relation elements all of whose nodes are nodes of `zones` (a
+    /// model reduced to part of its mesh keeps the ties inside that part).
+    pub fn ties_within(&self, zones: &[ModelZone]) -> Vec<crate::fem::mesh::Part> {
+        let nodes: std::collections::HashSet<usize> = zones.iter().flat_map(|z| z.mesh.node_list()).collect();
+        let mut out = Vec::new();
+        for p in &self.ties {
+            let conn: Vec<usize> =
+                p.elems().filter(|e| e.iter().all(|n| nodes.contains(n))).flatten().copied().collect();
+            if !conn.is_empty() {
+                out.push(crate::fem::mesh::Part::with(p.ty, conn));
+            }
+        }
+        out
+    }
+
     /// The zones whose formulation or element is one of `words`. Names
     /// compare on their first four letters, as Cast3M's keywords do
     /// (`'MECA'` and `'MECANIQUE'` are one formulation).
@@ -220,6 +245,6 @@ impl Model {
             })
             .cloned()
             .collect();
-        Model { zones }
+        Model { zones, ties: self.ties.clone() }
     }
 }

@@ -49,6 +49,7 @@ pub mod partition_more;
 pub mod points;
 pub mod polyline;
 pub mod query;
+pub mod refine;
 pub mod regenerate;
 pub mod select;
 pub mod surf;

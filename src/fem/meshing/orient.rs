@@ -43,6 +43,7 @@ pub(super) fn corners(ty: ElemType) -> &'static [usize] {
         ElemType::Rac3 => &[0, 2],
         ElemType::Lia3 => &[0, 1, 2],
         ElemType::Lia4 => &[0, 1, 2, 3],
+        ElemType::Mult3 | ElemType::Mult4 | ElemType::Mult5 => &[0],
     }
 }
 

@@ -86,6 +86,9 @@ pub(crate) fn turn_over(ty: ElemType) -> &'static [usize] {
         ElemType::Rac3 => &[0, 1, 2, 3, 4, 5],
         ElemType::Lia3 => &[0, 2, 1, 3, 5, 4],
         ElemType::Lia4 => &[0, 3, 2, 1, 4, 7, 6, 5],
+        ElemType::Mult3 => &[0, 1, 2],
+        ElemType::Mult4 => &[0, 1, 2, 3],
+        ElemType::Mult5 => &[0, 1, 2, 3, 4],
     }
 }
 
