@@ -33,6 +33,7 @@ mod export;
 mod extract;
 mod fields;
 mod fit;
+mod param_fit;
 mod fofi;
 mod format;
 mod fourier;
@@ -153,6 +154,7 @@ impl Registry {
             ntab::OPS,
             fourier::OPS,
             fit::OPS,
+            param_fit::OPS,
             spectra::OPS,
             weibull::OPS,
             simplex::OPS,
