@@ -33,6 +33,7 @@ mod export;
 mod extract;
 mod fields;
 mod fit;
+mod front;
 mod param_fit;
 mod fofi;
 mod format;
@@ -154,6 +155,7 @@ impl Registry {
             ntab::OPS,
             fourier::OPS,
             fit::OPS,
+            front::OPS,
             param_fit::OPS,
             spectra::OPS,
             weibull::OPS,
