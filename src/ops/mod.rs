@@ -33,6 +33,7 @@ mod export;
 mod extract;
 mod fields;
 mod fit;
+mod excellence;
 mod front;
 mod param_fit;
 mod fofi;
@@ -155,6 +156,7 @@ impl Registry {
             ntab::OPS,
             fourier::OPS,
             fit::OPS,
+            excellence::OPS,
             front::OPS,
             param_fit::OPS,
             spectra::OPS,

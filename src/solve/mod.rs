@@ -24,6 +24,7 @@
 pub mod assignment;
 pub mod bilateral;
 pub mod cache;
+pub mod mma;
 pub mod error;
 pub mod numbering;
 pub mod poly_roots;
