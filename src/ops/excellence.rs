@@ -49,7 +49,7 @@ fn exce(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let xmin = list(&sub("VXMIN")?, "TAB.'VXMIN'", 1, n)?;
     let xmax = list(&sub("VXMAX")?, "TAB.'VXMAX'", 1, n)?;
     for i in 0..n {
-        if !(xmin[i] < xmax[i]) || x[i] < xmin[i] || x[i] > xmax[i] {
+        if xmin[i] >= xmax[i] || x[i] < xmin[i] || x[i] > xmax[i] {
             return Err(a.err(format!(
                 "variable {}: it must lie within its bounds, min < max (x = {}, min = {}, max = {})",
                 i + 1,
@@ -96,7 +96,12 @@ fn exce(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         Some(Value::ListReel(l)) if l.len() == n => Some(l.to_vec()),
         _ => None,
     };
-    let h = History { x1: hist_list("EXCE_X1"), x2: hist_list("EXCE_X2"), low: hist_list("EXCE_LOW"), upp: hist_list("EXCE_UPP") };
+    let h = History {
+        x1: hist_list("EXCE_X1"),
+        x2: hist_list("EXCE_X2"),
+        low: hist_list("EXCE_LOW"),
+        upp: hist_list("EXCE_UPP"),
+    };
     let s = mma::Step { x: &x, grad_f: &grad_f, cons: &cons, xmin: &xmin, xmax: &xmax };
     let (low, upp) = mma::asymptotes(&s, how, &h);
     let next = mma::step(&s, &low, &upp);

@@ -35,7 +35,9 @@ fn fron(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         };
         let (vi, bi) = (name("VIT")?, name("TCMB")?);
         if !(ti.is_finite() && vi.is_finite() && bi.is_finite()) || vi < 0.0 {
-            return Err(a.err(format!("node {n}: 'TPS' {ti}, 'VIT' {vi}, 'TCMB' {bi}: the values must be finite and the speed >= 0")));
+            return Err(a.err(format!(
+                "node {n}: 'TPS' {ti}, 'VIT' {vi}, 'TCMB' {bi}: the values must be finite and the speed >= 0"
+            )));
         }
         nodes.push(n);
         t.push(ti);

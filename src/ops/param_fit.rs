@@ -78,7 +78,7 @@ fn levm(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let s = match s {
         Some(s) => {
             same_len(a, "'SIGM'", s.len(), n)?;
-            if s.iter().any(|v| *v == 0.0) {
+            if s.contains(&0.0) {
                 return Err(a.err("'SIGM' holds a zero: every point needs a non-zero weight σ"));
             }
             s.to_vec()
@@ -90,13 +90,23 @@ fn levm(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let span = a.span;
     let name = proc_.name.clone();
     let r = levmar::levenberg_marquardt(&p0, &y, &s, 500, |p| {
-        let mut st = GroupState { left: vec![Value::ListReel(x.clone()), Value::ListReel(Rc::new(p.to_vec()))], right: Default::default() };
+        let mut st = GroupState {
+            left: vec![Value::ListReel(x.clone()), Value::ListReel(Rc::new(p.to_vec()))],
+            right: Default::default(),
+        };
         let out = it.call_proc(proc_.clone(), &mut st, span)?;
         let list = |v: Option<&Value>, what: &str, len: usize| match v {
             Some(Value::ListReel(l)) if l.len() == len && l.iter().all(|v| v.is_finite()) => Ok(l.clone()),
-            Some(Value::ListReel(l)) if l.len() == len => Err(a.err(format!("{name} returned a non-finite number in {what}"))),
-            Some(Value::ListReel(l)) => Err(a.err(format!("{name} returned {} numbers for {what}, {len} expected", l.len()))),
-            _ => Err(a.err(format!("{name} must return two LISTREEL: the values at the abscissas, then the derivatives"))),
+            Some(Value::ListReel(l)) if l.len() == len => {
+                Err(a.err(format!("{name} returned a non-finite number in {what}")))
+            }
+            Some(Value::ListReel(l)) => {
+                Err(a.err(format!("{name} returned {} numbers for {what}, {len} expected", l.len())))
+            }
+            _ => {
+                Err(a
+                    .err(format!("{name} must return two LISTREEL: the values at the abscissas, then the derivatives")))
+            }
         };
         let f = list(out.first(), "the values", n)?;
         let d = list(out.get(1), "the derivatives (for each point, one per parameter)", n * m)?;

@@ -97,13 +97,16 @@ pub fn step(s: &Step, low: &[f64], upp: &[f64]) -> Vec<f64> {
         }
     };
     let p0: Vec<(f64, f64)> = (0..n).map(|i| pq(s.grad_f[i], i, true)).collect();
-    let pc: Vec<Vec<(f64, f64)>> = s.cons.iter().map(|(_, g, _)| (0..n).map(|i| pq(g[i], i, false)).collect()).collect();
+    let pc: Vec<Vec<(f64, f64)>> =
+        s.cons.iter().map(|(_, g, _)| (0..n).map(|i| pq(g[i], i, false)).collect()).collect();
     // r_j − bound_j: the constant of each approximated constraint.
     let rc: Vec<f64> = s
         .cons
         .iter()
         .zip(&pc)
-        .map(|((v, _, b), pj)| v - b - (0..n).map(|i| pj[i].0 / (upp[i] - s.x[i]) + pj[i].1 / (s.x[i] - low[i])).sum::<f64>())
+        .map(|((v, _, b), pj)| {
+            v - b - (0..n).map(|i| pj[i].0 / (upp[i] - s.x[i]) + pj[i].1 / (s.x[i] - low[i])).sum::<f64>()
+        })
         .collect();
     let x_of = |lam: &[f64]| -> Vec<f64> {
         (0..n)
@@ -116,7 +119,9 @@ pub fn step(s: &Step, low: &[f64], upp: &[f64]) -> Vec<f64> {
             })
             .collect()
     };
-    let slack = |j: usize, x: &[f64]| rc[j] + (0..n).map(|i| pc[j][i].0 / (upp[i] - x[i]) + pc[j][i].1 / (x[i] - low[i])).sum::<f64>();
+    let slack = |j: usize, x: &[f64]| {
+        rc[j] + (0..n).map(|i| pc[j][i].0 / (upp[i] - x[i]) + pc[j][i].1 / (x[i] - low[i])).sum::<f64>()
+    };
     let mut lam = vec![0.0; m];
     for _sweep in 0..if m > 1 { 50 } else { 1 } {
         let mut moved = 0.0f64;

@@ -24,8 +24,8 @@
 pub mod assignment;
 pub mod bilateral;
 pub mod cache;
-pub mod mma;
 pub mod error;
+pub mod mma;
 pub mod numbering;
 pub mod poly_roots;
 pub mod problem;
