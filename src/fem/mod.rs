@@ -19,6 +19,7 @@ pub mod element;
 pub mod enclosed;
 pub mod flow;
 pub mod fofi;
+pub mod front;
 pub mod hooke_matrix;
 pub mod incomp;
 pub mod integrate;

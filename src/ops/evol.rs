@@ -57,9 +57,16 @@ fn manu(a: &mut Args) -> Result<Curve> {
     if a.keyword(&["LEGE", "TITR"]).is_some() {
         legend = a.word().ok_or_else(|| a.missing("the legend text"))?;
     }
-    let x_name = label(a).unwrap_or_default();
+    let mut x_name = label(a).unwrap_or_default();
     let x = numbers(a).ok_or_else(|| a.missing("LISTREEL (the abscissae)"))?;
-    let y_name = label(a).unwrap_or_default();
+    let mut y_name = label(a).unwrap_or_default();
+    // Cast3M reads the optional names wherever they stand: with two names
+    // between the lists (`lx 'ABS' 'TEMPS' ly`) the first names the abscissae.
+    if x_name.is_empty() && !y_name.is_empty() {
+        if let Some(second) = label(a) {
+            x_name = std::mem::replace(&mut y_name, second);
+        }
+    }
     let y = numbers(a).ok_or_else(|| a.missing("LISTREEL (the ordinates)"))?;
     if x.len() != y.len() {
         return Err(a.err(format!("the abscissae have {} values but the ordinates {}", x.len(), y.len())));
@@ -163,5 +170,6 @@ fn along_line(it: &Interp, a: &mut Args) -> Result<Curve> {
         x.push(s);
         y.push(v);
     }
-    Ok(Curve { legend: String::new(), x_name: "ABSC".into(), y_name: comp, x, y })
+    // Cast3M titles this abscissa ABS: decks read it back with `EXTR ev 'ABS'`.
+    Ok(Curve { legend: String::new(), x_name: "ABS".into(), y_name: comp, x, y })
 }

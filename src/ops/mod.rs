@@ -30,6 +30,7 @@ mod evol;
 mod evol_extr;
 mod evol_extremum;
 mod evol_temps;
+mod excellence;
 mod export;
 mod extract;
 mod fields;
@@ -38,6 +39,7 @@ mod fofi;
 mod format;
 mod fourier;
 mod fracture;
+mod front;
 mod heat;
 mod hist;
 mod hist_field;
@@ -87,6 +89,7 @@ mod opti;
 mod opti_own;
 mod ordo_cost;
 mod orient_check;
+mod param_fit;
 mod pasapas;
 mod pasapas_fields;
 mod pasapas_model;
@@ -156,6 +159,9 @@ impl Registry {
             ntab::OPS,
             fourier::OPS,
             fit::OPS,
+            excellence::OPS,
+            front::OPS,
+            param_fit::OPS,
             spectra::OPS,
             weibull::OPS,
             simplex::OPS,

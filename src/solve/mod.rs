@@ -25,6 +25,7 @@ pub mod assignment;
 pub mod bilateral;
 pub mod cache;
 pub mod error;
+pub mod mma;
 pub mod numbering;
 pub mod poly_roots;
 pub mod problem;

@@ -8,6 +8,7 @@ pub mod covariance;
 pub mod fit;
 pub mod fourier;
 pub mod histogram;
+pub mod levmar;
 pub mod noise;
 pub mod oscillator;
 pub mod pearson;
