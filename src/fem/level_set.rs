@@ -94,7 +94,7 @@ impl Crack {
         for (i, s) in segs.iter().enumerate() {
             let t = sub(s[1], s[0]);
             let l = norm2(t).sqrt();
-            if !(l > 0.0) {
+            if l <= 0.0 || l.is_nan() {
                 return Err(format!("segment {} of the crack has zero length", i + 1));
             }
             facets.push(Facet { x: s.to_vec(), n: [-t[1] / l, t[0] / l, 0.0] });
@@ -108,7 +108,7 @@ impl Crack {
         let mut facets = Vec::with_capacity(tris.len());
         for (i, t) in tris.iter().enumerate() {
             let n = cross(sub(t[1], t[0]), sub(t[2], t[0]));
-            if !(norm2(n) > 0.0) {
+            if norm2(n) <= 0.0 || norm2(n).is_nan() {
                 return Err(format!("facet {} of the crack has zero area", i + 1));
             }
             facets.push(Facet { x: t.to_vec(), n: unit(n) });
