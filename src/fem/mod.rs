@@ -25,6 +25,7 @@ pub mod incomp;
 pub mod integrate;
 pub mod joint;
 pub mod kp;
+pub mod level_set;
 pub mod loads;
 pub mod locate;
 pub mod material;

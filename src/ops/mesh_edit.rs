@@ -17,7 +17,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "FACE", signature: "FACE (n) VOLUME", doc: "Face n of a volume made by VOLU, TRAN or ROTA: 1 the base, 2 the opposite face, 3 the lateral surface; without n, the three.", example: "haut = face 2 v ;", f: face },
     OpDef { name: "ENVE", signature: "ENVE VOLUME", doc: "The envelope of a volume mesh: the faces that belong to one element only (TRI3/QUA4), oriented outwards as in their elements.", example: "peau = enve v ;", f: enve },
     OpDef { name: "CONT", signature: "CONT ('NOID') ('EXTE'|'INTE'|'TOUT') GEO", doc: "Contour: boundary edges of a surface, end points of a line.", example: "c = cont s ;", f: cont },
-    OpDef { name: "ELIM", signature: "ELIM (crit) GEO (GEO2 …)", doc: "Merge nodes closer than crit, in every object (several meshes: their nodes with each other's).", example: "elim 1.e-5 l ;", f: elim },
+    OpDef { name: "ELIM", signature: "ELIM (crit) GEO (GEO2 …)", doc: "Merge nodes closer than crit, in every object (with GEO2: only nodes of GEO with nodes of GEO2, never within one object).", example: "elim 1.e-5 l ;", f: elim },
     OpDef { name: "INTE", signature: "GEO1 INTE GEO2 ('NOVERIF') | S1B S2B C1 C2 = INTE 'GEOM' S1 S2 ('NOVERIF')", doc: "Elements common to two meshes (an empty mesh when there are none); with 'GEOM', two TRI3 surfaces cut along the curve where they cross, and that curve on the nodes of each.", example: "c = s1 inte s2 ;", f: inte },
     OpDef { name: "DIFF", signature: "DIFF GEO1 GEO2", doc: "Symmetric difference of two meshes.", example: "d = diff s1 s2 ;", f: diff },
     OpDef { name: "PLUS", signature: "OBJ PLUS VECTOR | GEO PLUS CHPOINT", doc: "A translated copy (geometric, not arithmetic), or the mesh moved by a displacement field.", example: "l2 = l plus (0. 1.) ;", f: plus },
@@ -128,13 +128,21 @@ fn elim(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     // The tolerance may come before or after the mesh (`ELIM 1.e-3 s`,
     // `ELIM s 1.e-3`).
     let tol = a.opt_num();
-    let mut m = req_geo(a)?;
-    // `ELIM crit GEO1 GEO2`: the nodes of both are merged with each other.
+    let m = req_geo(a)?;
+    // `ELIM crit GEO1 GEO2`: nodes of the first merge with nodes of the
+    // others, never among themselves.
+    let mut others: Option<Mesh> = None;
     while let Some(g) = opt_geo(a) {
-        m = m.union(&g);
+        others = Some(match others {
+            Some(o) => o.union(&g),
+            None => g,
+        });
     }
     let tol = tol.or_else(|| a.opt_num()).unwrap_or(1e-6);
-    let (merged, map) = mg::elim(&it.nodes, &m, tol)?;
+    let (merged, map) = match &others {
+        Some(g2) => mg::elim_between(&it.nodes, &m, g2, tol)?,
+        None => mg::elim(&it.nodes, &m, tol)?,
+    };
     if !map.is_empty() {
         let mut seen = std::collections::HashSet::new();
         for f in it.store.frames.iter_mut() {
@@ -245,8 +253,12 @@ fn syme(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         objs.push(v);
     }
     objs.reverse();
-    if objs.is_empty() && a.peek_right().is_some_and(|v| geo_or_field(&v)) {
-        objs.extend(a.right_any());
+    // Written after SYME, several objects are imaged together too
+    // (`t1 t2 = syme l1 l2 'DROIT' p q`).
+    if objs.is_empty() {
+        while a.peek_right().is_some_and(|v| geo_or_field(&v)) {
+            objs.extend(a.right_any());
+        }
     }
     let mirror = match a.req_keyword(&["DROIT", "PLAN", "POINT"])? {
         "DROIT" => {

@@ -50,6 +50,7 @@ mod integrate;
 mod io;
 mod joint_mesh;
 mod kp;
+mod level_set;
 mod limits;
 mod lists;
 mod lists_search;
@@ -223,6 +224,7 @@ impl Registry {
             superele::OPS,
             cmct::OPS,
             fracture::OPS,
+            level_set::OPS,
             export::OPS,
             evol::OPS,
             curves::OPS,

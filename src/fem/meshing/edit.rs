@@ -92,6 +92,67 @@ pub fn elim(nodes: &Nodes, mesh: &Mesh, tol: f64) -> Result<(Mesh, NodeMap), Mes
     Ok((dedupe(&map.apply(mesh)), map))
 }
 
+/// `ELIM crit GEO1 GEO2`: merge only nodes of `g1` with nodes of `g2`
+/// lying within `tol` (elim.notice: duplicates inside one object stay).
+/// Merged groups keep their lowest-numbered node, as [`elim`] does.
+pub fn elim_between(nodes: &Nodes, g1: &Mesh, g2: &Mesh, tol: f64) -> Result<(Mesh, NodeMap), MeshError> {
+    check_nodes("ELIM", nodes, g1)?;
+    check_nodes("ELIM", nodes, g2)?;
+    if !(tol >= 0.0 && tol.is_finite()) {
+        return fail("ELIM", format!("the tolerance must be a non-negative number (got {tol})"));
+    }
+    let h = if tol > 0.0 { tol } else { 1.0 };
+    let cell = |x: V3| -> [i64; 3] {
+        std::array::from_fn(|k| if tol > 0.0 { (x[k] / h).floor() as i64 } else { (x[k] + 0.0).to_bits() as i64 })
+    };
+    let mut grid: HashMap<[i64; 3], Vec<usize>> = HashMap::new();
+    for n in g1.node_list() {
+        grid.entry(cell(nodes.get(n))).or_default().push(n);
+    }
+    // Union-find over the cross pairs: a node of g2 near two of g1 joins
+    // them into one point.
+    let mut parent: HashMap<usize, usize> = HashMap::new();
+    fn root(parent: &HashMap<usize, usize>, mut n: usize) -> usize {
+        while let Some(&p) = parent.get(&n) {
+            if p == n {
+                break;
+            }
+            n = p;
+        }
+        n
+    }
+    let r = if tol > 0.0 { 1 } else { 0 };
+    for n in g2.node_list() {
+        let x = nodes.get(n);
+        let c = cell(x);
+        for dx in -r..=r {
+            for dy in -r..=r {
+                for dz in -r..=r {
+                    let key = [c[0].saturating_add(dx), c[1].saturating_add(dy), c[2].saturating_add(dz)];
+                    for &m in grid.get(&key).into_iter().flatten() {
+                        if m != n && dist(nodes.get(m), x) <= tol {
+                            let (a, b) = (root(&parent, m), root(&parent, n));
+                            if a != b {
+                                let (lo, hi) = (a.min(b), a.max(b));
+                                parent.insert(hi, lo);
+                                parent.entry(lo).or_insert(lo);
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    let mut map = NodeMap::default();
+    for &n in parent.keys() {
+        let m = root(&parent, n);
+        if m != n {
+            map.map.insert(n, m);
+        }
+    }
+    Ok((dedupe(&map.apply(&g1.union(g2))), map))
+}
+
 /// Sorted node set of an element: the identity used by ELIM, INTE and DIFF
 /// (the same nodes in another order are the same element).
 fn elem_key(ty: ElemType, e: &[usize]) -> (ElemType, Vec<usize>) {

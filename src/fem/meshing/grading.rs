@@ -75,7 +75,11 @@ pub fn fractions(
     if !length.is_finite() {
         return fail(op, "the length to divide overflows (the end points are too far apart)");
     }
-    if length <= 0.0 {
+    // Two distinct nodes at one place with a given count make degenerate
+    // elements (G_THETA measures such a line to see whether the crack lips
+    // coincide); only a division by density needs a length.
+    let counted = spacing.n.is_some_and(|n| n > 0) && spacing.dini.is_none() && spacing.dfin.is_none();
+    if length <= 0.0 && !counted {
         return fail(op, "the length to divide is zero (the end points coincide)");
     }
     if let Some(n) = spacing.n {

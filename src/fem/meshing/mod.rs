@@ -71,8 +71,8 @@ mod tests;
 
 pub use dall::dall;
 pub use edit::{
-    change_to_linear, change_to_poi1, change_to_quadratic, change_to_seg2, change_to_triangles, diff, elim, inte, inve,
-    manu, rotate_copy, rotate_point, translate_copy, NodeMap,
+    change_to_linear, change_to_poi1, change_to_quadratic, change_to_seg2, change_to_triangles, diff, elim,
+    elim_between, inte, inve, manu, rotate_copy, rotate_point, translate_copy, NodeMap,
 };
 pub use extract::{cont, cote, elem_appui, elem_numbers, elem_type, face};
 pub use grading::Spacing;
