@@ -66,6 +66,7 @@ mod mesh_isov;
 mod mesh_lines;
 mod mesh_moin_geo;
 mod mesh_move;
+mod move_models;
 mod mesh_partition;
 mod mesh_query;
 mod mesh_repair;
