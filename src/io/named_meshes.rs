@@ -54,11 +54,16 @@ pub fn read(text: &str) -> Result<NamedMeshes, IoError> {
     }
     let mut next = |what: &str| lines.next().ok_or_else(|| IoError(format!("the file ends before {what}")));
     let (n, l) = next("the node count")?;
-    let count: usize = l.strip_prefix("NODES ").and_then(|c| c.trim().parse().ok()).ok_or_else(|| bad(n, "expected NODES count"))?;
+    let count: usize =
+        l.strip_prefix("NODES ").and_then(|c| c.trim().parse().ok()).ok_or_else(|| bad(n, "expected NODES count"))?;
     let mut out = NamedMeshes::default();
     for _ in 0..count {
         let (n, l) = next("the last node")?;
-        let v: Vec<f64> = l.split_whitespace().map(str::parse).collect::<Result<_, _>>().map_err(|_| bad(n, "a node is four numbers"))?;
+        let v: Vec<f64> = l
+            .split_whitespace()
+            .map(str::parse)
+            .collect::<Result<_, _>>()
+            .map_err(|_| bad(n, "a node is four numbers"))?;
         match v.as_slice() {
             [x, y, z, d] if v.iter().all(|c| c.is_finite()) => out.nodes.push(([*x, *y, *z], *d)),
             _ => return Err(bad(n, "a node is four finite numbers (x y z density)")),
@@ -67,7 +72,9 @@ pub fn read(text: &str) -> Result<NamedMeshes, IoError> {
     while let Some((n, l)) = lines.next() {
         let w: Vec<&str> = l.split_whitespace().collect();
         let (name, nparts) = match w.as_slice() {
-            ["MESH", name, k] => (name.to_string(), k.parse::<usize>().map_err(|_| bad(n, "expected MESH name parts"))?),
+            ["MESH", name, k] => {
+                (name.to_string(), k.parse::<usize>().map_err(|_| bad(n, "expected MESH name parts"))?)
+            }
             _ => return Err(bad(n, "expected MESH name parts")),
         };
         let mut mesh = Mesh::default();

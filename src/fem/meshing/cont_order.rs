@@ -66,7 +66,8 @@ pub fn outer_first(cont: &Mesh, nodes: &Nodes) -> Mesh {
     if order.iter().enumerate().all(|(k, &j)| k == j) {
         return cont.clone();
     }
-    let conn: Vec<usize> = order.iter().flat_map(|&c| chains[c].iter().flat_map(|&i| elems[i].iter().copied())).collect();
+    let conn: Vec<usize> =
+        order.iter().flat_map(|&c| chains[c].iter().flat_map(|&i| elems[i].iter().copied())).collect();
     let mut out = cont.clone();
     if let Some(slot) = out.parts.iter_mut().find(|p| !p.is_empty()) {
         slot.conn = conn;

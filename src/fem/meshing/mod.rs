@@ -20,8 +20,8 @@
 
 pub mod arcs;
 pub mod between;
-pub mod contour;
 pub mod cont_order;
+pub mod contour;
 pub mod cote_swept;
 pub mod couture;
 pub mod dall;
