@@ -143,9 +143,9 @@ mod tests {
         let mut comps = vec!["SMXX".to_string(), "EQEQ".to_string()];
         let mut values = vec![vec![vec![3.0, 7.0]]];
         turn_tensor(&mut comps, &mut values, "SM", &r);
-        assert_eq!(comps, ["SMXX", "EQEQ", "SMYY", "SMXY"]);
+        // sin 90° cos 90° is rounding noise: SMXY is not added.
+        assert_eq!(comps, ["SMXX", "EQEQ", "SMYY"]);
         let v = &values[0][0];
-        assert!(v[0].abs() < 1e-12 && (v[1] - 7.0).abs() < 1e-12);
-        assert!((v[2] - 3.0).abs() < 1e-12 && v[3].abs() < 1e-12);
+        assert!(v[0].abs() < 1e-12 && (v[1] - 7.0).abs() < 1e-12 && (v[2] - 3.0).abs() < 1e-12);
     }
 }
