@@ -221,7 +221,14 @@ fn sort_mesh_then_lire_gives_back_named_meshes() {
     );
     assert!(out.contains("relu"), "{}", out);
     let text = std::fs::read_to_string(dir.join("maillage.txt")).unwrap();
-    assert!(text.contains("MESH GRILLE 1") && text.contains("MESH UN 1") && !text.contains("BAS") && !text.contains("AUTRE"), "{}", text);
+    assert!(
+        text.contains("MESH GRILLE 1")
+            && text.contains("MESH UN 1")
+            && !text.contains("BAS")
+            && !text.contains("AUTRE"),
+        "{}",
+        text
+    );
     let e = run(&dir, "opti lect 'maillage.txt' ; lire truc ;").unwrap_err();
     assert!(e.contains("holds no mesh named TRUC"), "{}", e);
 }
