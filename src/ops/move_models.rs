@@ -56,8 +56,8 @@ fn linear_part(t: &Motion) -> Result<[[f64; 3]; 3], String> {
         let mut e = [0.0; 3];
         e[k] = 1.0;
         let p = t.image(e).map_err(|e| e.to_string())?;
-        for i in 0..3 {
-            r[i][k] = p[i] - o[i];
+        for (i, row) in r.iter_mut().enumerate() {
+            row[k] = p[i] - o[i];
         }
     }
     Ok(r)
@@ -70,9 +70,9 @@ const SLOTS: [(&str, usize, usize); 6] =
 /// R T Rᵀ.
 fn rotated(r: &[[f64; 3]; 3], t: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {
     let mut out = [[0.0; 3]; 3];
-    for i in 0..3 {
-        for j in 0..3 {
-            out[i][j] = (0..3).map(|a| (0..3).map(|b| r[i][a] * t[a][b] * r[j][b]).sum::<f64>()).sum();
+    for (i, row) in out.iter_mut().enumerate() {
+        for (j, v) in row.iter_mut().enumerate() {
+            *v = (0..3).map(|a| (0..3).map(|b| r[i][a] * t[a][b] * r[j][b]).sum::<f64>()).sum();
         }
     }
     out
@@ -102,9 +102,9 @@ fn turn_tensor(comps: &mut Vec<String>, values: &mut [Vec<Vec<f64>>], pre: &str,
         }
     }
     let mut slot: Vec<Option<usize>> = present.clone();
-    for k in 0..6 {
+    for (k, name) in names.iter().enumerate() {
         if slot[k].is_none() && reached[k] {
-            comps.push(names[k].clone());
+            comps.push(name.clone());
             slot[k] = Some(comps.len() - 1);
             for elem in values.iter_mut() {
                 for pt in elem.iter_mut() {

@@ -33,9 +33,9 @@ pub fn outer_first(cont: &Mesh, nodes: &Nodes) -> Mesh {
             for &i in c {
                 for &n in elems[i] {
                     let x = nodes.get(n);
-                    for k in 0..3 {
-                        b[0][k] = b[0][k].min(x[k]);
-                        b[1][k] = b[1][k].max(x[k]);
+                    for (k, &xk) in x.iter().enumerate() {
+                        b[0][k] = b[0][k].min(xk);
+                        b[1][k] = b[1][k].max(xk);
                     }
                 }
             }

@@ -175,6 +175,11 @@ fn sort(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 fn lire(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     const KINDS: [&str; 6] = ["GMSH", "STL", "CSV", "AVS", "NAS", "PROC"];
     let Some(kind) = a.keyword(&KINDS) else {
+        // A quoted word is a format gibi does not read ('MED', 'FEM'…);
+        // the directive's mesh name is written bare.
+        if a.next_name_span().is_none() && matches!(a.peek_right(), Some(Value::Mot(_))) {
+            a.req_keyword(&KINDS)?;
+        }
         return sort_mesh::lire(it, a);
     };
     match kind {
