@@ -191,3 +191,44 @@ fn sort_chai_writes_lines() {
     let e = run(&dir, "opti sort 'out.txt' ; sort 'CHAI' (prog 1.) ;").unwrap_err();
     assert!(e.contains("writes words and numbers, not a LISTREEL"), "{}", e);
 }
+
+#[test]
+fn sort_mesh_then_lire_gives_back_named_meshes() {
+    let dir = scratch("sort_mesh");
+    // A 2 x 1 grid of QUA4 (6 nodes, area 2) and a named mesh of one of
+    // its elements; after OUBL both come back from the file under their
+    // names, on new nodes shared as before. The bottom line (SEG2, not
+    // elements of the grid) and AUTRE are not written.
+    let out = ok(
+        &dir,
+        "opti dime 2 elem qua4 ;
+         bas = (0. 0.) d 2 (2. 0.) ;
+         grille = bas tran 1 (0. 1.) ;
+         un = grille elem 1 ;
+         autre = (5. 5.) d 1 (6. 5.) ;
+         opti sort 'maillage.txt' ;
+         sort grille ;
+         g0 = grille ; oubl grille ; oubl un ;
+         opti lect 'maillage.txt' ;
+         lire grille ;
+         si ((nbno grille) neg 6) ; erre 5 ; finsi ;
+         si ((nbel grille) neg 2) ; erre 5 ; finsi ;
+         si ((abs ((mesu grille) - 2.)) > 1.e-12) ; erre 5 ; finsi ;
+         si ((nbel un) neg 1) ; erre 5 ; finsi ;
+         si ((nbno (grille et un)) neg 6) ; erre 5 ; finsi ;
+         si ((nbno (grille et g0)) neg 12) ; erre 5 ; finsi ;
+         mess 'relu' ;",
+    );
+    assert!(out.contains("relu"), "{}", out);
+    let text = std::fs::read_to_string(dir.join("maillage.txt")).unwrap();
+    assert!(
+        text.contains("MESH GRILLE 1")
+            && text.contains("MESH UN 1")
+            && !text.contains("BAS")
+            && !text.contains("AUTRE"),
+        "{}",
+        text
+    );
+    let e = run(&dir, "opti lect 'maillage.txt' ; lire truc ;").unwrap_err();
+    assert!(e.contains("holds no mesh named TRUC"), "{}", e);
+}

@@ -91,13 +91,17 @@ pub fn stress(mode: Mode, x: &[[f64; 3]], m: &Material, u: &[f64]) -> Result<Gau
     Ok(GaussField { comps: vec!["EFFX"], values: vec![vec![n]; 2] })
 }
 
-/// Nodal forces of the normal force EFFX at both ends: `-N e` and `+N e`.
+/// Nodal forces of the normal force EFFX: `-N e` and `+N e`, N being the
+/// mean of the two points' values. The strain-displacement row of a bar
+/// is constant along it, so ∫Bᵀσ weighs both points alike (L/2 each): a
+/// field set at one point only (MANU 'CHAM') loads both ends equally, in
+/// equilibrium, as Cast3M's BSIG does.
 pub fn internal_forces(mode: Mode, x: &[[f64; 3]], sig: &GaussField) -> Result<Vec<f64>, FemError> {
     let (nc, e, _) = axis(mode, x)?;
     if sig.values.len() != 2 {
         return Err(FemError::WrongPointCount { elem: "BARR", expected: 2, got: sig.values.len() });
     }
     let n = |k: usize| sig.get("EFFX", k).ok_or(FemError::MissingComponent { comp: "EFFX", elem: "BARR" });
-    let (n0, n1) = (n(0)?, n(1)?);
-    Ok((0..nc).map(|i| -n0 * e[i]).chain((0..nc).map(|i| n1 * e[i])).collect())
+    let mean = 0.5 * (n(0)? + n(1)?);
+    Ok((0..nc).map(|i| -mean * e[i]).chain((0..nc).map(|i| mean * e[i])).collect())
 }

@@ -19,6 +19,7 @@ pub mod avs;
 pub mod csv_table;
 pub mod gmsh;
 pub mod mtx;
+pub mod named_meshes;
 pub mod nastran;
 pub mod plot;
 pub mod stl;

@@ -9,6 +9,7 @@ use crate::eval::Interp;
 use crate::fem::mesh::Mesh;
 use crate::fem::meshing::deduce::node_map;
 use crate::fem::meshing::generatrix::generatrix;
+use crate::fem::meshing::motion::Motion;
 use crate::value::{Chpoint, Key, Table, Value};
 use std::cell::RefCell;
 use std::collections::HashMap;
@@ -24,8 +25,8 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "DEDU",
-        signature: "OBJ1 .. OBJN DEDU 'TRAN' GEO1 GEO2 | DEDU 'TRAN' OBJ1 .. OBJN GEO1 GEO2",
-        doc: "Each object (POINT, MAILLAGE, CHPOINT, or a TABLE of them) carried from GEO1 onto GEO2, a mesh of the same topology: node k of element e of GEO1 becomes node k of element e of GEO2. Every node of the objects must be a node of GEO1.",
+        signature: "OBJ1 .. OBJN DEDU 'TRAN' GEO1 GEO2 | DEDU 'TRAN' OBJ1 .. OBJN GEO1 GEO2 | OBJ1 .. OBJN DEDU angle P1 (P2) 'ROTA' GEO1 GEO2",
+        doc: "Each object (POINT, MAILLAGE, CHPOINT, MCHAML, MMODEL, or a TABLE of them) carried from GEO1 onto GEO2, a mesh of the same topology: node k of element e of GEO1 becomes node k of element e of GEO2. Every node of the objects must be a node of GEO1. With 'ROTA' (GEO2 being GEO1 turned by angle degrees about P1, about the axis P1 P2 in 3D; 'ROTA' may also come first) the vector components of nodal fields (UX UY UZ, FX…, RX…, MX…) and the stress and strain tensors of element fields are turned too.",
         example: "u2 = dedu 'TRAN' (coor 1 bas) bas (bas plus (0. 1.)) ;",
         f: dedu,
     },
@@ -43,11 +44,25 @@ fn dedu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         objects.push(v);
     }
     objects.reverse();
-    if a.keyword(&["TRAN"]).is_none() {
-        return Err(a.err(
-            "gibi implements DEDU 'TRAN' only (the forms that move mesh nodes, 'ROTA' and 'ADAP' are not implemented)",
-        ));
-    }
+    // 'TRAN', or a rotation: `angle P1 (P2) 'ROTA'` or `'ROTA' angle P1 (P2)`
+    // (P2, the axis, in 3D).
+    let turn = if a.keyword(&["TRAN"]).is_some() {
+        None
+    } else {
+        let rota_first = a.keyword(&["ROTA"]).is_some();
+        let angle_deg = a.opt_num().ok_or_else(|| {
+            a.err("gibi implements DEDU 'TRAN' and 'ROTA' (the forms that move mesh nodes and 'ADAP' are not implemented)")
+        })?;
+        let centre = super::mesh::vector(it, a).ok_or_else(|| a.missing("POINT (the centre)"))?;
+        let axis_end = match it.opts.dime >= 3 {
+            true => Some(super::mesh::vector(it, a).ok_or_else(|| a.missing("POINT (the axis)"))?),
+            false => None,
+        };
+        if !rota_first {
+            a.req_keyword(&["ROTA"])?;
+        }
+        Some(Motion::Rotate { angle_deg, centre, axis_end })
+    };
     objects.extend(a.rest());
     if objects.len() < 3 {
         return Err(a.missing("the objects to carry, then the meshes GEO1 and GEO2"));
@@ -63,17 +78,18 @@ fn dedu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         for (k, v) in t.borrow().iter() {
             let w = match (k, v) {
                 (Key::Mot(s), _) if s == "SOUSTYPE" => v.clone(),
-                _ => carry(a, &map, v)?,
+                _ => carry(a, &map, v, turn.as_ref())?,
             };
             out.set(k.clone(), w);
         }
         return Ok(vec![Value::Table(Rc::new(RefCell::new(out)))]);
     }
-    objects.iter().map(|v| carry(a, &map, v)).collect()
+    objects.iter().map(|v| carry(a, &map, v, turn.as_ref())).collect()
 }
 
-/// One object on GEO1 as the same object on GEO2.
-fn carry(a: &Args, map: &HashMap<usize, usize>, v: &Value) -> Result<Value> {
+/// One object on GEO1 as the same object on GEO2; with a rotation, the
+/// vector and tensor components of fields turned by it (dedu.notice).
+fn carry(a: &Args, map: &HashMap<usize, usize>, v: &Value, turn: Option<&Motion>) -> Result<Value> {
     let image = |n: usize| {
         map.get(&n)
             .copied()
@@ -91,15 +107,33 @@ fn carry(a: &Args, map: &HashMap<usize, usize>, v: &Value) -> Result<Value> {
             Value::Mesh(Rc::new(out))
         }
         Value::Chpo(c) => {
+            let turned = match turn {
+                Some(t) => Rc::new(super::mesh_move::turn_components(c, t).map_err(|e| a.err(e))?),
+                None => c.clone(),
+            };
+            let c = &turned;
             let mut entries = Vec::new();
             for (n, comp, x) in c.entries() {
                 entries.push((image(n)?, comp, x));
             }
             Value::Chpo(Rc::new(Chpoint::from_entries(c.nature, entries)))
         }
+        Value::Model(_) | Value::Mchaml(_) => {
+            let zones = super::move_models::zone_meshes(v).unwrap_or_default();
+            let mut moved = Vec::with_capacity(zones.len());
+            for mut m in zones {
+                for p in &mut m.parts {
+                    for n in &mut p.conn {
+                        *n = image(*n)?;
+                    }
+                }
+                moved.push(m);
+            }
+            super::move_models::moved(v, moved, turn).map_err(|e| a.err(e))?
+        }
         _ => {
             return Err(a.err(format!(
-                "DEDU 'TRAN' carries POINT, MAILLAGE, CHPOINT or a TABLE of them, not a {}",
+                "DEDU carries POINT, MAILLAGE, CHPOINT, MCHAML, MMODEL or a TABLE of them, not a {}",
                 v.ty().name()
             )))
         }

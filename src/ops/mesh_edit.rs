@@ -107,7 +107,7 @@ fn enve(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     Ok(mesh_val(mg::mesh_of(parts)))
 }
 
-fn cont(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+fn cont(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     use crate::fem::meshing::extract::ContEdges;
     let noid = a.keyword(&["NOID"]).is_some();
     let which = match a.keyword(&["EXTE", "INTE", "TOUT"]) {
@@ -118,7 +118,9 @@ fn cont(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let noid = noid || a.keyword(&["NOID"]).is_some();
     let m = a.req::<Rc<Mesh>>()?;
     let noid = noid || a.keyword(&["NOID"]).is_some();
-    Ok(mesh_val(mg::extract::cont_with(&m, which, noid)?))
+    let outer = matches!(which, ContEdges::Exterior);
+    let c = mg::extract::cont_with(&m, which, noid)?;
+    Ok(mesh_val(if outer { mg::cont_order::outer_first(&c, &it.nodes) } else { c }))
 }
 
 /// ELIM works in place in Cast3M: every object holding a merged node sees
@@ -215,7 +217,7 @@ fn translate(it: &mut Interp, a: &mut Args, sign: f64) -> Result<Vec<Value>> {
         Some(Value::Point(p)) if !objs.is_empty() => it.nodes.get(p).map(|c| c * sign),
         _ => return Err(a.missing("a vector (POINT)")),
     };
-    if objs.len() > 1 || matches!(objs[0], Value::Chpo(_)) {
+    if objs.len() > 1 || matches!(objs[0], Value::Chpo(_) | Value::Model(_) | Value::Mchaml(_)) {
         return super::mesh_move::copies(it, a, &objs, mg::motion::Motion::Translate(v));
     }
     Ok(match objs.remove(0) {
@@ -306,7 +308,7 @@ fn syme(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 fn tour(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     // The object is the operand before TOUR (`s2 = s1 tour 90. p`; the
     // first of several), else the first value after it.
-    let first = a.opt_with(|v| matches!(v, Value::Point(_) | Value::Mesh(_) | Value::Chpo(_)).then(|| v.clone()));
+    let first = a.opt_with(|v| super::mesh_move::movable(v).then(|| v.clone()));
     let obj = match first.or_else(|| a.left_value()) {
         Some(v) => v,
         None => a.right_any().ok_or_else(|| a.missing("POINT or MAILLAGE"))?,
@@ -318,7 +320,7 @@ fn tour(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let (mut objs, tail) = super::mesh_move::gather(a, obj, n, "POINT (the centre, and the axis in 3D)")?;
     let centre = it.nodes.get(tail[0]);
     let axis_end = tail.get(1).map(|&p| it.nodes.get(p));
-    if objs.len() > 1 || matches!(objs[0], Value::Chpo(_)) {
+    if objs.len() > 1 || matches!(objs[0], Value::Chpo(_) | Value::Model(_) | Value::Mchaml(_)) {
         let turn = mg::motion::Motion::Rotate { angle_deg: angle, centre, axis_end };
         return super::mesh_move::copies(it, a, &objs, turn);
     }

@@ -146,9 +146,7 @@ fn read_turn(it: &Interp, a: &mut Args) -> Result<Motion> {
 /// axis). Returns the objects and those points.
 pub(crate) fn gather(a: &mut Args, first: Value, tail: usize, what: &str) -> Result<(Vec<Value>, Vec<usize>)> {
     let mut all = vec![first];
-    while let Some(v) =
-        a.opt_with(|v| matches!(v, Value::Point(_) | Value::Mesh(_) | Value::Chpo(_)).then(|| v.clone()))
-    {
+    while let Some(v) = a.opt_with(|v| movable(v).then(|| v.clone())) {
         all.push(v);
     }
     let mut pts = Vec::with_capacity(tail);
@@ -168,19 +166,38 @@ pub(crate) fn gather(a: &mut Args, first: Value, tail: usize, what: &str) -> Res
     Ok((all, pts))
 }
 
+/// What PLUS, MOIN and TOUR move: geometry, nodal and element fields,
+/// models.
+pub(crate) fn movable(v: &Value) -> bool {
+    matches!(v, Value::Point(_) | Value::Mesh(_) | Value::Chpo(_) | Value::Model(_) | Value::Mchaml(_))
+}
+
 /// The copies of `objs` moved together; a POINT alone becomes a new point,
 /// a CHPOINT is carried to the images of its nodes (its vector components
-/// turned with a rotation, tour.notice).
+/// turned with a rotation, tour.notice); models and element fields move
+/// zone by zone (see [`super::move_models`]).
 pub(crate) fn copies(it: &mut Interp, a: &Args, objs: &[Value], motion: Motion) -> Result<Vec<Value>> {
-    let meshes = supports(a, objs)?;
-    let refs: Vec<&Mesh> = meshes.iter().collect();
+    let mut groups: Vec<Vec<Mesh>> = Vec::with_capacity(objs.len());
+    for o in objs {
+        groups.push(match super::move_models::zone_meshes(o) {
+            Some(z) => z,
+            None => supports(a, std::slice::from_ref(o))?,
+        });
+    }
+    let refs: Vec<&Mesh> = groups.iter().flatten().collect();
     let turn = match &motion {
         Motion::Rotate { .. } => Some(motion),
         _ => None,
     };
-    let out = copy_together(&mut it.nodes, &refs, motion, it.opts.dime.max(2))?;
+    let mut out = copy_together(&mut it.nodes, &refs, motion, it.opts.dime.max(2))?.into_iter();
     let mut vals = Vec::with_capacity(objs.len());
-    for (o, m) in objs.iter().zip(out) {
+    for (o, g) in objs.iter().zip(&groups) {
+        let moved: Vec<Mesh> = out.by_ref().take(g.len()).collect();
+        if matches!(o, Value::Model(_) | Value::Mchaml(_)) {
+            vals.push(super::move_models::moved(o, moved, turn.as_ref()).map_err(|e| a.err(e))?);
+            continue;
+        }
+        let m = moved.into_iter().next().unwrap_or_default();
         vals.push(match o {
             Value::Chpo(c) => {
                 let turned = match &turn {
@@ -223,7 +240,7 @@ pub(crate) fn carried(c: &Chpoint, image: &Mesh) -> Chpoint {
 
 /// The vector components (UX UY UZ, FX FY FZ, RX RY RZ, MX MY MZ) turned
 /// by the rotation's linear part; the others unchanged.
-fn turn_components(c: &Chpoint, t: &Motion) -> std::result::Result<Chpoint, String> {
+pub(crate) fn turn_components(c: &Chpoint, t: &Motion) -> std::result::Result<Chpoint, String> {
     let o = [0.0; 3];
     let o2 = t.image(o).map_err(|e| e.to_string())?;
     let lin = |v: [f64; 3]| -> std::result::Result<[f64; 3], String> {

@@ -79,6 +79,7 @@ mod mesh_verify;
 mod model;
 mod model_mixed;
 mod model_zones;
+mod move_models;
 mod nodal_field;
 mod noise;
 mod nomc_mchaml;

@@ -20,6 +20,7 @@
 
 pub mod arcs;
 pub mod between;
+pub mod cont_order;
 pub mod contour;
 pub mod cote_swept;
 pub mod couture;

@@ -21,6 +21,7 @@ mod read_csv;
 mod read_gmsh;
 mod read_proc;
 mod sort_matrix;
+mod sort_mesh;
 mod sort_pasapas;
 mod sort_text;
 mod sort_vtk;
@@ -37,7 +38,7 @@ use std::path::{Path, PathBuf};
 pub(crate) const OPS: &[OpDef] = &[
     OpDef {
         name: "SORT",
-        signature: "SORT 'VTK' MAILLAGE (CHPOINT|MCHAML ('NAME'))… ('CONTACT' RIGIDITE SOLUTION (LIMITS)) ('TEMPS' t) | SORT 'VTK' TABLE_PASAPAS (MAILLAGE) | SORT 'MAT' RIGIDITE 'file.mtx' | SORT 'STL' MAILLAGE | SORT 'AVS' (MAILLAGE) (CHPOINT) (MCHAML) ('SUIT') ('TEMP' t) | SORT 'NAS' MAILLAGE | SORT 'CHAI' OBJ…",
+        signature: "SORT MAILLAGE ('NOOP') | SORT 'VTK' MAILLAGE (CHPOINT|MCHAML ('NAME'))… ('CONTACT' RIGIDITE SOLUTION (LIMITS)) ('TEMPS' t) | SORT 'VTK' TABLE_PASAPAS (MAILLAGE) | SORT 'MAT' RIGIDITE 'file.mtx' | SORT 'STL' MAILLAGE | SORT 'AVS' (MAILLAGE) (CHPOINT) (MCHAML) ('SUIT') ('TEMP' t) | SORT 'NAS' MAILLAGE | SORT 'CHAI' OBJ…",
         doc: "Write files for other tools. 'VTK': a ParaView .vtu named by OPTI SORT (default gibi.vtu) with \
               nodal fields (UX UY UZ → one 3-component vector, also in 2D) and element fields (MCHAML, averaged \
               per element); with 'TEMPS' t each call writes name_NNNN.vtu and rewrites name.pvd with every time \
@@ -52,13 +53,14 @@ pub(crate) const OPS: &[OpDef] = &[
               and the time; 'SUIT' appends a structure to the file this run wrote. 'NAS': Nastran bulk data \
               (OPTI SORT name, .nas added): GRID (large fields) and element cards, one property id per sub-mesh. 'CHAI': the objects (words, numbers, texts) as one line \
               of text, written as MESS shows them, to the OPTI SORT file (kept as named); later calls append \
-              while OPTI SORT names the same file.",
+              while OPTI SORT names the same file. With a MAILLAGE and no keyword: the mesh under its variable name, with every \
+              named mesh made of its elements, in gibi's own text format (OPTI SORT name, else fort.7), for LIRE.",
         example: "opti sort 'beam' ; sort 'VTK' s u 'DEPL' sig 'SIGMA' 'TEMPS' 1. ;",
         f: sort,
     },
     OpDef {
         name: "LIRE",
-        signature: "LIRE 'GMSH' 'file.msh' | LIRE 'STL' 'file.stl' | LIRE 'CSV' 'file' ('DEBU' line) ('SEPA' char) | LIRE 'AVS' | LIRE 'NAS' 'file' | LIRE 'PROC' 'file' ('NAME')",
+        signature: "LIRE (GEO1) | LIRE 'GMSH' 'file.msh' | LIRE 'STL' 'file.stl' | LIRE 'CSV' 'file' ('DEBU' line) ('SEPA' char) | LIRE 'AVS' | LIRE 'NAS' 'file' | LIRE 'PROC' 'file' ('NAME')",
         doc: "Read a Gmsh mesh (formats 2.2 and 4.1, ASCII; SEG2/3, TRI3/6, QUA4/8, TET4, PRI6, CUB8, POI1). \
               Returns a TABLE of MAILLAGE keyed by physical group name (by tag when unnamed), plus 'TOUT' for \
               every element. New nodes get coordinates in the current dimension (a non-zero z in DIME 2 is \
@@ -72,7 +74,8 @@ pub(crate) const OPS: &[OpDef] = &[
               MOMENTS, TEMPERATURES (a CHPOINT per set), RBE2 (per element a TABLE whose MAILLAGE has the \
               independent point first), SYSTEMES (empty: coordinate systems are not read). 'PROC' (a directive): \
               defines the procedures of a file in the `$$$$ NAME` format (all, or only NAME), the DEBPROCs of a \
-              plain file, or, with none, the file's instructions as the procedure NAME.",
+              plain file, or, with none, the file's instructions as the procedure NAME. With no keyword (a directive): the meshes \
+              SORT MAILLAGE wrote to the OPTI LECT file, each under its name (GEO1: the file must hold it).",
         example: "t = lire 'GMSH' 'plate.msh' ; s = t . 'PLATE' ; c = lire 'CSV' 'data.csv' 'DEBU' 2 'SEPA' ',' ;",
         f: lire,
     },
@@ -155,7 +158,11 @@ fn out_path(it: &Interp, name: &str) -> Result<PathBuf> {
 }
 
 fn sort(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    match a.req_keyword(&["VTK", "MAT", "STL", "AVS", "NAS", "CHAI"])? {
+    const KINDS: [&str; 6] = ["VTK", "MAT", "STL", "AVS", "NAS", "CHAI"];
+    if matches!(a.peek_right(), Some(Value::Mesh(_))) {
+        return sort_mesh::sort(it, a);
+    }
+    match a.req_keyword(&KINDS)? {
         "VTK" => sort_vtk::sort_vtk(it, a),
         "CHAI" => sort_text::sort(it, a),
         "NAS" => nastran::sort(it, a),
@@ -166,7 +173,16 @@ fn sort(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 fn lire(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    match a.req_keyword(&["GMSH", "STL", "CSV", "AVS", "NAS", "PROC"])? {
+    const KINDS: [&str; 6] = ["GMSH", "STL", "CSV", "AVS", "NAS", "PROC"];
+    let Some(kind) = a.keyword(&KINDS) else {
+        // A quoted word is a format gibi does not read ('MED', 'FEM'…);
+        // the directive's mesh name is written bare.
+        if a.next_name_span().is_none() && matches!(a.peek_right(), Some(Value::Mot(_))) {
+            a.req_keyword(&KINDS)?;
+        }
+        return sort_mesh::lire(it, a);
+    };
+    match kind {
         "GMSH" => read_gmsh::lire(it, a),
         "PROC" => read_proc::lire(it, a),
         "NAS" => nastran::lire(it, a),
