@@ -21,6 +21,6 @@ pub(crate) fn volu_closed(it: &mut Interp, a: &mut Args, surf: &Mesh) -> Result<
     } else {
         surf.clone()
     };
-    let m = mg::tet_fill::volu_closed("VOLU", &it.nodes, &tri)?;
+    let m = mg::tet_fill::volu_closed("VOLU", &mut it.nodes, &tri)?;
     Ok(vec![Value::Mesh(Rc::new(m))])
 }

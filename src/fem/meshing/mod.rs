@@ -58,6 +58,7 @@ pub mod symmetry;
 pub mod tet_delaunay;
 pub mod tet_fill;
 pub mod tet_recover;
+pub mod tet_steiner;
 pub mod tetra;
 pub mod transform;
 pub mod tri6_split;
