@@ -57,6 +57,7 @@ pub mod sweep;
 pub mod symmetry;
 pub mod tet_delaunay;
 pub mod tet_fill;
+pub mod tet_pyramids;
 pub mod tet_recover;
 pub mod tet_steiner;
 pub mod tetra;
