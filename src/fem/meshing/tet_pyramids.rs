@@ -79,15 +79,18 @@ pub fn volu_with_pyramids(op: &'static str, nodes: &mut Nodes, surf: &Mesh) -> R
     }
     let start = nodes.len();
     let mut last = None;
-    for halving in 0..4 {
-        let f = 0.5f64.powi(halving);
+    // Varied heights first (see below), then equal ones, each lower and
+    // lower.
+    for attempt in 0..6 {
+        let f = 0.5f64.powi(attempt / 2);
+        let vary = if attempt % 2 == 0 { 0.15 } else { 0.0 };
         let mut apex = Vec::with_capacity(quads.len());
         for (k, q) in quads.iter().enumerate() {
             let (g, dir, h) = tops[k];
             // Heights differing a little from one quadrangle to the next:
             // apexes over a plane face are then not coplanar, where the
             // tetrahedra between them could be flat.
-            let f = f * (0.85 + 0.15 * ((k as f64 * 0.618_033_988_749_895) % 1.0));
+            let f = f * (1.0 - vary + vary * ((k as f64 * 0.618_033_988_749_895) % 1.0));
             let d = q.iter().map(|&n| nodes.density[n]).sum::<f64>() / 4.0;
             apex.push(nodes.push(add(g, scale(dir, f * h)), d));
         }
