@@ -62,6 +62,9 @@ fn measure_rule(ty: ElemType) -> Vec<QPoint> {
         ElemType::Cub8 => hexa(3),
         ElemType::Tet4 => tet(4),
         ElemType::Pri6 => prism(7, 3),
+        // The pyramid is a cube with its top face shrunk to the apex: its
+        // Jacobian is a polynomial of degree 2 in each direction.
+        ElemType::Pyr5 => hexa(3),
         // Degree 5 in each direction covers curved quadratic volumes well.
         ElemType::Cu20 => hexa(3),
         ElemType::Pr15 => prism(7, 3),

@@ -119,7 +119,7 @@ fn inside(ty: ElemType, xi: [f64; 3]) -> bool {
     match ty {
         ElemType::Seg2 | ElemType::Seg3 => box1(xi[0]),
         ElemType::Qua4 | ElemType::Qua8 => box1(xi[0]) && box1(xi[1]),
-        ElemType::Cub8 | ElemType::Cu20 => xi.iter().all(|v| box1(*v)),
+        ElemType::Cub8 | ElemType::Cu20 | ElemType::Pyr5 => xi.iter().all(|v| box1(*v)),
         ElemType::Tri3 | ElemType::Tri6 => simplex(2),
         ElemType::Tet4 => simplex(3),
         ElemType::Pri6 | ElemType::Pr15 => simplex(2) && box1(xi[2]),

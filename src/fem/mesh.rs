@@ -22,6 +22,9 @@ pub enum ElemType {
     Cub8,
     Tet4,
     Pri6,
+    /// Pyramid: its base quadrangle, then its apex (VOLU puts them on the
+    /// quadrangles of a closed surface).
+    Pyr5,
     /// Quadratic volumes: nodes of the bottom face around its contour
     /// (as QUA8/TRI6), then the mid-height nodes of the vertical edges
     /// (under each bottom corner in turn), then the top face as the bottom.
@@ -45,7 +48,7 @@ pub enum ElemType {
 
 impl ElemType {
     /// Every geometry, in Cast3M's usual listing order.
-    pub const ALL: [ElemType; 16] = [
+    pub const ALL: [ElemType; 17] = [
         ElemType::Poi1,
         ElemType::Seg2,
         ElemType::Seg3,
@@ -56,6 +59,7 @@ impl ElemType {
         ElemType::Cub8,
         ElemType::Tet4,
         ElemType::Pri6,
+        ElemType::Pyr5,
         ElemType::Cu20,
         ElemType::Pr15,
         ElemType::Rac2,
@@ -77,6 +81,7 @@ impl ElemType {
             ElemType::Cub8 => 8,
             ElemType::Tet4 => 4,
             ElemType::Pri6 => 6,
+            ElemType::Pyr5 => 5,
             ElemType::Cu20 => 20,
             ElemType::Pr15 => 15,
             ElemType::Rac2 => 4,
@@ -94,7 +99,7 @@ impl ElemType {
             ElemType::Poi1 | ElemType::Mult3 | ElemType::Mult4 | ElemType::Mult5 => 0,
             ElemType::Seg2 | ElemType::Seg3 | ElemType::Rac2 | ElemType::Rac3 => 1,
             ElemType::Tri3 | ElemType::Tri6 | ElemType::Qua4 | ElemType::Qua8 | ElemType::Lia3 | ElemType::Lia4 => 2,
-            ElemType::Cub8 | ElemType::Tet4 | ElemType::Pri6 | ElemType::Cu20 | ElemType::Pr15 => 3,
+            ElemType::Cub8 | ElemType::Tet4 | ElemType::Pri6 | ElemType::Pyr5 | ElemType::Cu20 | ElemType::Pr15 => 3,
         }
     }
 
@@ -111,6 +116,7 @@ impl ElemType {
             ElemType::Cub8 => "CUB8",
             ElemType::Tet4 => "TET4",
             ElemType::Pri6 => "PRI6",
+            ElemType::Pyr5 => "PYR5",
             ElemType::Cu20 => "CU20",
             ElemType::Pr15 => "PR15",
             ElemType::Rac2 => "RAC2",

@@ -47,6 +47,12 @@ pub fn ref_nodes(ty: ElemType) -> Vec<[f64; 3]> {
             v.extend(t.iter().map(|p| [p[0], p[1], 1.]));
             v
         }
+        ElemType::Pyr5 => {
+            let mut v = ref_nodes(ElemType::Cub8);
+            v.truncate(4);
+            v.push([0., 0., 1.]);
+            v
+        }
         ElemType::Cu20 => layered(&ref_nodes(ElemType::Qua8), &[0, 2, 4, 6]),
         ElemType::Pr15 => layered(&ref_nodes(ElemType::Tri6), &[0, 2, 4]),
         // A joint is its face drawn twice: side 1 at t = -1, side 2 at
@@ -150,6 +156,20 @@ pub fn eval(ty: ElemType, p: [f64; 3]) -> Shape {
                 n.push(0.125 * fa * fb * fc);
                 dn.push([0.125 * a * fb * fc, 0.125 * b * fa * fc, 0.125 * c * fa * fb]);
             }
+            Shape { n, dn }
+        }
+        // The cube's functions with its four top nodes at the apex (a
+        // degenerate CUB8): polynomial, exact for the volume.
+        ElemType::Pyr5 => {
+            let mut n = Vec::with_capacity(5);
+            let mut dn = Vec::with_capacity(5);
+            for [a, b, _] in ref_nodes(ElemType::Qua4) {
+                let (fa, fb, fc) = (1. + a * x, 1. + b * y, 1. - z);
+                n.push(0.125 * fa * fb * fc);
+                dn.push([0.125 * a * fb * fc, 0.125 * b * fa * fc, -0.125 * fa * fb]);
+            }
+            n.push(0.5 * (1. + z));
+            dn.push([0., 0., 0.5]);
             Shape { n, dn }
         }
         ElemType::Tet4 => Shape {
@@ -267,6 +287,11 @@ pub fn faces(ty: ElemType) -> Vec<(ElemType, Vec<usize>)> {
         Qua8 => f(Seg3, &[&[0, 1, 2], &[2, 3, 4], &[4, 5, 6], &[6, 7, 0]]),
         Cub8 => f(Qua4, &[&[0, 3, 2, 1], &[4, 5, 6, 7], &[0, 1, 5, 4], &[1, 2, 6, 5], &[2, 3, 7, 6], &[3, 0, 4, 7]]),
         Tet4 => f(Tri3, &[&[0, 2, 1], &[0, 1, 3], &[1, 2, 3], &[2, 0, 3]]),
+        Pyr5 => {
+            let mut v = f(Qua4, &[&[0, 3, 2, 1]]);
+            v.extend(f(Tri3, &[&[0, 1, 4], &[1, 2, 4], &[2, 3, 4], &[3, 0, 4]]));
+            v
+        }
         Pri6 => {
             let mut v = f(Tri3, &[&[0, 2, 1], &[3, 4, 5]]);
             v.extend(f(Qua4, &[&[0, 1, 4, 3], &[1, 2, 5, 4], &[2, 0, 3, 5]]));

@@ -46,6 +46,7 @@ pub fn vtk_cell(ty: ElemType) -> (u8, &'static [usize]) {
         ElemType::Cub8 => (12, &[0, 1, 2, 3, 4, 5, 6, 7]),
         ElemType::Tet4 => (10, &[0, 1, 2, 3]),
         ElemType::Pri6 => (13, &[0, 2, 1, 3, 5, 4]),
+        ElemType::Pyr5 => (14, &[0, 1, 2, 3, 4]),
         // Quadratic volumes: VTK's corners, the base's edges, the top's,
         // then the vertical ones.
         ElemType::Cu20 => (25, &[0, 2, 4, 6, 12, 14, 16, 18, 1, 3, 5, 7, 13, 15, 17, 19, 8, 9, 10, 11]),

@@ -1,5 +1,6 @@
 //! VOLU of a closed surface (`VOLU SURF ('VERB')`): tetrahedra filling the
-//! volume it bounds. The mesher is `fem::meshing::tet_fill`; VOLU's other
+//! volume it bounds, with a pyramid on each of its quadrangles. The
+//! meshers are `fem::meshing::tet_fill` and `tet_pyramids`; VOLU's other
 //! forms (sweeps, between two surfaces) are in `ops/mesh.rs`.
 
 use super::Args;
@@ -14,13 +15,15 @@ pub(crate) fn volu_closed(it: &mut Interp, a: &mut Args, surf: &Mesh) -> Result<
     // 'VERB' asks Cast3M's mesher to tell its steps; gibi's has none worth
     // printing, and the mesh is the same with or without it.
     a.keyword(&["VERB"]);
-    // Quadrangles are cut in two along their 1-3 diagonal; the volume is then
-    // bounded by those triangles.
-    let tri = if surf.parts.iter().any(|p| !p.is_empty() && p.ty != ElemType::Tri3) {
-        mg::change_to_triangles(surf)
+    let lin = if surf.parts.iter().any(|p| !p.is_empty() && !matches!(p.ty, ElemType::Tri3 | ElemType::Qua4)) {
+        mg::change_to_linear(surf)
     } else {
         surf.clone()
     };
-    let m = mg::tet_fill::volu_closed("VOLU", &it.nodes, &tri)?;
+    let m = if lin.parts.iter().any(|p| !p.is_empty() && p.ty == ElemType::Qua4) {
+        mg::tet_pyramids::volu_with_pyramids("VOLU", &mut it.nodes, &lin)?
+    } else {
+        mg::tet_fill::volu_closed("VOLU", &mut it.nodes, &lin)?
+    };
     Ok(vec![Value::Mesh(Rc::new(m))])
 }

@@ -35,6 +35,7 @@ pub(super) fn corners(ty: ElemType) -> &'static [usize] {
         ElemType::Cub8 => &[0, 1, 3, 4],
         ElemType::Tet4 => &[0, 1, 2, 3],
         ElemType::Pri6 => &[0, 1, 2, 3],
+        ElemType::Pyr5 => &[0, 1, 3, 4],
         // Quadratic volumes: the first corner, its two neighbours in the
         // base and the corner above it (enough for the volume's sign).
         ElemType::Cu20 => &[0, 2, 6, 12],

@@ -80,6 +80,7 @@ pub(crate) fn turn_over(ty: ElemType) -> &'static [usize] {
         ElemType::Cub8 => &[0, 3, 2, 1, 4, 7, 6, 5],
         ElemType::Tet4 => &[0, 2, 1, 3],
         ElemType::Pri6 => &[0, 2, 1, 3, 5, 4],
+        ElemType::Pyr5 => &[0, 3, 2, 1, 4],
         ElemType::Cu20 => &[0, 7, 6, 5, 4, 3, 2, 1, 8, 11, 10, 9, 12, 19, 18, 17, 16, 15, 14, 13],
         ElemType::Pr15 => &[0, 5, 4, 3, 2, 1, 6, 8, 7, 9, 14, 13, 12, 11, 10],
         ElemType::Rac2 => &[0, 1, 2, 3],

@@ -10,6 +10,7 @@
 
 use super::tet_delaunay::{face_key, Tets, NONE};
 use super::tet_recover::{flat, recover_edge, recover_face, unflat, Surface};
+use super::tet_steiner::Refined;
 use super::{check_nodes, fail, mesh_of, MeshError};
 use crate::fem::mesh::{ElemType, Mesh, Nodes};
 use std::collections::{HashMap, HashSet};
@@ -29,8 +30,10 @@ pub fn points_3d(op: &'static str, pts: &[[f64; 3]]) -> Result<Vec<[usize; 4]>, 
     Ok(tets.into_iter().map(cast3m).collect())
 }
 
-/// `VOLU` of a closed surface of TRI3 (oriented either way).
-pub fn volu_closed(op: &'static str, nodes: &Nodes, surf: &Mesh) -> Result<Mesh, MeshError> {
+/// `VOLU` of a closed surface of TRI3 (oriented either way). The
+/// tetrahedra use the surface's nodes, plus points added on the surface
+/// (new nodes) where flips alone cannot make it appear (`tet_steiner`).
+pub fn volu_closed(op: &'static str, nodes: &mut Nodes, surf: &Mesh) -> Result<Mesh, MeshError> {
     check_nodes(op, nodes, surf)?;
     let mut tris: Vec<[usize; 3]> = vec![];
     for p in surf.parts.iter().filter(|p| !p.is_empty()) {
@@ -46,9 +49,109 @@ pub fn volu_closed(op: &'static str, nodes: &Nodes, surf: &Mesh) -> Result<Mesh,
     let local: HashMap<usize, usize> = ids.iter().enumerate().map(|(k, &n)| (n, k)).collect();
     let pts: Vec<[f64; 3]> = ids.iter().map(|&n| nodes.get(n)).collect();
     let tris: Vec<[usize; 3]> = tris.iter().map(|f| f.map(|n| local[&n])).collect();
+    let s = surface_of(op, &tris, &ids)?;
+    let mut r = Refined { pts, tris, added: vec![] };
+    let mut s = s;
+    let mut last = None;
+    for round in 0..ROUNDS {
+        // The first round tries several perturbations before adding any
+        // point (a surface that flips can recover keeps its nodes); later
+        // rounds one each.
+        let seeds = if round == 0 { 0..4u64 } else { round as u64 + 3..round as u64 + 4 };
+        let mut missing: Option<Missing> = None;
+        for seed in seeds {
+            match fill(op, &r.pts, &s, seed) {
+                Ok(inside) => {
+                    let first = nodes.len();
+                    for (k, e) in r.added.iter().enumerate() {
+                        let d = 0.5 * (nodes.density[ids[e[0]]] + nodes.density[ids[e[1]]]);
+                        let at = nodes.push(r.pts[ids.len() + k], d);
+                        debug_assert_eq!(at, first + k);
+                    }
+                    let id = |v: usize| if v < ids.len() { ids[v] } else { first + v - ids.len() };
+                    let conn: Vec<usize> = inside.into_iter().flat_map(|t| cast3m(t).map(id)).collect();
+                    return Ok(mesh_of(vec![(ElemType::Tet4, conn)]));
+                }
+                Err(Failure::Fatal(e)) => last = Some(e),
+                Err(Failure::Missing(m)) => {
+                    if missing.as_ref().is_none_or(|x| m.count() < x.count()) {
+                        missing = Some(m);
+                    }
+                }
+            }
+        }
+        let Some(m) = missing else { break };
+        last = Some(m.error(op, &ids));
+        let cut = match &m {
+            Missing::Edges(es) => es.iter().fold(false, |c, &[a, b]| r.split_edge(a, b) | c),
+            Missing::Faces(fs) => fs.iter().fold(false, |c, &f| r.split_face(f) | c),
+        };
+        if !cut {
+            break;
+        }
+        s = surface_of(op, &r.tris, &ids)?;
+    }
+    Err(last.unwrap_or_else(|| MeshError::new(op, "the surface encloses no volume")))
+}
+
+/// Rounds of refinement before giving up.
+const ROUNDS: usize = 12;
+
+/// What stopped one try at filling.
+enum Failure {
+    Fatal(MeshError),
+    Missing(Missing),
+}
+
+/// The surface edges (or, all edges being there, triangles) that the flips
+/// could not make appear.
+enum Missing {
+    Edges(Vec<[usize; 2]>),
+    Faces(Vec<[usize; 3]>),
+}
+
+impl Missing {
+    fn count(&self) -> usize {
+        match self {
+            Missing::Edges(e) => e.len(),
+            Missing::Faces(f) => f.len(),
+        }
+    }
+
+    /// The error when no refinement helps: the first one missing.
+    fn error(&self, op: &'static str, ids: &[usize]) -> MeshError {
+        let name = |v: usize| match ids.get(v) {
+            Some(n) => format!("node {}", n + 1),
+            None => "a point added on the surface".to_string(),
+        };
+        match self {
+            Missing::Edges(e) => MeshError::new(
+                op,
+                format!(
+                    "the surface edge from {} to {} cannot be made an edge of tetrahedra, even with points added",
+                    name(e[0][0]),
+                    name(e[0][1])
+                ),
+            ),
+            Missing::Faces(f) => MeshError::new(
+                op,
+                format!(
+                    "the surface triangle of {}, {} and {} cannot be made a face of tetrahedra, even with points added",
+                    name(f[0][0]),
+                    name(f[0][1]),
+                    name(f[0][2])
+                ),
+            ),
+        }
+    }
+}
+
+/// The faces and edges of a surface of triangles (local numbers), checked
+/// to be closed and without repeated triangles.
+fn surface_of(op: &'static str, tris: &[[usize; 3]], ids: &[usize]) -> Result<Surface, MeshError> {
     let mut faces = HashSet::new();
     let mut edge_use: HashMap<[usize; 2], usize> = HashMap::new();
-    for f in &tris {
+    for f in tris {
         let mut k = *f;
         k.sort_unstable();
         if k[0] == k[1] || k[1] == k[2] {
@@ -80,18 +183,7 @@ pub fn volu_closed(op: &'static str, nodes: &Nodes, surf: &Mesh) -> Result<Mesh,
             ),
         );
     }
-    let s = Surface { faces, edges: edge_use.keys().copied().collect() };
-    let mut last = None;
-    for seed in 0..4u64 {
-        match fill(op, &pts, &s, seed, &ids) {
-            Ok(inside) => {
-                let conn: Vec<usize> = inside.into_iter().flat_map(|t| cast3m(t).map(|v| ids[v])).collect();
-                return Ok(mesh_of(vec![(ElemType::Tet4, conn)]));
-            }
-            Err(e) => last = Some(e),
-        }
-    }
-    Err(last.unwrap_or_else(|| MeshError::new(op, "the surface encloses no volume")))
+    Ok(Surface { faces, edges: edge_use.keys().copied().collect() })
 }
 
 /// One try at filling, with the points moved by a tiny pseudo-random
@@ -99,13 +191,7 @@ pub fn volu_closed(op: &'static str, nodes: &Nodes, surf: &Mesh) -> Result<Mesh,
 /// and coplanar points, where a Delaunay choice is arbitrary and the flips
 /// that recover the surface get stuck; in general position they do not.
 /// The tetrahedra are the same node numbers with the true coordinates.
-fn fill(
-    op: &'static str,
-    pts: &[[f64; 3]],
-    s: &Surface,
-    seed: u64,
-    ids: &[usize],
-) -> Result<Vec<[usize; 4]>, MeshError> {
+fn fill(op: &'static str, pts: &[[f64; 3]], s: &Surface, seed: u64) -> Result<Vec<[usize; 4]>, Failure> {
     let mut lo = [f64::INFINITY; 3];
     let mut hi = [f64::NEG_INFINITY; 3];
     for p in pts {
@@ -124,35 +210,22 @@ fn fill(
     };
     let eps = 1e-9 * size;
     let moved: Vec<[f64; 3]> = pts.iter().map(|p| p.map(|x| x + eps * next())).collect();
-    let mut t = Tets::delaunay(op, &moved)?;
+    let mut t = Tets::delaunay(op, &moved).map_err(Failure::Fatal)?;
     let mut edges: Vec<[usize; 2]> = s.edges.iter().copied().collect();
     edges.sort_unstable();
-    for [a, b] in edges {
-        if !recover_edge(&mut t, s, a, b) {
-            return fail(
-                op,
-                format!("the surface edge from node {} to node {} cannot be made an edge of tetrahedra without adding points", ids[a] + 1, ids[b] + 1),
-            );
-        }
+    let lost: Vec<[usize; 2]> = edges.into_iter().filter(|&[a, b]| !recover_edge(&mut t, s, a, b)).collect();
+    if !lost.is_empty() {
+        return Err(Failure::Missing(Missing::Edges(lost)));
     }
     let mut fs: Vec<[usize; 3]> = s.faces.iter().copied().collect();
     fs.sort_unstable();
-    for f in fs {
-        if !recover_face(&mut t, s, f) {
-            return fail(
-                op,
-                format!(
-                    "the surface triangle of nodes {} {} {} cannot be made a face of tetrahedra without adding points",
-                    ids[f[0]] + 1,
-                    ids[f[1]] + 1,
-                    ids[f[2]] + 1
-                ),
-            );
-        }
+    let lost: Vec<[usize; 3]> = fs.into_iter().filter(|&f| !recover_face(&mut t, s, f)).collect();
+    if !lost.is_empty() {
+        return Err(Failure::Missing(Missing::Faces(lost)));
     }
-    let inside = classify(op, &t, s)?;
+    let inside = classify(op, &t, s).map_err(Failure::Fatal)?;
     if inside.is_empty() {
-        return fail(op, "the surface encloses no volume");
+        return Err(Failure::Fatal(MeshError::new(op, "the surface encloses no volume")));
     }
     t.pts[..pts.len()].copy_from_slice(pts);
     let mut inside = inside;
@@ -166,7 +239,7 @@ fn fill(
                 unflat(&mut t, s, k);
             }
         }
-        inside = classify(op, &t, s)?;
+        inside = classify(op, &t, s).map_err(Failure::Fatal)?;
     }
     // Flat slivers left on plane parts of the surface are kept (known
     // limitation): their faces are still conforming.

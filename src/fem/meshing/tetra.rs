@@ -4,7 +4,8 @@
 //!   Kuhn cut): every face is cut along its diagonal through node 1 or
 //!   node 7 (local corners `(0,0,0)` and `(1,1,1)`), so two hexahedra of a grid made by TRAN/VOLU (same local frame) cut their
 //!   common face the same way and the tetrahedra are conforming.
-//! * PRI6 into three; TET4 are kept.
+//! * PRI6 into three, PYR5 into two (across the base diagonal from node 1
+//!   to node 3); TET4 are kept.
 //!
 //! Each tetrahedron turns like the element it comes from (its volume has
 //! the sign of the element's), so a mesh of positive elements gives
@@ -19,6 +20,7 @@ use crate::fem::mesh::{ElemType, Mesh, Nodes};
 const CUB8: [[usize; 4]; 6] = [[0, 1, 2, 6], [0, 1, 5, 6], [0, 3, 2, 6], [0, 3, 7, 6], [0, 4, 5, 6], [0, 4, 7, 6]];
 const PRI6: [[usize; 4]; 3] = [[0, 1, 2, 3], [1, 2, 3, 4], [2, 3, 4, 5]];
 const TET4: [[usize; 4]; 1] = [[0, 1, 2, 3]];
+const PYR5: [[usize; 4]; 2] = [[0, 1, 2, 4], [0, 2, 3, 4]];
 
 /// The triple product of the edges from `a` to `b`, `c`, `d`.
 fn volume6(nodes: &Nodes, a: usize, b: usize, c: usize, d: usize) -> f64 {
@@ -37,10 +39,11 @@ pub fn to_tet4(nodes: &Nodes, mesh: &Mesh) -> Result<Mesh, MeshError> {
             ElemType::Cub8 => (&CUB8, [0, 1, 3, 4]),
             ElemType::Pri6 => (&PRI6, [0, 1, 2, 3]),
             ElemType::Tet4 => (&TET4, [0, 1, 2, 3]),
+            ElemType::Pyr5 => (&PYR5, [0, 1, 3, 4]),
             other => {
                 return fail(
                     "CHAN",
-                    format!("'TET4' cuts CUB8, PRI6 and TET4 elements into tetrahedra, not {}", other.name()),
+                    format!("'TET4' cuts CUB8, PRI6, PYR5 and TET4 elements into tetrahedra, not {}", other.name()),
                 )
             }
         };
