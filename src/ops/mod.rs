@@ -123,7 +123,9 @@ mod transform;
 mod union;
 mod variable;
 mod variable_fields;
+mod triple_product;
 mod vector_product;
+mod voronoi;
 mod vsur;
 mod weibull;
 mod work;
@@ -176,6 +178,8 @@ impl Registry {
             mesh_contours::OPS,
             mesh_derive::OPS,
             mesh_delaunay::OPS,
+            voronoi::OPS,
+            triple_product::OPS,
             mesh_isov::OPS,
             mesh_lines::OPS,
             mesh_ruled::OPS,

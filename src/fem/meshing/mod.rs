@@ -63,6 +63,8 @@ pub mod transform;
 pub mod tri6_split;
 mod vec3;
 pub mod verify;
+pub mod voronoi;
+pub mod voronoi_3d;
 pub mod winding;
 
 #[cfg(test)]
