@@ -123,6 +123,8 @@ mod transform;
 mod union;
 mod variable;
 mod variable_fields;
+mod dans;
+mod inclusion;
 mod triple_product;
 mod vector_product;
 mod voronoi;
@@ -180,6 +182,8 @@ impl Registry {
             mesh_delaunay::OPS,
             voronoi::OPS,
             triple_product::OPS,
+            dans::OPS,
+            inclusion::OPS,
             mesh_isov::OPS,
             mesh_lines::OPS,
             mesh_ruled::OPS,

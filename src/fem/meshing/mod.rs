@@ -35,6 +35,7 @@ pub mod free;
 pub mod generatrix;
 pub mod grading;
 pub mod grid;
+pub mod inclusion;
 pub mod isovalue;
 pub mod joints;
 pub mod line;

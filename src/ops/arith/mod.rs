@@ -255,14 +255,18 @@ fn equal(it: &Interp, a: &mut Args) -> Result<bool> {
         Some(w) => Value::mot(w),
         None => a.right_any().ok_or_else(|| a.missing("a right operand"))?,
     };
-    let tol = if x.is_number() { a.opt_num_right().unwrap_or(0.0) } else { 0.0 };
+    let tol = if x.is_number() || matches!(x, Value::Point(_)) { a.opt_num_right().unwrap_or(0.0) } else { 0.0 };
     use Value::*;
     Ok(match (&x, &y) {
         (Int(i), Int(j)) => i == j,
         (Int(_) | Float(_), Int(_) | Float(_)) => (x.as_f64().unwrap_or(0.0) - y.as_f64().unwrap_or(0.0)).abs() <= tol,
         (Mot(s), Mot(t)) => s.trim_end() == t.trim_end(),
         (Bool(p), Bool(q)) => p == q,
-        (Point(p), Point(q)) => p == q || it.nodes.get(*p) == it.nodes.get(*q),
+        // Points within the given distance (ega.notice).
+        (Point(p), Point(q)) => {
+            let (u, v) = (it.nodes.get(*p), it.nodes.get(*q));
+            p == q || u == v || (0..3).map(|k| (u[k] - v[k]).powi(2)).sum::<f64>().sqrt() <= tol
+        }
         (ListEnti(l), ListEnti(m)) => l == m,
         (ListReel(l), ListReel(m)) => l == m,
         (ListMots(l), ListMots(m)) => l == m,
