@@ -61,12 +61,8 @@ fn incl(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         return Err(a.err(format!("the precision is not a finite number ({x})")));
     }
     // Every element of GEO2 to test: its nodes, or its barycentre.
-    let elems: Vec<(usize, Vec<usize>)> = geo2
-        .parts
-        .iter()
-        .enumerate()
-        .flat_map(|(k, p)| p.elems().map(move |e| (k, e.to_vec())))
-        .collect();
+    let elems: Vec<(usize, Vec<usize>)> =
+        geo2.parts.iter().enumerate().flat_map(|(k, p)| p.elems().map(move |e| (k, e.to_vec()))).collect();
     let pts: Vec<[f64; 3]> = elems
         .iter()
         .flat_map(|(_, e)| {
@@ -109,7 +105,8 @@ fn incl(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             let d = [x[0] - o[0], x[1] - o[1], x[2] - o[2]];
             [d[0] * u[0] + d[1] * u[1] + d[2] * u[2], d[0] * v[0] + d[1] * v[1] + d[2] * v[2]]
         };
-        let (u, v, o) = if dime == 3 { plane_axes(&verts, &tris, &segs) } else { ([1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0; 3]) };
+        let (u, v, o) =
+            if dime == 3 { plane_axes(&verts, &tris, &segs) } else { ([1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0; 3]) };
         let p2: Vec<[f64; 2]> = pts.iter().map(|x| flat(*x, u, v, o)).collect();
         let v2: Vec<[f64; 2]> = verts.iter().map(|x| flat(*x, u, v, o)).collect();
         if !tris.is_empty() {

@@ -9,7 +9,8 @@ use crate::value::Value;
 pub(crate) const OPS: &[OpDef] = &[OpDef {
     name: "PMIX",
     signature: "PMIX POINT POINT (POINT in 3D)",
-    doc: "Scalar triple product of vectors (POINTs read as vectors): det(v1, v2) in 2D, (v1 x v2) . v3 in 3D (FLOTTANT).",
+    doc:
+        "Scalar triple product of vectors (POINTs read as vectors): det(v1, v2) in 2D, (v1 x v2) . v3 in 3D (FLOTTANT).",
     example: "x = pmix (1. 0. 0.) (0. 1. 0.) (0. 0. 2.) ;",
     f: pmix,
 }];

@@ -74,8 +74,11 @@ fn voro(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let bnodes = bound.node_list();
     let local: HashMap<usize, usize> = bnodes.iter().enumerate().map(|(k, &n)| (n, k)).collect();
     let coords: Vec<[f64; 3]> = bnodes.iter().map(|&n| it.nodes.get(n)).collect();
-    let elems: Vec<Vec<usize>> =
-        bound.parts.iter().flat_map(|p| p.elems().map(|e| e.iter().map(|n| local[n]).collect::<Vec<_>>()).collect::<Vec<_>>()).collect();
+    let elems: Vec<Vec<usize>> = bound
+        .parts
+        .iter()
+        .flat_map(|p| p.elems().map(|e| e.iter().map(|n| local[n]).collect::<Vec<_>>()).collect::<Vec<_>>())
+        .collect();
     let part = if dim == 2 {
         let pts: Vec<[f64; 2]> = coords.iter().map(|c| [c[0], c[1]]).collect();
         let segs: Vec<[usize; 2]> = elems.iter().map(|e| [e[0], e[1]]).collect();

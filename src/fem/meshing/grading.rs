@@ -76,6 +76,11 @@ pub fn fractions(
         return fail(op, "the length to divide overflows (the end points are too far apart)");
     }
     if length <= 0.0 {
+        // One element joins the two points as they are: nothing to place
+        // (a Voronoi vertex met twice gives such an edge, merged by ELIM).
+        if spacing.n == Some(1) {
+            return Ok(uniform(1));
+        }
         return fail(op, "the length to divide is zero (the end points coincide)");
     }
     if let Some(n) = spacing.n {

@@ -129,7 +129,8 @@ pub fn in_lines(pts: &[[f64; 2]], segs: &[[[f64; 2]; 2]]) -> Vec<Where> {
             for [a, b] in segs {
                 let ab = [b[0] - a[0], b[1] - a[1]];
                 let l2 = ab[0] * ab[0] + ab[1] * ab[1];
-                let t = if l2 > 0.0 { (((x[0] - a[0]) * ab[0] + (x[1] - a[1]) * ab[1]) / l2).clamp(0.0, 1.0) } else { 0.0 };
+                let t =
+                    if l2 > 0.0 { (((x[0] - a[0]) * ab[0] + (x[1] - a[1]) * ab[1]) / l2).clamp(0.0, 1.0) } else { 0.0 };
                 let d = ((x[0] - a[0] - t * ab[0]).powi(2) + (x[1] - a[1] - t * ab[1]).powi(2)).sqrt();
                 if d <= tol {
                     return Where::Boundary;

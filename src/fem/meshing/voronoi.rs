@@ -297,7 +297,8 @@ impl Lines<'_> {
                 let (a, b) = self.seg(s);
                 let ab = [b[0] - a[0], b[1] - a[1]];
                 let l2 = ab[0] * ab[0] + ab[1] * ab[1];
-                let t = if l2 > 0.0 { (((x[0] - a[0]) * ab[0] + (x[1] - a[1]) * ab[1]) / l2).clamp(0.0, 1.0) } else { 0.0 };
+                let t =
+                    if l2 > 0.0 { (((x[0] - a[0]) * ab[0] + (x[1] - a[1]) * ab[1]) / l2).clamp(0.0, 1.0) } else { 0.0 };
                 ((x[0] - a[0] - t * ab[0]).powi(2) + (x[1] - a[1] - t * ab[1]).powi(2)).sqrt()
             })
             .fold(f64::INFINITY, f64::min)
@@ -352,7 +353,7 @@ pub fn partition_2d(
         *degree.entry(s[1]).or_default() += 1;
     }
     if let Some((&p, _)) = degree.iter().find(|(_, &d)| d % 2 == 1) {
-        return fail(op, format!("the boundary is not closed: its node {} ends a line", lines.nodes[p]));
+        return fail(op, format!("the boundary is not closed: its node {} ends a line", lines.nodes[p] + 1));
     }
     let mut lo = [f64::INFINITY; 2];
     let mut hi = [f64::NEG_INFINITY; 2];

@@ -192,7 +192,13 @@ pub fn partition_3d(
     let planes = planes(op, surf, tol)?;
     // The domain: a box around it cut by its planes.
     let (a, b) = (lo.map(|x| x - size), hi.map(|x| x + size));
-    let corner = |i: usize| [if i & 1 == 0 { a[0] } else { b[0] }, if i & 2 == 0 { a[1] } else { b[1] }, if i & 4 == 0 { a[2] } else { b[2] }];
+    let corner = |i: usize| {
+        [
+            if i & 1 == 0 { a[0] } else { b[0] },
+            if i & 2 == 0 { a[1] } else { b[1] },
+            if i & 4 == 0 { a[2] } else { b[2] },
+        ]
+    };
     let quads = [[0, 2, 6, 4], [1, 5, 7, 3], [0, 4, 5, 1], [2, 3, 7, 6], [0, 1, 3, 2], [4, 6, 7, 5]];
     let mut domain: Vec<Face> =
         quads.iter().map(|q| Face { poly: q.iter().map(|&i| corner(i)).collect(), tag: Tag::Box }).collect();
