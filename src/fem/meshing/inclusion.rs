@@ -47,8 +47,8 @@ fn classify<const N: usize>(
             continue;
         }
         inside = true;
-        for k in 0..N {
-            if l[k].abs() <= EPS {
+        for (k, lk) in l.iter().enumerate() {
+            if lk.abs() <= EPS {
                 let mut f: Vec<usize> = (0..N).filter(|&j| j != k).map(|j| c[j]).collect();
                 f.sort_unstable();
                 if count.get(&f) == Some(&1) {

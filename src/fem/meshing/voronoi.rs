@@ -381,9 +381,9 @@ pub fn partition_2d(
     let mut cells = vec![];
     let (a, b) = ([lo[0] - size, lo[1] - size], [hi[0] + size, hi[1] + size]);
     let start = Convex { pts: vec![a, [b[0], a[1]], b, [a[0], b[1]]], tag: vec![BOX; 4] };
-    for i in 0..seeds.len() {
+    for (i, nbi) in nb.iter().enumerate() {
         let mut poly = Convex { pts: start.pts.clone(), tag: start.tag.clone() };
-        for &j in &nb[i] {
+        for &j in nbi {
             let (n, d) = bisector(seeds, weights, i, j);
             poly = poly.clip(n, d, j, tol);
             if poly.pts.is_empty() {

@@ -220,9 +220,9 @@ pub fn partition_3d(
     let mut faces: Vec<Vec<usize>> = vec![];
     let mut face_of: HashMap<(usize, Tag), usize> = HashMap::new();
     let mut cells = vec![];
-    for i in 0..seeds.len() {
+    for (i, nbi) in nb.iter().enumerate() {
         let mut poly = domain.clone();
-        for &j in &nb[i] {
+        for &j in nbi {
             let (n, d) = bisector(seeds, weights, i, j);
             poly = clip(&poly, n, d, Tag::Seed(j), tol);
             if poly.is_empty() {
