@@ -48,11 +48,13 @@ fn coords(it: &Interp, nodes: &[usize]) -> Vec<[f64; 3]> {
 }
 
 fn mesu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    // The keyword may come before the mesh (`MESU 'SURF' CONTOUR`).
+    let before = a.keyword(&["LONG", "SURF", "VOLU"]);
     let m = req_geo(a)?;
     let highest = m.parts.iter().filter(|p| !p.is_empty()).map(|p| p.ty.dim()).max().unwrap_or(0);
     // 'LONG' / 'SURF' / 'VOLU' name the measure; one dimension below it,
     // the mesh is a closed boundary and the measure is what it encloses.
-    let want = match a.keyword(&["LONG", "SURF", "VOLU"]) {
+    let want = match before.or_else(|| a.keyword(&["LONG", "SURF", "VOLU"])) {
         Some("LONG") => 1,
         Some("SURF") => 2,
         Some(_) => 3,

@@ -13,7 +13,7 @@ use std::rc::Rc;
 pub(crate) const OPS: &[OpDef] = &[OpDef {
     name: "TRIA",
     signature: "TRIA POINTS ('CONV') | TRIA LINES (n_max | size)",
-    doc: "Delaunay triangulation: of a POI1 point set (SEG2 chain in 1D, TRI3 over the convex hull in 2D, TET4 over it in 3D), or of the inside of closed SEG2 lines in the plane with no node added (with a size: free triangles of that size, as SURF).",
+    doc: "Delaunay triangulation: of a POI1 point set (SEG2 chain in 1D, TRI3 over the convex hull in 2D, TET4 over it in 3D), of the inside of a closed TRI3 surface in 3D (TET4), or of the inside of closed SEG2 lines in the plane with no node added (with a size: free triangles of that size, as SURF).",
     example: "t = tria ((0. 0.) et (1. 0.) et (0. 1.) et (1. 1.)) ;",
     f: tria,
 }];
@@ -66,6 +66,10 @@ fn tria(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         };
         let ty = if dim == 1 { ElemType::Seg2 } else { ElemType::Tri3 };
         return Ok(vec![Value::Mesh(Rc::new(Mesh::single(Part::with(ty, conn))))]);
+    }
+    // In 3D a closed surface of TRI3 is filled with tetrahedra, no node added.
+    if dim == 3 && kinds.iter().all(|&t| t == ElemType::Tri3) {
+        return Ok(vec![Value::Mesh(Rc::new(mg::tet_fill::volu_closed("TRIA", &it.nodes, &geo)?))]);
     }
     if dim != 2 {
         return Err(a.err("the triangulation of the inside of lines is available in 2D (OPTI DIME 2)"));

@@ -22,6 +22,7 @@ mod contact;
 mod coor_field;
 mod covariance;
 mod curves;
+mod dans;
 mod dofs;
 mod elem_field;
 mod element_block;
@@ -45,6 +46,7 @@ mod hist;
 mod hist_field;
 mod hooke;
 mod hyperbolic;
+mod inclusion;
 mod insert;
 mod integrate;
 mod io;
@@ -128,10 +130,12 @@ mod temps;
 mod thermo;
 mod thermo_field;
 mod transform;
+mod triple_product;
 mod union;
 mod variable;
 mod variable_fields;
 mod vector_product;
+mod voronoi;
 mod vsur;
 mod weibull;
 mod work;
@@ -187,6 +191,10 @@ impl Registry {
             mesh_contours::OPS,
             mesh_derive::OPS,
             mesh_delaunay::OPS,
+            voronoi::OPS,
+            triple_product::OPS,
+            dans::OPS,
+            inclusion::OPS,
             mesh_isov::OPS,
             mesh_lines::OPS,
             mesh_ruled::OPS,

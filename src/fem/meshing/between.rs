@@ -1,5 +1,6 @@
 //! `LIGNE ELEM 'COMPRIS' P1 P2`: the part of a line between two of its
-//! points, described from P1 to P2.
+//! points, described from P1 to P2 (from P1 to itself: once around a
+//! closed line).
 
 use super::query::line_chain;
 use super::{fail, inve, orie, MeshError};
@@ -17,9 +18,6 @@ pub fn elem_compris(nodes: &Nodes, line: &Mesh, p1: usize, p2: usize) -> Result<
         Some(p) if p.ty.dim() == 1 && parts.iter().all(|q| q.ty == p.ty) => p.ty,
         _ => return fail(OP, "'COMPRIS' takes the part of a line (SEG2 or SEG3 elements only)"),
     };
-    if p1 == p2 {
-        return fail(OP, "'COMPRIS': the two points are the same point");
-    }
     // The line in order, head to tail (as ORIE puts it when it is not).
     let chain = match line_chain(OP, line) {
         Ok(c) => c,
@@ -34,6 +32,14 @@ pub fn elem_compris(nodes: &Nodes, line: &Mesh, p1: usize, p2: usize) -> Result<
         return fail(OP, "'COMPRIS': both points must be nodes of the line (ends of its elements)");
     };
     let elem = |k: usize| -> Vec<usize> { chain[k * step..=(k + 1) * step].to_vec() };
+    // From a point to itself: once around a closed line, from that point.
+    if p1 == p2 {
+        if !closed {
+            return fail(OP, "'COMPRIS': the two points are the same point and the line is open");
+        }
+        let conn = (0..n_el).flat_map(|j| elem((i1 + j) % n_el)).collect();
+        return Ok(Mesh { parts: vec![Part::with(ty, conn)] });
+    }
     let mut conn = Vec::new();
     let mut backwards = false;
     // Around a closed line both arcs join p1 to p2: take the shorter one

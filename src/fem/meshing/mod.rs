@@ -36,6 +36,7 @@ pub mod free;
 pub mod generatrix;
 pub mod grading;
 pub mod grid;
+pub mod inclusion;
 pub mod isovalue;
 pub mod joints;
 pub mod line;
@@ -67,6 +68,8 @@ pub mod transform;
 pub mod tri6_split;
 mod vec3;
 pub mod verify;
+pub mod voronoi;
+pub mod voronoi_3d;
 pub mod winding;
 
 #[cfg(test)]
