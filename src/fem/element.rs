@@ -45,6 +45,8 @@ impl Mode {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Formulation {
     Barr,
+    /// A bar offset from its nodes (see [`super::eccentric_bar`]).
+    Baex,
     Pout,
     Timo,
     Solid,
@@ -76,6 +78,7 @@ impl Formulation {
     pub fn name(self) -> &'static str {
         match self {
             Formulation::Barr => "BARR",
+            Formulation::Baex => "BAEX",
             Formulation::Pout => "POUT",
             Formulation::Timo => "TIMO",
             Formulation::Solid => "massive",
@@ -158,6 +161,7 @@ impl GaussField {
 pub fn node_dofs(f: Formulation, mode: Mode) -> Result<&'static [&'static str], FemError> {
     match f {
         Formulation::Barr => bar::dofs(mode),
+        Formulation::Baex => super::eccentric_bar::dofs(mode),
         Formulation::Pout | Formulation::Timo => beam::dofs(mode),
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => Ok(solid::dofs(mode)),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => shell::dofs(f, mode),
@@ -214,7 +218,7 @@ pub fn dual_name(primal: &str) -> String {
 /// Which geometries each formulation accepts.
 fn check(f: Formulation, ty: ElemType, mode: Mode) -> Result<(), FemError> {
     let ok = match f {
-        Formulation::Barr | Formulation::Pout | Formulation::Timo => ty == ElemType::Seg2,
+        Formulation::Barr | Formulation::Baex | Formulation::Pout | Formulation::Timo => ty == ElemType::Seg2,
         Formulation::Q4ri => ty == ElemType::Qua4,
         Formulation::Q8ri => ty == ElemType::Qua8,
         Formulation::Solid | Formulation::Thermal => ty.dim() >= 2,
@@ -241,6 +245,7 @@ pub fn stiffness(
     check(f, ty, mode)?;
     match f {
         Formulation::Barr => bar::stiffness(mode, x, m),
+        Formulation::Baex => super::eccentric_bar::stiffness(mode, x, m),
         Formulation::Pout => beam::stiffness(false, mode, x, m),
         Formulation::Timo => beam::stiffness(true, mode, x, m),
         Formulation::Incomp => super::incomp::stiffness(ty, mode, x, m),
@@ -265,6 +270,7 @@ pub fn mass(
     check(f, ty, mode)?;
     match f {
         Formulation::Barr => bar::mass(mode, x, m, lumped),
+        Formulation::Baex => super::eccentric_bar::mass(mode, x, m, lumped),
         Formulation::Pout => beam::mass(false, mode, x, m, lumped),
         Formulation::Timo => beam::mass(true, mode, x, m, lumped),
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => {
@@ -299,6 +305,7 @@ pub fn stress(
     check(f, ty, mode)?;
     match f {
         Formulation::Barr => bar::stress(mode, x, m, u),
+        Formulation::Baex => super::eccentric_bar::stress(mode, x, m, u),
         Formulation::Pout => beam::stress(false, mode, x, m, u),
         Formulation::Timo => beam::stress(true, mode, x, m, u),
         Formulation::Incomp => super::incomp::stress(ty, mode, x, m, u),
@@ -345,6 +352,7 @@ pub fn strain(
     check(f, ty, mode)?;
     match f {
         Formulation::Barr => bar::strain(mode, x, u),
+        Formulation::Baex => super::eccentric_bar::strain(mode, x, m, u),
         Formulation::Pout => beam::strain(false, mode, x, m, u),
         Formulation::Timo => beam::strain(true, mode, x, m, u),
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => {
@@ -372,6 +380,7 @@ pub fn internal_forces(
     check(f, ty, mode)?;
     match f {
         Formulation::Barr => bar::internal_forces(mode, x, sig),
+        Formulation::Baex => super::eccentric_bar::internal_forces(mode, x, m, sig),
         Formulation::Pout | Formulation::Timo => beam::internal_forces(f == Formulation::Timo, mode, x, m, sig),
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => {
             solid::internal_forces(f, ty, mode, x, m, sig)
@@ -391,7 +400,7 @@ pub fn internal_forces(
 /// (ξ = −1, +1). Ordering: see [`super::quadrature`].
 pub fn gauss_points(f: Formulation, ty: ElemType) -> Vec<([f64; 3], f64)> {
     match f {
-        Formulation::Barr | Formulation::Pout | Formulation::Timo => {
+        Formulation::Barr | Formulation::Baex | Formulation::Pout | Formulation::Timo => {
             vec![([-1.0, 0.0, 0.0], 1.0), ([1.0, 0.0, 0.0], 1.0)]
         }
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => solid::rule(f, ty),

@@ -88,7 +88,7 @@ pub fn point_weights(
     m: &Material,
 ) -> Result<Vec<f64>, FemError> {
     match f {
-        Formulation::Barr | Formulation::Pout | Formulation::Timo => line_weights(x),
+        Formulation::Barr | Formulation::Baex | Formulation::Pout | Formulation::Timo => line_weights(x),
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp | Formulation::Thermal => {
             if let Some(w) = surface_in_space(ty, mode, x, &solid::rule(f, ty), false)? {
                 return Ok(w);
@@ -114,7 +114,7 @@ pub fn node_weights(
     m: &Material,
 ) -> Result<Vec<f64>, FemError> {
     match f {
-        Formulation::Barr | Formulation::Pout | Formulation::Timo => line_weights(x),
+        Formulation::Barr | Formulation::Baex | Formulation::Pout | Formulation::Timo => line_weights(x),
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp | Formulation::Thermal => {
             if let Some(w) = surface_in_space(ty, mode, x, &measure_rule(ty), true)? {
                 return Ok(w);

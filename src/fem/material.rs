@@ -33,8 +33,11 @@ pub struct Material {
     pub dx: Option<f64>,
     pub dy: Option<f64>,
     pub dz: Option<f64>,
-    /// Local y axis of 3D beams (CARA 'VECT').
+    /// Local y axis of 3D beams (CARA 'VECT', or MATE 'VX' 'VY' 'VZ').
     pub vect: Option<[f64; 3]>,
+    /// Offsets of an eccentric bar's fibre (BAEX) along local y and z.
+    pub excy: Option<f64>,
+    pub excz: Option<f64>,
     /// Tangential and normal stiffnesses of joints, per unit area.
     pub ks: Option<f64>,
     pub kn: Option<f64>,
@@ -72,6 +75,13 @@ impl Material {
             "DY" => self.dy = v,
             "DZ" => self.dz = v,
             "KS" => self.ks = v,
+            "EXCY" => self.excy = v,
+            "EXCZ" => self.excz = v,
+            "VX" | "VY" | "VZ" => {
+                let mut w = self.vect.unwrap_or([0.0; 3]);
+                w[usize::from(name.as_bytes()[1] - b'X')] = v.unwrap_or(0.0);
+                self.vect = Some(w);
+            }
             "KN" => self.kn = v,
             "K" => self.cond = v,
             "C" => self.capa = v,

@@ -15,6 +15,7 @@ pub mod contact;
 pub mod contact_weak;
 pub mod coq2;
 pub mod dst;
+pub mod eccentric_bar;
 pub mod element;
 pub mod enclosed;
 pub mod flow;

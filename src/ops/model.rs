@@ -24,7 +24,7 @@ pub(crate) const OPS: &[OpDef] = &[
 const FORMS: &[&str] = &[
     "BARR", "POUT", "TIMO", "Q4RI", "Q8RI", "COQ3", "DKT", "DST", "COQ4", "COQ6", "COQ8", "COQ2", "TRI3", "TRI6",
     "QUA4", "QUA8", "CUB8", "TET4", "PRI6", "CU20", "PR15", "SEG2", "JOI2", "JOI3", "JOI4", "ICT3", "ICQ4", "ICT6",
-    "ICQ8", "ICT4", "ICC8", "ICP6",
+    "ICQ8", "ICT4", "ICC8", "ICP6", "BAEX",
 ];
 
 const BEHAVIOURS: &[&str] = &["ELASTIQUE", "ISOTROPE", "EPSILON"];
@@ -229,7 +229,7 @@ fn contact_model(it: &mut Interp, a: &mut Args, geo: &Mesh) -> Result<Vec<Value>
 
 const PROPS: &[&str] = &[
     "YOUN", "NU", "RHO", "ALPH", "TREF", "SECT", "INRY", "INRZ", "TORS", "SECY", "SECZ", "EPAI", "DIM3", "EXCE", "DX",
-    "DY", "DZ", "VECT", "JEU", "ADHE", "SIGY", "H", "KS", "KN", "ALPN", "K", "C",
+    "DY", "DZ", "VECT", "VX", "VY", "VZ", "EXCY", "EXCZ", "JEU", "ADHE", "SIGY", "H", "KS", "KN", "ALPN", "K", "C",
 ];
 
 fn props(it: &Interp, a: &mut Args, subtype: &str) -> Result<Vec<Value>> {
@@ -370,6 +370,7 @@ pub(crate) fn formulation(zone: &ModelZone) -> Formulation {
         "COQ8" => Formulation::Coq8,
         "COQ2" => Formulation::Coq2,
         "BARR" => Formulation::Barr,
+        "BAEX" => Formulation::Baex,
         "POUT" => Formulation::Pout,
         "TIMO" => Formulation::Timo,
         "Q4RI" => Formulation::Q4ri,
