@@ -16,6 +16,7 @@ pub mod contact_weak;
 pub mod coq2;
 pub mod dst;
 pub mod eccentric_bar;
+pub mod fibre_section;
 pub mod element;
 pub mod enclosed;
 pub mod flow;

@@ -73,6 +73,7 @@ mod mesh_ruled;
 mod mesh_select;
 mod mesh_verify;
 mod model;
+mod fibre_section;
 mod model_mixed;
 mod model_zones;
 mod nodal_field;

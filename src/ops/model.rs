@@ -24,10 +24,10 @@ pub(crate) const OPS: &[OpDef] = &[
 const FORMS: &[&str] = &[
     "BARR", "POUT", "TIMO", "Q4RI", "Q8RI", "COQ3", "DKT", "DST", "COQ4", "COQ6", "COQ8", "COQ2", "TRI3", "TRI6",
     "QUA4", "QUA8", "CUB8", "TET4", "PRI6", "CU20", "PR15", "SEG2", "JOI2", "JOI3", "JOI4", "ICT3", "ICQ4", "ICT6",
-    "ICQ8", "ICT4", "ICC8", "ICP6", "BAEX",
+    "ICQ8", "ICT4", "ICC8", "ICP6", "BAEX", "QUAS", "TRIS",
 ];
 
-const BEHAVIOURS: &[&str] = &["ELASTIQUE", "ISOTROPE", "EPSILON"];
+const BEHAVIOURS: &[&str] = &["ELASTIQUE", "ISOTROPE", "EPSILON", "SECTION"];
 
 fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let geo = req_geo(a)?;
@@ -70,7 +70,7 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             // gibi ties element fields to model zones by their mesh, so the
             // constituent's name is read and not kept (as MANU 'CHML').
             a.req::<String>()?;
-        } else if ["ELAS", "ISOT"].iter().any(|k| w.starts_with(k)) {
+        } else if ["ELAS", "ISOT", "SECT"].iter().any(|k| w.starts_with(k)) {
             behaviour.push(w);
         } else if INELASTIC.iter().any(|k| w.starts_with(k)) || behaviour.iter().any(|b| inelastic(b)) {
             // A constitutive law gibi does not integrate: the model exists
@@ -229,7 +229,7 @@ fn contact_model(it: &mut Interp, a: &mut Args, geo: &Mesh) -> Result<Vec<Value>
 
 const PROPS: &[&str] = &[
     "YOUN", "NU", "RHO", "ALPH", "TREF", "SECT", "INRY", "INRZ", "TORS", "SECY", "SECZ", "EPAI", "DIM3", "EXCE", "DX",
-    "DY", "DZ", "VECT", "VX", "VY", "VZ", "EXCY", "EXCZ", "JEU", "ADHE", "SIGY", "H", "KS", "KN", "ALPN", "K", "C",
+    "DY", "DZ", "VECT", "VX", "VY", "VZ", "EXCY", "EXCZ", "MODS", "MATS", "ALPY", "ALPZ", "JEU", "ADHE", "SIGY", "H", "KS", "KN", "ALPN", "K", "C",
 ];
 
 fn props(it: &Interp, a: &mut Args, subtype: &str) -> Result<Vec<Value>> {
@@ -240,7 +240,11 @@ fn props(it: &Interp, a: &mut Args, subtype: &str) -> Result<Vec<Value>> {
     // Properties given element by element (MANU 'CHML' mc 'JEU' j, or a
     // YOUN field REDU'ced onto the model).
     let mut fields: Vec<(&str, Rc<Mchaml>)> = Vec::new();
+    let mut section = super::fibre_section::Given::default();
     while let Some(k) = a.keyword(PROPS) {
+        if section.read(k, a)? {
+            continue;
+        }
         if k != "VECT" {
             if let Some(f) = a.opt::<Rc<Mchaml>>() {
                 fields.push((k, f));
@@ -259,6 +263,9 @@ fn props(it: &Interp, a: &mut Args, subtype: &str) -> Result<Vec<Value>> {
     }
     if let Some(w) = a.word_not_operator() {
         return Err(a.err(format!("unknown property {}", w)));
+    }
+    for (k, v) in section.properties(it, a)? {
+        consts.entry(k.to_string()).or_insert(v);
     }
     let mut zones = Vec::new();
     for z in &model.zones {
@@ -405,6 +412,11 @@ fn rigi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     }
     let mut rig = Rigidite::new(Subtype::Rigidite);
     for zone in model.zones.iter().filter(|z| z.formulation != super::pres_model::FORMULATION) {
+        if matches!(zone.element.as_str(), "QUAS" | "TRIS") {
+            return Err(a
+                .err(format!("a {} model describes a beam section and has no stiffness of its own", zone.element))
+                .note("give it to a TIMO beam: MATE beam_model 'MODS' section_model 'MATS' section_material"));
+        }
         let form = formulation(zone);
         let mode = zone_mode(zone)?;
         let mat = material_for(zone, &fields);
