@@ -70,6 +70,9 @@ pub enum Formulation {
     /// Linear elastic joint (JOI2, JOI3, JOI4) on RAC2, RAC3, LIA3, LIA4
     /// (see [`joint`]).
     Joint,
+    /// Generalised plane strain: massive plane elements plus a point
+    /// carrying the out-of-plane strain (see [`super::gen_plane_strain`]).
+    Dpge,
     /// Heat conduction on the massive geometries (see [`super::thermal`]).
     Thermal,
 }
@@ -94,6 +97,7 @@ impl Formulation {
             Formulation::Coq2 => "COQ2",
             Formulation::Joint => "JOI2",
             Formulation::Thermal => "THERMIQUE",
+            Formulation::Dpge => "DPGE",
         }
     }
 
@@ -169,6 +173,7 @@ pub fn node_dofs(f: Formulation, mode: Mode) -> Result<&'static [&'static str], 
         Formulation::Coq2 => coq2::dofs(mode),
         Formulation::Joint => joint::dofs(mode),
         Formulation::Thermal => Ok(super::thermal::DOFS),
+        Formulation::Dpge => super::gen_plane_strain::dofs(mode),
     }
 }
 
@@ -227,6 +232,7 @@ fn check(f: Formulation, ty: ElemType, mode: Mode) -> Result<(), FemError> {
         Formulation::Coq6 | Formulation::Coq8 => ty == super::thick_shell::geometry(f),
         Formulation::Coq2 => ty == ElemType::Seg2,
         Formulation::Joint => joint::accepts(ty, mode),
+        Formulation::Dpge => super::gen_plane_strain::accepts(ty, mode),
     };
     if ok {
         Ok(())
@@ -255,6 +261,7 @@ pub fn stiffness(
         Formulation::Coq2 => coq2::stiffness(mode, x, m),
         Formulation::Joint => joint::stiffness(ty, mode, x, m),
         Formulation::Thermal => super::thermal::conductivity(ty, mode, x, m),
+        Formulation::Dpge => super::gen_plane_strain::stiffness(ty, x, m),
     }
 }
 
@@ -289,6 +296,7 @@ pub fn mass(
             Ok(ElemMatrix { dofs, k: vec![0.0; n * n] })
         }
         Formulation::Thermal => super::thermal::capacity(ty, mode, x, m, lumped),
+        Formulation::Dpge => Err(FemError::NotFor { what: "a mass matrix", form: f.name() }),
     }
 }
 
@@ -315,6 +323,7 @@ pub fn stress(
         Formulation::Coq2 => coq2::stress(mode, x, m, u),
         Formulation::Joint => joint::stress(ty, mode, x, m, u),
         Formulation::Thermal => Err(FemError::NotFor { what: "SIGM", form: f.name() }),
+        Formulation::Dpge => super::gen_plane_strain::field(ty, x, m, u, true),
     }
 }
 
@@ -363,6 +372,7 @@ pub fn strain(
         Formulation::Coq2 => coq2::strain(mode, x, u),
         Formulation::Joint => joint::strain(ty, mode, x, m, u),
         Formulation::Thermal => Err(FemError::NotFor { what: "EPSI", form: f.name() }),
+        Formulation::Dpge => super::gen_plane_strain::field(ty, x, m, u, false),
     }
 }
 
@@ -392,6 +402,7 @@ pub fn internal_forces(
         Formulation::Coq2 => coq2::internal_forces(mode, x, m, sig),
         Formulation::Joint => joint::internal_forces(ty, mode, x, m, sig),
         Formulation::Thermal => Err(FemError::NotFor { what: "BSIG", form: f.name() }),
+        Formulation::Dpge => super::gen_plane_strain::internal_forces(ty, x, sig),
     }
 }
 
@@ -404,7 +415,7 @@ pub fn gauss_points(f: Formulation, ty: ElemType) -> Vec<([f64; 3], f64)> {
             vec![([-1.0, 0.0, 0.0], 1.0), ([1.0, 0.0, 0.0], 1.0)]
         }
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => solid::rule(f, ty),
-        Formulation::Thermal => solid::rule(Formulation::Solid, ty),
+        Formulation::Thermal | Formulation::Dpge => solid::rule(Formulation::Solid, ty),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => shell::rule(ty),
         Formulation::Coq6 | Formulation::Coq8 => super::thick_shell::rule(f),
         Formulation::Coq2 => coq2::rule(),

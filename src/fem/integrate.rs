@@ -101,6 +101,8 @@ pub fn point_weights(
         Formulation::Coq6 | Formulation::Coq8 => super::thick_shell::point_weights(f, x),
         Formulation::Coq2 => super::coq2::point_weights(mode, x),
         Formulation::Joint => super::joint::point_weights(ty, mode, x),
+        // The nodes, without the point that carries the out-of-plane strain.
+        Formulation::Dpge => solid::point_weights(Formulation::Solid, ty, mode, &x[..ty.nodes().min(x.len())], m),
     }
 }
 
@@ -125,6 +127,7 @@ pub fn node_weights(
         Formulation::Coq6 | Formulation::Coq8 => super::thick_shell::node_weights(f, x),
         Formulation::Coq2 => super::coq2::node_weights(mode, x),
         Formulation::Joint => Err(FemError::NotFor { what: "integrating a nodal field", form: f.name() }),
+        Formulation::Dpge => solid::node_weights(ty, mode, &x[..ty.nodes().min(x.len())], m),
     }
 }
 

@@ -17,6 +17,7 @@ pub mod coq2;
 pub mod dst;
 pub mod eccentric_bar;
 pub mod fibre_section;
+pub mod gen_plane_strain;
 pub mod element;
 pub mod enclosed;
 pub mod flow;

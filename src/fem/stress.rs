@@ -62,7 +62,7 @@ pub fn von_mises(f: Formulation, mode: Mode, m: &Material, sig: &GaussField) -> 
                 })
                 .collect()
         }
-        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => {
+        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp | Formulation::Dpge => {
             let names: [&str; 6] = match mode {
                 Mode::Axis => ["SMRR", "SMZZ", "SMTT", "SMRZ", "", ""],
                 _ => ["SMXX", "SMYY", "SMZZ", "SMXY", "SMXZ", "SMYZ"],

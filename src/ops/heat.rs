@@ -76,6 +76,7 @@ pub(crate) fn model(it: &Interp, a: &mut Args, geo: &Mesh) -> Result<Vec<Value>>
             behaviour: behaviour.clone(),
             element: p.ty.name().into(),
             mode: mode.clone(),
+            dpge: None,
         })
         .collect();
     Ok(vec![Value::Model(Rc::new(Model { zones }))])

@@ -54,6 +54,7 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     // Every element name given: with several shells, each element of the
     // mesh takes the one made for its geometry (MODE's notice).
     let mut names: Vec<String> = Vec::new();
+    let mut dpge = None;
     // ELASTIQUE is matched before any operator check: its first four
     // letters name the operator ELAS, which must not stop `MODE s
     // MECANIQUE ELASTIQUE` (Cast3M reads MODE's words as words).
@@ -66,6 +67,8 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         if let Some(f) = FORMS.iter().find(|f| super::args::keyword_matches(&w, f)) {
             element = f.to_string();
             names.push(element.clone());
+        } else if super::args::keyword_matches(&w, "DPGE") {
+            dpge = Some(a.req::<PointId>()?.0);
         } else if super::args::keyword_matches(&w, "CONSTITUANT") {
             // gibi ties element fields to model zones by their mesh, so the
             // constituent's name is read and not kept (as MANU 'CHML').
@@ -85,6 +88,12 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         }
     }
     let mode = it.opts.mode.clone();
+    if (mode == "PLAN GENE") != dpge.is_some() {
+        return Err(match dpge {
+            Some(_) => a.err(format!("'DPGE' P is the generalised plane strain of OPTI MODE PLAN GENE, not of mode {}", mode)),
+            None => a.missing("the point carrying the out-of-plane strain ('DPGE' P) of mode PLAN GENE"),
+        });
+    }
     if names.len() > 1 && names.iter().all(|n| shell_geometry(n).is_some()) {
         return super::model_mixed::shells_by_geometry(a, geo, formulation, behaviour, &names, mode);
     }
@@ -129,10 +138,11 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 behaviour: behaviour.clone(),
                 element: p.ty.name().into(),
                 mode: mode.clone(),
+                dpge,
             });
         }
     } else {
-        model.zones.push(ModelZone { mesh: geo, formulation, behaviour, element, mode });
+        model.zones.push(ModelZone { mesh: geo, formulation, behaviour, element, mode, dpge: None });
     }
     Ok(vec![Value::Model(Rc::new(model))])
 }
@@ -168,6 +178,7 @@ fn incompressible_model(
             behaviour: behaviour.clone(),
             element: element.clone(),
             mode: mode.clone(),
+            dpge: None,
         })
         .collect();
     Ok(vec![Value::Model(Rc::new(Model { zones }))])
@@ -222,6 +233,7 @@ fn contact_model(it: &mut Interp, a: &mut Args, geo: &Mesh) -> Result<Vec<Value>
             behaviour: behaviour.clone(),
             element: p.ty.name().into(),
             mode: it.opts.mode.clone(),
+            dpge: None,
         })
         .collect();
     Ok(vec![Value::Model(Rc::new(Model { zones }))])
@@ -368,6 +380,9 @@ pub(crate) fn formulation(zone: &ModelZone) -> Formulation {
     if zone.formulation == super::heat::FORMULATION {
         return Formulation::Thermal;
     }
+    if zone.dpge.is_some() {
+        return Formulation::Dpge;
+    }
     match zone.element.as_str() {
         "COQ3" => Formulation::Coq3,
         "DKT" => Formulation::Dkt,
@@ -391,7 +406,9 @@ pub(crate) fn formulation(zone: &ModelZone) -> Formulation {
 pub(crate) fn zone_mode(zone: &ModelZone) -> Result<Mode> {
     Ok(match zone.mode.as_str() {
         "PLAN CONT" => Mode::PlanCont,
-        "PLAN DEFO" => Mode::PlanDefo,
+        // Generalised plane strain: the plane-strain elements plus the
+        // extra point of their zone (Formulation::Dpge).
+        "PLAN DEFO" | "PLAN GENE" => Mode::PlanDefo,
         "AXIS" => Mode::Axis,
         "TRID" => Mode::Trid,
         m => return Err(Error::runtime(format!("analysis mode {} is not supported by the element library", m))),
@@ -423,7 +440,7 @@ fn rigi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         super::variable::no_unevaluated_law(a, zone, &fields)?;
         for part in &zone.mesh.parts {
             let mats = super::variable::element_materials(a, &mat, part, &fields)?;
-            rig.blocks.push(stiffness_block(it, form, mode, part, &mats).map_err(|e| {
+            rig.blocks.push(stiffness_block(it, form, mode, part, &mats, zone.dpge).map_err(|e| {
                 let hint = if e.message.contains("property VECT missing") {
                     Some("in 3D a beam needs its local y axis: CARA mo ... 'VECT' (0. 0. 1.) (any vector not along the beam)")
                 } else if e.message.contains("property SECY missing") || e.message.contains("property SECZ missing") {
@@ -445,18 +462,25 @@ fn rigi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 /// Element stiffness on every element of one part, as one block. `mats`
-/// holds one material for the whole part, or one per element.
+/// holds one material for the whole part, or one per element. `extra` is
+/// a node every element also holds, after its own (DPGE).
 pub(crate) fn stiffness_block(
     it: &Interp,
     form: Formulation,
     mode: Mode,
     part: &crate::fem::mesh::Part,
     mats: &[Material],
+    extra: Option<usize>,
 ) -> Result<Block> {
-    let npe = part.ty.nodes();
+    let npe = part.ty.nodes() + usize::from(extra.is_some());
     let mut block: Option<Block> = None;
     let mut x = vec![[0.0; 3]; npe];
+    let mut elem_nodes = Vec::with_capacity(npe);
     for (e, nodes) in part.elems().enumerate() {
+        elem_nodes.clear();
+        elem_nodes.extend_from_slice(nodes);
+        elem_nodes.extend(extra);
+        let nodes = &elem_nodes[..];
         for (k, n) in nodes.iter().enumerate() {
             x[k] = it.nodes.get(*n);
         }
