@@ -38,7 +38,12 @@ fn offset(x: &[[f64; 3]], m: &Material) -> Result<[f64; 3], FemError> {
     let ex = [d[0] / l, d[1] / l, d[2] / l];
     let (ey_c, ez_c) = (m.excy.unwrap_or(0.0), m.excz.unwrap_or(0.0));
     if !ey_c.is_finite() || !ez_c.is_finite() {
-        return Err(FemError::InvalidProperty { prop: "EXCY", value: ey_c + ez_c, elem: "BAEX", why: "must be finite" });
+        return Err(FemError::InvalidProperty {
+            prop: "EXCY",
+            value: ey_c + ez_c,
+            elem: "BAEX",
+            why: "must be finite",
+        });
     }
     if ey_c == 0.0 && ez_c == 0.0 {
         return Ok([0.0; 3]);

@@ -45,8 +45,8 @@ pub fn equivalent(fibres: &[Fibre]) -> Result<Vec<(&'static str, f64)>, String> 
         let e = f.mat.young("QUAS").map_err(at)?;
         let g = f.mat.shear_modulus("QUAS").map_err(at)?;
         reference.get_or_insert((e, f.mat.nu.unwrap_or(0.0)));
-        let w = solid::point_weights(Formulation::Solid, f.ty, Mode::PlanCont, &f.x, &Material::default())
-            .map_err(at)?;
+        let w =
+            solid::point_weights(Formulation::Solid, f.ty, Mode::PlanCont, &f.x, &Material::default()).map_err(at)?;
         let pos = element::gauss_positions(Formulation::Solid, f.ty, &f.x);
         for (wk, p) in w.iter().zip(&pos) {
             ea += e * wk;

@@ -15,7 +15,7 @@
 use super::element::{ElemMatrix, FemError, Formulation, GaussField, Mode};
 use super::material::{elasticity, Material};
 use super::mesh::ElemType;
-use super::solid::{bmat, points, rule, stress_comps, strain_comps, Point};
+use super::solid::{bmat, points, rule, strain_comps, stress_comps, Point};
 
 pub const DOFS: &[&str] = &["UX", "UY"];
 pub const POINT_DOFS: &[&str] = &["UZ", "RX", "RY"];
@@ -34,15 +34,15 @@ pub fn accepts(ty: ElemType, mode: Mode) -> bool {
 
 fn dof_list(ty: ElemType) -> Vec<(usize, &'static str)> {
     let nn = ty.nodes();
-    (0..nn)
-        .flat_map(|i| DOFS.iter().map(move |&d| (i, d)))
-        .chain(POINT_DOFS.iter().map(|&d| (nn, d)))
-        .collect()
+    (0..nn).flat_map(|i| DOFS.iter().map(move |&d| (i, d))).chain(POINT_DOFS.iter().map(|&d| (nn, d))).collect()
 }
+
+/// An integration point and its strain rows over the element dofs.
+type PointRows = (Point, Vec<Vec<f64>>);
 
 /// Integration points and the strain rows (EPXX EPYY EPZZ GAXY) over the
 /// element dofs; `x` holds the nodes then P.
-fn strain_rows(ty: ElemType, x: &[[f64; 3]]) -> Result<Vec<(Point, Vec<Vec<f64>>)>, FemError> {
+fn strain_rows(ty: ElemType, x: &[[f64; 3]]) -> Result<Vec<PointRows>, FemError> {
     let nn = ty.nodes();
     if x.len() != nn + 1 {
         return Err(FemError::WrongNodeCount { elem: ty.name(), expected: nn + 1, got: x.len() });
@@ -76,8 +76,10 @@ pub fn stiffness(ty: ElemType, x: &[[f64; 3]], m: &Material) -> Result<ElemMatri
     let nd = dofs.len();
     let mut k = vec![0.0; nd * nd];
     for (p, b) in strain_rows(ty, x)? {
-        let db: Vec<Vec<f64>> =
-            d.iter().map(|drow| (0..nd).map(|j| drow.iter().zip(&b).map(|(dv, br)| dv * br[j]).sum()).collect()).collect();
+        let db: Vec<Vec<f64>> = d
+            .iter()
+            .map(|drow| (0..nd).map(|j| drow.iter().zip(&b).map(|(dv, br)| dv * br[j]).sum()).collect())
+            .collect();
         for (brow, dbrow) in b.iter().zip(&db) {
             for i in 0..nd {
                 if brow[i] != 0.0 {

@@ -55,6 +55,13 @@ impl Material {
     /// Set the property Cast3M names `name` (YOUN, NU, …); false for a name
     /// that is not a scalar property of this material.
     pub fn set(&mut self, name: &str, v: f64) -> bool {
+        // MATE 'VX' 'VY' 'VZ': the components of the local y vector.
+        if let Some(i) = ["VX", "VY", "VZ"].iter().position(|c| *c == name) {
+            let mut w = self.vect.unwrap_or([0.0; 3]);
+            w[i] = v;
+            self.vect = Some(w);
+            return true;
+        }
         let v = Some(v);
         match name {
             "YOUN" => self.youn = v,
@@ -77,11 +84,6 @@ impl Material {
             "KS" => self.ks = v,
             "EXCY" => self.excy = v,
             "EXCZ" => self.excz = v,
-            "VX" | "VY" | "VZ" => {
-                let mut w = self.vect.unwrap_or([0.0; 3]);
-                w[usize::from(name.as_bytes()[1] - b'X')] = v.unwrap_or(0.0);
-                self.vect = Some(w);
-            }
             "KN" => self.kn = v,
             "K" => self.cond = v,
             "C" => self.capa = v,

@@ -3,8 +3,8 @@
 //! become the beam's section properties (see `fem::fibre_section`).
 
 use super::Args;
-use crate::eval::Interp;
 use crate::error::Result;
+use crate::eval::Interp;
 use crate::fem::fibre_section::{equivalent, Fibre};
 use crate::value::{Mchaml, Model};
 use std::rc::Rc;

@@ -90,7 +90,9 @@ fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let mode = it.opts.mode.clone();
     if (mode == "PLAN GENE") != dpge.is_some() {
         return Err(match dpge {
-            Some(_) => a.err(format!("'DPGE' P is the generalised plane strain of OPTI MODE PLAN GENE, not of mode {}", mode)),
+            Some(_) => {
+                a.err(format!("'DPGE' P is the generalised plane strain of OPTI MODE PLAN GENE, not of mode {}", mode))
+            }
             None => a.missing("the point carrying the out-of-plane strain ('DPGE' P) of mode PLAN GENE"),
         });
     }
@@ -241,7 +243,8 @@ fn contact_model(it: &mut Interp, a: &mut Args, geo: &Mesh) -> Result<Vec<Value>
 
 const PROPS: &[&str] = &[
     "YOUN", "NU", "RHO", "ALPH", "TREF", "SECT", "INRY", "INRZ", "TORS", "SECY", "SECZ", "EPAI", "DIM3", "EXCE", "DX",
-    "DY", "DZ", "VECT", "VX", "VY", "VZ", "EXCY", "EXCZ", "MODS", "MATS", "ALPY", "ALPZ", "JEU", "ADHE", "SIGY", "H", "KS", "KN", "ALPN", "K", "C",
+    "DY", "DZ", "VECT", "VX", "VY", "VZ", "EXCY", "EXCZ", "MODS", "MATS", "ALPY", "ALPZ", "JEU", "ADHE", "SIGY", "H",
+    "KS", "KN", "ALPN", "K", "C",
 ];
 
 fn props(it: &Interp, a: &mut Args, subtype: &str) -> Result<Vec<Value>> {
