@@ -48,13 +48,13 @@ pub fn thermal_strain(
     let alpha = m.expansion(elem)?;
     let tref = m.tref.unwrap_or(0.0);
     match f {
-        Formulation::Barr | Formulation::Pout | Formulation::Timo => {
+        Formulation::Barr | Formulation::Baex | Formulation::Pout | Formulation::Timo => {
             if ty != ElemType::Seg2 {
                 return Err(FemError::Unsupported { form: f.name(), elem: ty.name(), mode: mode.name() });
             }
             let e = alpha * (0.5 * (t[0] + t[1]) - tref);
             let comps = match (f, mode) {
-                (Formulation::Barr, _) => vec!["EPSS"],
+                (Formulation::Barr | Formulation::Baex, _) => vec!["EPSS"],
                 (_, Mode::Trid) => vec!["EPSS", "GAXY", "GAXZ", "CURX", "CURY", "CURZ"],
                 _ => vec!["EPSS", "GAXY", "CURZ"],
             };
@@ -98,7 +98,7 @@ fn check_solid(f: Formulation, ty: ElemType, mode: Mode) -> Result<(), FemError>
 /// field with none of them is not a strain field of this element.
 pub fn hooke(f: Formulation, ty: ElemType, mode: Mode, m: &Material, eps: &GaussField) -> Result<GaussField, FemError> {
     let wanted: Vec<&'static str> = match f {
-        Formulation::Barr => vec!["EPSS"],
+        Formulation::Barr | Formulation::Baex => vec!["EPSS"],
         Formulation::Pout | Formulation::Timo => vec!["EPSS", "GAXY", "GAXZ", "CURX", "CURY", "CURZ"],
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => solid::strain_comps(mode),
         Formulation::Joint => return super::joint::hooke(mode, m, eps),
@@ -109,7 +109,7 @@ pub fn hooke(f: Formulation, ty: ElemType, mode: Mode, m: &Material, eps: &Gauss
         return Err(FemError::MissingComponent { comp: wanted[0], elem: ty.name() });
     }
     match f {
-        Formulation::Barr => {
+        Formulation::Barr | Formulation::Baex => {
             let ea = m.young("BARR")? * m.positive(m.sect, "SECT", "BARR")?;
             let values = eps.values.iter().map(|v| vec![ea * get(eps, v, "EPSS")]).collect();
             Ok(GaussField { comps: vec!["EFFX"], values })

@@ -45,6 +45,8 @@ impl Mode {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Formulation {
     Barr,
+    /// A bar offset from its nodes (see [`super::eccentric_bar`]).
+    Baex,
     Pout,
     Timo,
     Solid,
@@ -68,6 +70,9 @@ pub enum Formulation {
     /// Linear elastic joint (JOI2, JOI3, JOI4) on RAC2, RAC3, LIA3, LIA4
     /// (see [`joint`]).
     Joint,
+    /// Generalised plane strain: massive plane elements plus a point
+    /// carrying the out-of-plane strain (see [`super::gen_plane_strain`]).
+    Dpge,
     /// Heat conduction on the massive geometries (see [`super::thermal`]).
     Thermal,
 }
@@ -76,6 +81,7 @@ impl Formulation {
     pub fn name(self) -> &'static str {
         match self {
             Formulation::Barr => "BARR",
+            Formulation::Baex => "BAEX",
             Formulation::Pout => "POUT",
             Formulation::Timo => "TIMO",
             Formulation::Solid => "massive",
@@ -91,6 +97,7 @@ impl Formulation {
             Formulation::Coq2 => "COQ2",
             Formulation::Joint => "JOI2",
             Formulation::Thermal => "THERMIQUE",
+            Formulation::Dpge => "DPGE",
         }
     }
 
@@ -158,6 +165,7 @@ impl GaussField {
 pub fn node_dofs(f: Formulation, mode: Mode) -> Result<&'static [&'static str], FemError> {
     match f {
         Formulation::Barr => bar::dofs(mode),
+        Formulation::Baex => super::eccentric_bar::dofs(mode),
         Formulation::Pout | Formulation::Timo => beam::dofs(mode),
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => Ok(solid::dofs(mode)),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => shell::dofs(f, mode),
@@ -165,6 +173,7 @@ pub fn node_dofs(f: Formulation, mode: Mode) -> Result<&'static [&'static str], 
         Formulation::Coq2 => coq2::dofs(mode),
         Formulation::Joint => joint::dofs(mode),
         Formulation::Thermal => Ok(super::thermal::DOFS),
+        Formulation::Dpge => super::gen_plane_strain::dofs(mode),
     }
 }
 
@@ -214,7 +223,7 @@ pub fn dual_name(primal: &str) -> String {
 /// Which geometries each formulation accepts.
 fn check(f: Formulation, ty: ElemType, mode: Mode) -> Result<(), FemError> {
     let ok = match f {
-        Formulation::Barr | Formulation::Pout | Formulation::Timo => ty == ElemType::Seg2,
+        Formulation::Barr | Formulation::Baex | Formulation::Pout | Formulation::Timo => ty == ElemType::Seg2,
         Formulation::Q4ri => ty == ElemType::Qua4,
         Formulation::Q8ri => ty == ElemType::Qua8,
         Formulation::Solid | Formulation::Thermal => ty.dim() >= 2,
@@ -223,6 +232,7 @@ fn check(f: Formulation, ty: ElemType, mode: Mode) -> Result<(), FemError> {
         Formulation::Coq6 | Formulation::Coq8 => ty == super::thick_shell::geometry(f),
         Formulation::Coq2 => ty == ElemType::Seg2,
         Formulation::Joint => joint::accepts(ty, mode),
+        Formulation::Dpge => super::gen_plane_strain::accepts(ty, mode),
     };
     if ok {
         Ok(())
@@ -241,6 +251,7 @@ pub fn stiffness(
     check(f, ty, mode)?;
     match f {
         Formulation::Barr => bar::stiffness(mode, x, m),
+        Formulation::Baex => super::eccentric_bar::stiffness(mode, x, m),
         Formulation::Pout => beam::stiffness(false, mode, x, m),
         Formulation::Timo => beam::stiffness(true, mode, x, m),
         Formulation::Incomp => super::incomp::stiffness(ty, mode, x, m),
@@ -250,6 +261,7 @@ pub fn stiffness(
         Formulation::Coq2 => coq2::stiffness(mode, x, m),
         Formulation::Joint => joint::stiffness(ty, mode, x, m),
         Formulation::Thermal => super::thermal::conductivity(ty, mode, x, m),
+        Formulation::Dpge => super::gen_plane_strain::stiffness(ty, x, m),
     }
 }
 
@@ -265,6 +277,7 @@ pub fn mass(
     check(f, ty, mode)?;
     match f {
         Formulation::Barr => bar::mass(mode, x, m, lumped),
+        Formulation::Baex => super::eccentric_bar::mass(mode, x, m, lumped),
         Formulation::Pout => beam::mass(false, mode, x, m, lumped),
         Formulation::Timo => beam::mass(true, mode, x, m, lumped),
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => {
@@ -283,6 +296,7 @@ pub fn mass(
             Ok(ElemMatrix { dofs, k: vec![0.0; n * n] })
         }
         Formulation::Thermal => super::thermal::capacity(ty, mode, x, m, lumped),
+        Formulation::Dpge => Err(FemError::NotFor { what: "a mass matrix", form: f.name() }),
     }
 }
 
@@ -299,6 +313,7 @@ pub fn stress(
     check(f, ty, mode)?;
     match f {
         Formulation::Barr => bar::stress(mode, x, m, u),
+        Formulation::Baex => super::eccentric_bar::stress(mode, x, m, u),
         Formulation::Pout => beam::stress(false, mode, x, m, u),
         Formulation::Timo => beam::stress(true, mode, x, m, u),
         Formulation::Incomp => super::incomp::stress(ty, mode, x, m, u),
@@ -308,6 +323,7 @@ pub fn stress(
         Formulation::Coq2 => coq2::stress(mode, x, m, u),
         Formulation::Joint => joint::stress(ty, mode, x, m, u),
         Formulation::Thermal => Err(FemError::NotFor { what: "SIGM", form: f.name() }),
+        Formulation::Dpge => super::gen_plane_strain::field(ty, x, m, u, true),
     }
 }
 
@@ -345,6 +361,7 @@ pub fn strain(
     check(f, ty, mode)?;
     match f {
         Formulation::Barr => bar::strain(mode, x, u),
+        Formulation::Baex => super::eccentric_bar::strain(mode, x, m, u),
         Formulation::Pout => beam::strain(false, mode, x, m, u),
         Formulation::Timo => beam::strain(true, mode, x, m, u),
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => {
@@ -355,6 +372,7 @@ pub fn strain(
         Formulation::Coq2 => coq2::strain(mode, x, u),
         Formulation::Joint => joint::strain(ty, mode, x, m, u),
         Formulation::Thermal => Err(FemError::NotFor { what: "EPSI", form: f.name() }),
+        Formulation::Dpge => super::gen_plane_strain::field(ty, x, m, u, false),
     }
 }
 
@@ -372,6 +390,7 @@ pub fn internal_forces(
     check(f, ty, mode)?;
     match f {
         Formulation::Barr => bar::internal_forces(mode, x, sig),
+        Formulation::Baex => super::eccentric_bar::internal_forces(mode, x, m, sig),
         Formulation::Pout | Formulation::Timo => beam::internal_forces(f == Formulation::Timo, mode, x, m, sig),
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => {
             solid::internal_forces(f, ty, mode, x, m, sig)
@@ -383,6 +402,7 @@ pub fn internal_forces(
         Formulation::Coq2 => coq2::internal_forces(mode, x, m, sig),
         Formulation::Joint => joint::internal_forces(ty, mode, x, m, sig),
         Formulation::Thermal => Err(FemError::NotFor { what: "BSIG", form: f.name() }),
+        Formulation::Dpge => super::gen_plane_strain::internal_forces(ty, x, sig),
     }
 }
 
@@ -391,11 +411,11 @@ pub fn internal_forces(
 /// (ξ = −1, +1). Ordering: see [`super::quadrature`].
 pub fn gauss_points(f: Formulation, ty: ElemType) -> Vec<([f64; 3], f64)> {
     match f {
-        Formulation::Barr | Formulation::Pout | Formulation::Timo => {
+        Formulation::Barr | Formulation::Baex | Formulation::Pout | Formulation::Timo => {
             vec![([-1.0, 0.0, 0.0], 1.0), ([1.0, 0.0, 0.0], 1.0)]
         }
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => solid::rule(f, ty),
-        Formulation::Thermal => solid::rule(Formulation::Solid, ty),
+        Formulation::Thermal | Formulation::Dpge => solid::rule(Formulation::Solid, ty),
         Formulation::Coq3 | Formulation::Dkt | Formulation::Dst | Formulation::Coq4 => shell::rule(ty),
         Formulation::Coq6 | Formulation::Coq8 => super::thick_shell::rule(f),
         Formulation::Coq2 => coq2::rule(),

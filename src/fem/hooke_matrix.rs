@@ -53,7 +53,7 @@ pub fn of_material(f: Formulation, ty: ElemType, mode: Mode, m: &Material) -> Re
             }
             Ok(HookeMatrix { stresses, strains: joint::comp_names(mode, false), d })
         }
-        Formulation::Barr => {
+        Formulation::Barr | Formulation::Baex => {
             let ea = m.young("BARR")? * m.positive(m.sect, "SECT", "BARR")?;
             Ok(HookeMatrix { stresses: vec!["EFFX"], strains: vec!["EPSS"], d: vec![vec![ea]] })
         }

@@ -91,7 +91,7 @@ pub fn point_weights(
     m: &Material,
 ) -> Result<Vec<f64>, FemError> {
     match f {
-        Formulation::Barr | Formulation::Pout | Formulation::Timo => line_weights(x),
+        Formulation::Barr | Formulation::Baex | Formulation::Pout | Formulation::Timo => line_weights(x),
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp | Formulation::Thermal => {
             if let Some(w) = surface_in_space(ty, mode, x, &solid::rule(f, ty), false)? {
                 return Ok(w);
@@ -104,6 +104,8 @@ pub fn point_weights(
         Formulation::Coq6 | Formulation::Coq8 => super::thick_shell::point_weights(f, x),
         Formulation::Coq2 => super::coq2::point_weights(mode, x),
         Formulation::Joint => super::joint::point_weights(ty, mode, x),
+        // The nodes, without the point that carries the out-of-plane strain.
+        Formulation::Dpge => solid::point_weights(Formulation::Solid, ty, mode, &x[..ty.nodes().min(x.len())], m),
     }
 }
 
@@ -117,7 +119,7 @@ pub fn node_weights(
     m: &Material,
 ) -> Result<Vec<f64>, FemError> {
     match f {
-        Formulation::Barr | Formulation::Pout | Formulation::Timo => line_weights(x),
+        Formulation::Barr | Formulation::Baex | Formulation::Pout | Formulation::Timo => line_weights(x),
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp | Formulation::Thermal => {
             if let Some(w) = surface_in_space(ty, mode, x, &measure_rule(ty), true)? {
                 return Ok(w);
@@ -128,6 +130,7 @@ pub fn node_weights(
         Formulation::Coq6 | Formulation::Coq8 => super::thick_shell::node_weights(f, x),
         Formulation::Coq2 => super::coq2::node_weights(mode, x),
         Formulation::Joint => Err(FemError::NotFor { what: "integrating a nodal field", form: f.name() }),
+        Formulation::Dpge => solid::node_weights(ty, mode, &x[..ty.nodes().min(x.len())], m),
     }
 }
 

@@ -33,8 +33,11 @@ pub struct Material {
     pub dx: Option<f64>,
     pub dy: Option<f64>,
     pub dz: Option<f64>,
-    /// Local y axis of 3D beams (CARA 'VECT').
+    /// Local y axis of 3D beams (CARA 'VECT', or MATE 'VX' 'VY' 'VZ').
     pub vect: Option<[f64; 3]>,
+    /// Offsets of an eccentric bar's fibre (BAEX) along local y and z.
+    pub excy: Option<f64>,
+    pub excz: Option<f64>,
     /// Tangential and normal stiffnesses of joints, per unit area.
     pub ks: Option<f64>,
     pub kn: Option<f64>,
@@ -52,6 +55,13 @@ impl Material {
     /// Set the property Cast3M names `name` (YOUN, NU, …); false for a name
     /// that is not a scalar property of this material.
     pub fn set(&mut self, name: &str, v: f64) -> bool {
+        // MATE 'VX' 'VY' 'VZ': the components of the local y vector.
+        if let Some(i) = ["VX", "VY", "VZ"].iter().position(|c| *c == name) {
+            let mut w = self.vect.unwrap_or([0.0; 3]);
+            w[i] = v;
+            self.vect = Some(w);
+            return true;
+        }
         let v = Some(v);
         match name {
             "YOUN" => self.youn = v,
@@ -72,6 +82,8 @@ impl Material {
             "DY" => self.dy = v,
             "DZ" => self.dz = v,
             "KS" => self.ks = v,
+            "EXCY" => self.excy = v,
+            "EXCZ" => self.excz = v,
             "KN" => self.kn = v,
             "K" => self.cond = v,
             "C" => self.capa = v,

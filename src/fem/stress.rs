@@ -20,7 +20,7 @@ pub fn von_mises(f: Formulation, mode: Mode, m: &Material, sig: &GaussField) -> 
         Formulation::Joint | Formulation::Thermal => {
             return Err(FemError::NotFor { what: "a von Mises stress (VMIS)", form: f.name() })
         }
-        Formulation::Barr | Formulation::Pout | Formulation::Timo => {
+        Formulation::Barr | Formulation::Baex | Formulation::Pout | Formulation::Timo => {
             let elem = f.name();
             let a = m.positive(m.sect, "SECT", elem)?;
             let term = |d: Option<f64>, inertia: Option<f64>, prop: &'static str| -> Result<f64, FemError> {
@@ -62,7 +62,7 @@ pub fn von_mises(f: Formulation, mode: Mode, m: &Material, sig: &GaussField) -> 
                 })
                 .collect()
         }
-        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => {
+        Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp | Formulation::Dpge => {
             let names: [&str; 6] = match mode {
                 Mode::Axis => ["SMRR", "SMZZ", "SMTT", "SMRZ", "", ""],
                 _ => ["SMXX", "SMYY", "SMZZ", "SMXY", "SMXZ", "SMYZ"],
@@ -98,7 +98,7 @@ pub fn to_nodes(f: Formulation, ty: ElemType, g: &GaussField) -> Result<GaussFie
     }
     let nn = ty.nodes();
     let nc = g.comps.len();
-    if matches!(f, Formulation::Barr | Formulation::Pout | Formulation::Timo) {
+    if matches!(f, Formulation::Barr | Formulation::Baex | Formulation::Pout | Formulation::Timo) {
         return Ok(g.clone());
     }
     if pts.len() == 1 {

@@ -57,7 +57,7 @@ pub fn surface_vectors(
     x: &[[f64; 3]],
     unit: bool,
 ) -> Result<Option<Vec<[f64; 3]>>, FemError> {
-    let beam = matches!(f, Formulation::Barr | Formulation::Pout | Formulation::Timo);
+    let beam = matches!(f, Formulation::Barr | Formulation::Baex | Formulation::Pout | Formulation::Timo);
     if !(f.is_shell() || beam) {
         return Ok(None);
     }

@@ -20,6 +20,7 @@ fn positions(it: &Interp, a: &Args, z: &MchamlZone) -> Result<Vec<Vec<[f64; 3]>>
         behaviour: Vec::new(),
         element: z.element.clone(),
         mode: String::new(),
+        dpge: None,
     };
     let form = super::model::formulation(&mz);
     let mut out = Vec::new();

@@ -76,6 +76,7 @@ pub(crate) fn model(it: &Interp, a: &mut Args, geo: &Mesh) -> Result<Vec<Value>>
             behaviour: behaviour.clone(),
             element: p.ty.name().into(),
             mode: mode.clone(),
+            dpge: None,
         })
         .collect();
     Ok(vec![Value::Model(Rc::new(Model { zones, ties: Vec::new() }))])
@@ -119,7 +120,7 @@ fn assemble(
         let mode = zone_mode(zone)?;
         let mat = material_for(zone, fields);
         for part in &zone.mesh.parts {
-            let block = super::element_block::part_block(it, part, Symmetry::Symmetric, |e, x| {
+            let block = super::element_block::part_block(it, part, None, Symmetry::Symmetric, |e, x| {
                 f(part.ty, mode, x, &mat).map_err(|err| a.err(format!("element {}: {}", e + 1, err)))
             })?;
             rig.blocks.extend(block);

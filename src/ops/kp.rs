@@ -35,7 +35,7 @@ fn kp_op(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         let form = formulation(zone);
         for part in &zone.mesh.parts {
             let symmetry = if dir.is_some() { Symmetry::General } else { Symmetry::Symmetric };
-            let block = super::element_block::part_block(it, part, symmetry, |e, x| {
+            let block = super::element_block::part_block(it, part, None, symmetry, |e, x| {
                 kp::gradient_stiffness(form, x, rg, dir).map_err(|err| a.err(format!("KP: element {}: {}", e + 1, err)))
             })?;
             rig.blocks.push(block.ok_or_else(|| Error::runtime("KP: the model has no element"))?);

@@ -34,6 +34,7 @@ mod evol_temps;
 mod excellence;
 mod export;
 mod extract;
+mod fibre_section;
 mod fields;
 mod fit;
 mod fofi;

@@ -24,10 +24,10 @@ pub(crate) const OPS: &[OpDef] = &[
 const FORMS: &[&str] = &[
     "BARR", "POUT", "TIMO", "Q4RI", "Q8RI", "COQ3", "DKT", "DST", "COQ4", "COQ6", "COQ8", "COQ2", "TRI3", "TRI6",
     "QUA4", "QUA8", "CUB8", "TET4", "PRI6", "CU20", "PR15", "SEG2", "JOI2", "JOI3", "JOI4", "ICT3", "ICQ4", "ICT6",
-    "ICQ8", "ICT4", "ICC8", "ICP6",
+    "ICQ8", "ICT4", "ICC8", "ICP6", "BAEX", "QUAS", "TRIS",
 ];
 
-const BEHAVIOURS: &[&str] = &["ELASTIQUE", "ISOTROPE", "EPSILON"];
+const BEHAVIOURS: &[&str] = &["ELASTIQUE", "ISOTROPE", "EPSILON", "SECTION"];
 
 fn mode(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     // Relation elements (RAFF's MULT) carry no mechanics: the model keeps
@@ -64,6 +64,7 @@ fn mode_on(it: &mut Interp, a: &mut Args, geo: Mesh) -> Result<Vec<Value>> {
     // Every element name given: with several shells, each element of the
     // mesh takes the one made for its geometry (MODE's notice).
     let mut names: Vec<String> = Vec::new();
+    let mut dpge = None;
     // ELASTIQUE is matched before any operator check: its first four
     // letters name the operator ELAS, which must not stop `MODE s
     // MECANIQUE ELASTIQUE` (Cast3M reads MODE's words as words).
@@ -76,11 +77,13 @@ fn mode_on(it: &mut Interp, a: &mut Args, geo: Mesh) -> Result<Vec<Value>> {
         if let Some(f) = FORMS.iter().find(|f| super::args::keyword_matches(&w, f)) {
             element = f.to_string();
             names.push(element.clone());
+        } else if super::args::keyword_matches(&w, "DPGE") {
+            dpge = Some(a.req::<PointId>()?.0);
         } else if super::args::keyword_matches(&w, "CONSTITUANT") {
             // gibi ties element fields to model zones by their mesh, so the
             // constituent's name is read and not kept (as MANU 'CHML').
             a.req::<String>()?;
-        } else if ["ELAS", "ISOT"].iter().any(|k| w.starts_with(k)) {
+        } else if ["ELAS", "ISOT", "SECT"].iter().any(|k| w.starts_with(k)) {
             behaviour.push(w);
         } else if INELASTIC.iter().any(|k| w.starts_with(k)) || behaviour.iter().any(|b| inelastic(b)) {
             // A constitutive law gibi does not integrate: the model exists
@@ -95,6 +98,14 @@ fn mode_on(it: &mut Interp, a: &mut Args, geo: Mesh) -> Result<Vec<Value>> {
         }
     }
     let mode = it.opts.mode.clone();
+    if (mode == "PLAN GENE") != dpge.is_some() {
+        return Err(match dpge {
+            Some(_) => {
+                a.err(format!("'DPGE' P is the generalised plane strain of OPTI MODE PLAN GENE, not of mode {}", mode))
+            }
+            None => a.missing("the point carrying the out-of-plane strain ('DPGE' P) of mode PLAN GENE"),
+        });
+    }
     if names.len() > 1 && names.iter().all(|n| shell_geometry(n).is_some()) {
         return super::model_mixed::shells_by_geometry(a, geo, formulation, behaviour, &names, mode);
     }
@@ -139,10 +150,11 @@ fn mode_on(it: &mut Interp, a: &mut Args, geo: Mesh) -> Result<Vec<Value>> {
                 behaviour: behaviour.clone(),
                 element: p.ty.name().into(),
                 mode: mode.clone(),
+                dpge,
             });
         }
     } else {
-        model.zones.push(ModelZone { mesh: geo, formulation, behaviour, element, mode });
+        model.zones.push(ModelZone { mesh: geo, formulation, behaviour, element, mode, dpge: None });
     }
     Ok(vec![Value::Model(Rc::new(model))])
 }
@@ -178,6 +190,7 @@ fn incompressible_model(
             behaviour: behaviour.clone(),
             element: element.clone(),
             mode: mode.clone(),
+            dpge: None,
         })
         .collect();
     Ok(vec![Value::Model(Rc::new(Model { zones, ties: Vec::new() }))])
@@ -232,6 +245,7 @@ fn contact_model(it: &mut Interp, a: &mut Args, geo: &Mesh) -> Result<Vec<Value>
             behaviour: behaviour.clone(),
             element: p.ty.name().into(),
             mode: it.opts.mode.clone(),
+            dpge: None,
         })
         .collect();
     Ok(vec![Value::Model(Rc::new(Model { zones, ties: Vec::new() }))])
@@ -239,7 +253,8 @@ fn contact_model(it: &mut Interp, a: &mut Args, geo: &Mesh) -> Result<Vec<Value>
 
 const PROPS: &[&str] = &[
     "YOUN", "NU", "RHO", "ALPH", "TREF", "SECT", "INRY", "INRZ", "TORS", "SECY", "SECZ", "EPAI", "DIM3", "EXCE", "DX",
-    "DY", "DZ", "VECT", "JEU", "ADHE", "SIGY", "H", "KS", "KN", "ALPN", "K", "C",
+    "DY", "DZ", "VECT", "VX", "VY", "VZ", "EXCY", "EXCZ", "MODS", "MATS", "ALPY", "ALPZ", "JEU", "ADHE", "SIGY", "H",
+    "KS", "KN", "ALPN", "K", "C",
 ];
 
 fn props(it: &Interp, a: &mut Args, subtype: &str) -> Result<Vec<Value>> {
@@ -250,7 +265,11 @@ fn props(it: &Interp, a: &mut Args, subtype: &str) -> Result<Vec<Value>> {
     // Properties given element by element (MANU 'CHML' mc 'JEU' j, or a
     // YOUN field REDU'ced onto the model).
     let mut fields: Vec<(&str, Rc<Mchaml>)> = Vec::new();
+    let mut section = super::fibre_section::Given::default();
     while let Some(k) = a.keyword(PROPS) {
+        if section.read(k, a)? {
+            continue;
+        }
         if k != "VECT" {
             if let Some(f) = a.opt::<Rc<Mchaml>>() {
                 fields.push((k, f));
@@ -269,6 +288,9 @@ fn props(it: &Interp, a: &mut Args, subtype: &str) -> Result<Vec<Value>> {
     }
     if let Some(w) = a.word_not_operator() {
         return Err(a.err(format!("unknown property {}", w)));
+    }
+    for (k, v) in section.properties(it, a)? {
+        consts.entry(k.to_string()).or_insert(v);
     }
     let mut zones = Vec::new();
     for z in &model.zones {
@@ -371,6 +393,9 @@ pub(crate) fn formulation(zone: &ModelZone) -> Formulation {
     if zone.formulation == super::heat::FORMULATION {
         return Formulation::Thermal;
     }
+    if zone.dpge.is_some() {
+        return Formulation::Dpge;
+    }
     match zone.element.as_str() {
         "COQ3" => Formulation::Coq3,
         "DKT" => Formulation::Dkt,
@@ -380,6 +405,7 @@ pub(crate) fn formulation(zone: &ModelZone) -> Formulation {
         "COQ8" => Formulation::Coq8,
         "COQ2" => Formulation::Coq2,
         "BARR" => Formulation::Barr,
+        "BAEX" => Formulation::Baex,
         "POUT" => Formulation::Pout,
         "TIMO" => Formulation::Timo,
         "Q4RI" => Formulation::Q4ri,
@@ -393,7 +419,9 @@ pub(crate) fn formulation(zone: &ModelZone) -> Formulation {
 pub(crate) fn zone_mode(zone: &ModelZone) -> Result<Mode> {
     Ok(match zone.mode.as_str() {
         "PLAN CONT" => Mode::PlanCont,
-        "PLAN DEFO" => Mode::PlanDefo,
+        // Generalised plane strain: the plane-strain elements plus the
+        // extra point of their zone (Formulation::Dpge).
+        "PLAN DEFO" | "PLAN GENE" => Mode::PlanDefo,
         "AXIS" => Mode::Axis,
         "TRID" => Mode::Trid,
         m => return Err(Error::runtime(format!("analysis mode {} is not supported by the element library", m))),
@@ -414,13 +442,18 @@ fn rigi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     }
     let mut rig = Rigidite::new(Subtype::Rigidite);
     for zone in model.zones.iter().filter(|z| z.formulation != super::pres_model::FORMULATION) {
+        if matches!(zone.element.as_str(), "QUAS" | "TRIS") {
+            return Err(a
+                .err(format!("a {} model describes a beam section and has no stiffness of its own", zone.element))
+                .note("give it to a TIMO beam: MATE beam_model 'MODS' section_model 'MATS' section_material"));
+        }
         let form = formulation(zone);
         let mode = zone_mode(zone)?;
         let mat = material_for(zone, &fields);
         super::variable::no_unevaluated_law(a, zone, &fields)?;
         for part in &zone.mesh.parts {
             let mats = super::variable::element_materials(a, &mat, part, &fields)?;
-            rig.blocks.push(stiffness_block(it, form, mode, part, &mats).map_err(|e| {
+            rig.blocks.push(stiffness_block(it, form, mode, part, &mats, zone.dpge).map_err(|e| {
                 let hint = if e.message.contains("property VECT missing") {
                     Some("in 3D a beam needs its local y axis: CARA mo ... 'VECT' (0. 0. 1.) (any vector not along the beam)")
                 } else if e.message.contains("property SECY missing") || e.message.contains("property SECZ missing") {
@@ -442,15 +475,17 @@ fn rigi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 /// Element stiffness on every element of one part, as one block. `mats`
-/// holds one material for the whole part, or one per element.
+/// holds one material for the whole part, or one per element. `extra` is
+/// a node every element also holds, after its own (DPGE).
 pub(crate) fn stiffness_block(
     it: &Interp,
     form: Formulation,
     mode: Mode,
     part: &crate::fem::mesh::Part,
     mats: &[Material],
+    extra: Option<usize>,
 ) -> Result<Block> {
-    let block = super::element_block::part_block(it, part, Symmetry::Symmetric, |e, x| {
+    let block = super::element_block::part_block(it, part, extra, Symmetry::Symmetric, |e, x| {
         let mat = if mats.len() == 1 { &mats[0] } else { &mats[e] };
         element::stiffness(form, part.ty, mode, x, mat)
             .map_err(|err| Error::runtime(format!("element {}: {}", e + 1, fem_err(err).message)))

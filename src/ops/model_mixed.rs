@@ -38,6 +38,7 @@ pub(super) fn shells_by_geometry(
                 behaviour: behaviour.clone(),
                 element: name.clone(),
                 mode: mode.clone(),
+                dpge: None,
             }),
         }
     }

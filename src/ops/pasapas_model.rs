@@ -85,8 +85,8 @@ pub(crate) fn build(
         let base = material_for(zone, cara);
         for part in &zone.mesh.parts {
             let mats = super::variable_fields::element_materials(a, &base, part, cara)?;
-            let b =
-                stiffness_block(it, form, mode, part, &mats).map_err(|e| a.err(format!("stiffness: {}", e.message)))?;
+            let b = stiffness_block(it, form, mode, part, &mats, zone.dpge)
+                .map_err(|e| a.err(format!("stiffness: {}", e.message)))?;
             rig.blocks.push(b);
             parts.push(((*zone).clone(), part.clone()));
         }

@@ -86,7 +86,7 @@ fn gauss_field(it: &Interp, a: &mut Args, subtype: &str, f: PointFn) -> Result<V
                 MchamlZone { mesh: Mesh::single(part.clone()), element: zone.element.clone(), ..Default::default() };
             for (e, nodes) in part.elems().enumerate() {
                 let mat = if mats.len() == 1 { &mats[0] } else { &mats[e] };
-                let x: Vec<[f64; 3]> = nodes.iter().map(|n| it.nodes.get(*n)).collect();
+                let mut x: Vec<[f64; 3]> = nodes.iter().map(|n| it.nodes.get(*n)).collect();
                 let u = &u;
                 // A missing component reads as 0 (a field given only in UX),
                 // but a node with no displacement at all means the field
@@ -98,8 +98,14 @@ fn gauss_field(it: &Interp, a: &mut Args, subtype: &str, f: PointFn) -> Result<V
                         e + 1
                     )));
                 }
-                let ue: Vec<f64> =
+                let mut ue: Vec<f64> =
                     nodes.iter().flat_map(|n| names.iter().map(move |c| u.get(*n, c).unwrap_or(0.0))).collect();
+                // Generalised plane strain: the zone's point and its unknowns.
+                if let Some(p) = zone.dpge {
+                    x.push(it.nodes.get(p));
+                    let point = crate::fem::gen_plane_strain::POINT_DOFS;
+                    ue.extend(point.iter().map(|c| u.get(p, c).unwrap_or(0.0)));
+                }
                 let g = f(form, part.ty, mode, &x, mat, &ue)
                     .map_err(|err| a.err(format!("element {}: {}", e + 1, fem_err(err).message)))?;
                 if z.comps.is_empty() {
@@ -556,7 +562,7 @@ fn model_mass(it: &Interp, model: Rc<Model>, fields: Vec<Rc<Mchaml>>, lumped: bo
         let (form, mode) = (formulation(zone), zone_mode(zone)?);
         let mat = material_for(zone, &fields);
         for part in &zone.mesh.parts {
-            let block = super::element_block::part_block(it, part, Symmetry::Symmetric, |_, x| {
+            let block = super::element_block::part_block(it, part, None, Symmetry::Symmetric, |_, x| {
                 element::mass(form, part.ty, mode, x, &mat, lumped).map_err(fem_err)
             })?;
             rig.blocks.extend(block);

@@ -61,6 +61,7 @@ pub(crate) fn model(it: &Interp, a: &mut Args, geo: &Mesh) -> Result<Vec<Value>>
             behaviour: behaviour.clone(),
             element: element.clone().unwrap_or_else(|| p.ty.name().into()),
             mode: it.opts.mode.clone(),
+            dpge: None,
         })
         .collect();
     Ok(vec![Value::Model(Rc::new(Model { zones, ties: Vec::new() }))])

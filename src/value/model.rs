@@ -24,6 +24,9 @@ pub struct ModelZone {
     pub element: String,
     /// Analysis mode at the time of MODE (PLAN CONT, AXIS, TRID, ...).
     pub mode: String,
+    /// The node carrying the out-of-plane strain of generalised plane
+    /// strain (MODE … 'DPGE' P), which every element of the zone shares.
+    pub dpge: Option<usize>,
 }
 
 /// A field by element: per zone, per element, per point, named components.
