@@ -67,9 +67,10 @@ fn tria(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         let ty = if dim == 1 { ElemType::Seg2 } else { ElemType::Tri3 };
         return Ok(vec![Value::Mesh(Rc::new(Mesh::single(Part::with(ty, conn))))]);
     }
-    // In 3D a closed surface of TRI3 is filled with tetrahedra, no node added.
+    // In 3D a closed surface of TRI3 is filled with tetrahedra (points are
+    // added only where the surface cannot be recovered otherwise).
     if dim == 3 && kinds.iter().all(|&t| t == ElemType::Tri3) {
-        return Ok(vec![Value::Mesh(Rc::new(mg::tet_fill::volu_closed("TRIA", &it.nodes, &geo)?))]);
+        return Ok(vec![Value::Mesh(Rc::new(mg::tet_fill::volu_closed("TRIA", &mut it.nodes, &geo)?))]);
     }
     if dim != 2 {
         return Err(a.err("the triangulation of the inside of lines is available in 2D (OPTI DIME 2)"));

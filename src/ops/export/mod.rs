@@ -175,10 +175,13 @@ fn sort(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 fn lire(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     const KINDS: [&str; 6] = ["GMSH", "STL", "CSV", "AVS", "NAS", "PROC"];
     let Some(kind) = a.keyword(&KINDS) else {
-        // A quoted word is a format gibi does not read ('MED', 'FEM'…);
-        // the directive's mesh name is written bare.
-        if a.next_name_span().is_none() && matches!(a.peek_right(), Some(Value::Mot(_))) {
-            a.req_keyword(&KINDS)?;
+        // Cast3M's other formats ('MED', 'FEM', 'UNV') are refused as
+        // formats; any other word is the directive's mesh name.
+        const OTHER_FORMATS: [&str; 3] = ["MED", "FEM", "UNV"];
+        if let Some(Value::Mot(w)) = a.peek_right() {
+            if OTHER_FORMATS.contains(&w.to_uppercase().as_str()) {
+                a.req_keyword(&KINDS)?;
+            }
         }
         return sort_mesh::lire(it, a);
     };
