@@ -18,6 +18,7 @@ pub mod dst;
 pub mod element;
 pub mod enclosed;
 pub mod flow;
+pub mod fourier;
 pub mod fofi;
 pub mod hooke_matrix;
 pub mod incomp;

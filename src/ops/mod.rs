@@ -35,6 +35,8 @@ mod fields;
 mod fit;
 mod fofi;
 mod format;
+mod dans;
+mod date;
 mod fourier;
 mod fracture;
 mod heat;
@@ -152,6 +154,8 @@ impl Registry {
             hist::OPS,
             ntab::OPS,
             fourier::OPS,
+            date::OPS,
+            dans::OPS,
             fit::OPS,
             spectra::OPS,
             weibull::OPS,
