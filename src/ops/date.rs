@@ -16,8 +16,20 @@ pub(crate) const OPS: &[OpDef] = &[OpDef {
     f: date,
 }];
 
-const MONTHS: [&str; 12] =
-    ["janvier", "fevrier", "mars", "avril", "mai", "juin", "juillet", "aout", "septembre", "octobre", "novembre", "decembre"];
+const MONTHS: [&str; 12] = [
+    "janvier",
+    "fevrier",
+    "mars",
+    "avril",
+    "mai",
+    "juin",
+    "juillet",
+    "aout",
+    "septembre",
+    "octobre",
+    "novembre",
+    "decembre",
+];
 
 fn date(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let letters = a.keyword(&["LETTRE"]).is_some();

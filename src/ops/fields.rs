@@ -570,9 +570,9 @@ pub(crate) fn extr_rigi(a: &mut Args, r: &Rigidite) -> Result<Vec<Value>> {
             Some((report, statuses)) => Ok(vec![super::reso::diagnostics(report, statuses)]),
             // No unilateral condition: nothing to report (DYNAMIC asks
             // every RIGIDITE whether it has contacts).
-            None if r.n_unilateral() == 0 => Ok(vec![Value::Table(Rc::new(std::cell::RefCell::new(
-                crate::value::Table::new(),
-            )))]),
+            None if r.n_unilateral() == 0 => {
+                Ok(vec![Value::Table(Rc::new(std::cell::RefCell::new(crate::value::Table::new())))])
+            }
             None => Err(a.err("this RIGIDITE has not been through a unilateral RESO or UNIL yet: no contact table")),
         },
         "MAIL" => {

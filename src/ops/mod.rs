@@ -22,6 +22,8 @@ mod contact;
 mod coor_field;
 mod covariance;
 mod curves;
+mod dans;
+mod date;
 mod dofs;
 mod elem_field;
 mod empty;
@@ -35,8 +37,6 @@ mod fields;
 mod fit;
 mod fofi;
 mod format;
-mod dans;
-mod date;
 mod fourier;
 mod fracture;
 mod heat;
@@ -111,6 +111,7 @@ mod rela_mili;
 mod replace;
 mod reso;
 mod restrict;
+mod rimp;
 mod rtens;
 mod simplex;
 mod special;
@@ -156,6 +157,7 @@ impl Registry {
             fourier::OPS,
             date::OPS,
             dans::OPS,
+            rimp::OPS,
             fit::OPS,
             spectra::OPS,
             weibull::OPS,
