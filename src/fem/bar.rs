@@ -9,7 +9,7 @@ pub fn dofs(mode: Mode) -> Result<&'static [&'static str], FemError> {
     match mode {
         Mode::PlanCont | Mode::PlanDefo => Ok(&["UX", "UY"]),
         Mode::Trid => Ok(&["UX", "UY", "UZ"]),
-        Mode::Axis => Err(FemError::Unsupported { form: "BARR", elem: "SEG2", mode: mode.name() }),
+        Mode::Axis | Mode::Fourier(_) => Err(FemError::Unsupported { form: "BARR", elem: "SEG2", mode: mode.name() }),
     }
 }
 

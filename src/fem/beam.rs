@@ -204,7 +204,9 @@ pub fn dofs(mode: Mode) -> Result<&'static [&'static str], FemError> {
     match mode {
         Mode::PlanCont | Mode::PlanDefo => Ok(&["UX", "UY", "RZ"]),
         Mode::Trid => Ok(&["UX", "UY", "UZ", "RX", "RY", "RZ"]),
-        Mode::Axis => Err(FemError::Unsupported { form: "POUT/TIMO", elem: "SEG2", mode: mode.name() }),
+        Mode::Axis | Mode::Fourier(_) => {
+            Err(FemError::Unsupported { form: "POUT/TIMO", elem: "SEG2", mode: mode.name() })
+        }
     }
 }
 

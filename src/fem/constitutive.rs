@@ -198,6 +198,7 @@ pub fn energy(sig: &GaussField, eps: &GaussField, elem: &'static str) -> Result<
 fn tensor(mode: Mode, sig: &GaussField, v: &[f64]) -> [f64; 6] {
     let names: [&str; 6] = match mode {
         Mode::Axis => ["SMRR", "SMZZ", "SMTT", "SMRZ", "", ""],
+        Mode::Fourier(_) => super::fourier::STRESSES,
         _ => ["SMXX", "SMYY", "SMZZ", "SMXY", "SMXZ", "SMYZ"],
     };
     names.map(|n| get(sig, v, n))
@@ -207,7 +208,7 @@ fn check_stress(f: Formulation, mode: Mode, sig: &GaussField, what: &'static str
     if !matches!(f, Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp) {
         return Err(FemError::Unsupported { form: f.name(), elem: what, mode: mode.name() });
     }
-    let first = if mode == Mode::Axis { "SMRR" } else { "SMXX" };
+    let first = if mode.is_axisymmetric() { "SMRR" } else { "SMXX" };
     if !sig.comps.contains(&first) {
         return Err(FemError::MissingComponent { comp: first, elem: what });
     }

@@ -53,7 +53,7 @@ pub fn dofs(mode: Mode) -> Result<&'static [&'static str], FemError> {
     match mode {
         Mode::Axis => Ok(&["UR", "UZ", "RT"]),
         Mode::PlanCont | Mode::PlanDefo => Ok(&["UX", "UY", "RZ"]),
-        Mode::Trid => Err(FemError::Unsupported { form: NAME, elem: "SEG2", mode: mode.name() }),
+        Mode::Trid | Mode::Fourier(_) => Err(FemError::Unsupported { form: NAME, elem: "SEG2", mode: mode.name() }),
     }
 }
 

@@ -26,6 +26,9 @@ pub enum Mode {
     PlanDefo,
     Axis,
     Trid,
+    /// Fourier harmonic n of an axisymmetric geometry (`OPTI MODE FOUR n`,
+    /// see [`super::fourier`]): n ≥ 0 symmetric, n < 0 antisymmetric.
+    Fourier(i32),
 }
 
 impl Mode {
@@ -35,6 +38,22 @@ impl Mode {
             Mode::PlanDefo => "PLAN DEFO",
             Mode::Axis => "AXIS",
             Mode::Trid => "TRID",
+            Mode::Fourier(_) => "FOUR",
+        }
+    }
+
+    /// AXIS or a Fourier harmonic: x is the radius and the weights carry r.
+    pub fn is_axisymmetric(self) -> bool {
+        matches!(self, Mode::Axis | Mode::Fourier(_))
+    }
+
+    /// The factor of r in the weights of the axisymmetric modes: the whole
+    /// turn 2π in AXIS, ∫cos²nθ dθ for a Fourier harmonic; None otherwise.
+    pub fn turn(self) -> Option<f64> {
+        match self {
+            Mode::Axis => Some(std::f64::consts::TAU),
+            Mode::Fourier(n) => Some(super::fourier::ring(n)),
+            _ => None,
         }
     }
 }
@@ -182,6 +201,7 @@ pub fn node_duals(f: Formulation, mode: Mode) -> Result<&'static [&'static str],
     let d = node_dofs(f, mode)?;
     Ok(match d.len() {
         _ if d[0] == "T" => super::thermal::DUALS,
+        _ if d[0] == "UR" && d.len() == 3 && d[2] == "UT" => &["FR", "FZ", "FT"],
         _ if d[0] == "UR" && d.len() == 3 => &["FR", "FZ", "MT"],
         _ if d[0] == "UR" => &["FR", "FZ"],
         2 => &["FX", "FY"],

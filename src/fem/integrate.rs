@@ -154,14 +154,17 @@ fn surface_in_space(
         return Err(FemError::WrongNodeCount { elem: ty.name(), expected: ty.nodes(), got: x.len() });
     }
     let ring = |p: [f64; 3]| -> Result<f64, FemError> {
-        if mode != Mode::Axis {
+        let Some(turn) = mode.turn() else {
             return Ok(1.0);
-        }
+        };
         let r: f64 = eval(ty, p).n.iter().zip(x).map(|(n, q)| n * q[0]).sum();
         if r < 0.0 {
-            return Err(FemError::Degenerate { elem: ty.name(), why: format!("AXIS element reaches r = {r:e} < 0") });
+            return Err(FemError::Degenerate {
+                elem: ty.name(),
+                why: format!("{} element reaches r = {r:e} < 0", mode.name()),
+            });
         }
-        Ok(std::f64::consts::TAU * r)
+        Ok(turn * r)
     };
     if !at_nodes {
         return Ok(Some(rule.iter().map(|&(p, w)| Ok(w * jacobian(ty, x, p) * ring(p)?)).collect::<Result<_, _>>()?));

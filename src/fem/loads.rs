@@ -94,16 +94,16 @@ pub fn pressure_load_signed(
         }
         let pt_p: f64 = s.n.iter().zip(p).map(|(a, b)| a * b).sum();
         let mut wt = w * pt_p * sign;
-        if mode == Mode::Axis {
+        if let Some(turn) = mode.turn() {
             let r: f64 = s.n.iter().zip(x).map(|(a, b)| a * b[0]).sum();
             if r < 0.0 {
                 return Err(FemError::Degenerate {
                     elem: face.name(),
-                    why: format!("AXIS face reaches r = {r:e} < 0"),
+                    why: format!("{} face reaches r = {r:e} < 0", mode.name()),
                 });
             }
             // The whole ring, as the stiffness (solid::points).
-            wt *= std::f64::consts::TAU * r;
+            wt *= turn * r;
         }
         for (fi, ni) in f.iter_mut().zip(&s.n) {
             for c in 0..dims {

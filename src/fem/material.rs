@@ -189,7 +189,8 @@ pub(crate) fn elasticity(mode: Mode, m: &Material, elem: &'static str) -> Result
             let d = lam + 2.0 * g;
             vec![vec![d, lam, lam, 0.0], vec![lam, d, lam, 0.0], vec![lam, lam, d, 0.0], vec![0.0, 0.0, 0.0, g]]
         }
-        Mode::Trid => {
+        // FOUR's strains are TRID's with r, z, θ for x, y, z.
+        Mode::Trid | Mode::Fourier(_) => {
             let d = lam + 2.0 * g;
             let mut k = vec![vec![0.0; 6]; 6];
             for i in 0..3 {

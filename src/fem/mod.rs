@@ -23,6 +23,7 @@ pub mod flow;
 pub mod fofi;
 pub mod front;
 pub mod gen_plane_strain;
+pub mod fourier;
 pub mod hooke_matrix;
 pub mod incomp;
 pub mod integrate;

@@ -72,6 +72,7 @@ pub fn dofs(mode: Mode) -> &'static [&'static str] {
         Mode::PlanCont | Mode::PlanDefo => &["UX", "UY"],
         Mode::Axis => &["UR", "UZ"],
         Mode::Trid => &["UX", "UY", "UZ"],
+        Mode::Fourier(_) => super::fourier::DOFS,
     }
 }
 
@@ -80,6 +81,7 @@ pub fn stress_comps(mode: Mode) -> Vec<&'static str> {
         Mode::PlanCont | Mode::PlanDefo => vec!["SMXX", "SMYY", "SMZZ", "SMXY"],
         Mode::Axis => vec!["SMRR", "SMZZ", "SMTT", "SMRZ"],
         Mode::Trid => vec!["SMXX", "SMYY", "SMZZ", "SMXY", "SMXZ", "SMYZ"],
+        Mode::Fourier(_) => super::fourier::STRESSES.to_vec(),
     }
 }
 
@@ -88,6 +90,7 @@ pub fn strain_comps(mode: Mode) -> Vec<&'static str> {
         Mode::PlanCont | Mode::PlanDefo => vec!["EPXX", "EPYY", "EPZZ", "GAXY"],
         Mode::Axis => vec!["EPRR", "EPZZ", "EPTT", "GARZ"],
         Mode::Trid => vec!["EPXX", "EPYY", "EPZZ", "GAXY", "GAXZ", "GAYZ"],
+        Mode::Fourier(_) => super::fourier::STRAINS.to_vec(),
     }
 }
 
@@ -184,16 +187,19 @@ pub(super) fn points(
                 .collect();
         let r: f64 = s.n.iter().zip(x).map(|(n, p)| n * p[0]).sum();
         let mut wt = w * det.abs() * t;
-        if mode == Mode::Axis {
+        if mode.is_axisymmetric() {
             if r <= 0.0 {
                 return Err(FemError::Degenerate {
                     elem: ty.name(),
-                    why: format!("AXIS element reaches r = {r:e} <= 0 (radius must be the first coordinate, positive)"),
+                    why: format!(
+                        "{} element reaches r = {r:e} <= 0 (radius must be the first coordinate, positive)",
+                        mode.name()
+                    ),
                 });
             }
             // Cast3M integrates AXIS over the whole ring: the reactions
             // of a pressure p on a disc of radius a sum to p·π·a².
-            wt *= std::f64::consts::TAU * r;
+            wt *= r * mode.turn().unwrap_or(1.0);
         }
         out.push(Point { n: s.n, dndx, w: wt, r });
     }
@@ -245,6 +251,9 @@ pub(super) fn bmat(mode: Mode, p: &Point) -> Vec<Vec<f64>> {
             b[5][c + 2] = g[1];
         }
         return b;
+    }
+    if let Mode::Fourier(n) = mode {
+        return super::fourier::bmat(n, &p.n, &p.dndx, p.r);
     }
     let mut b = vec![vec![0.0; 2 * nn]; 4];
     for (i, g) in p.dndx.iter().enumerate() {
@@ -406,6 +415,9 @@ pub fn field(
 /// them ([`gradient_comps`]): in the plane the terms along Z are zero; in
 /// AXIS the only term along θ is the hoop one, UT,T = UR/R.
 pub fn gradient(f: Formulation, ty: ElemType, mode: Mode, x: &[[f64; 3]], u: &[f64]) -> Result<GaussField, FemError> {
+    if let Mode::Fourier(_) = mode {
+        return Err(FemError::NotFor { what: "GRAD in mode FOUR", form: "massive" });
+    }
     let names = dofs(mode);
     let nc = names.len();
     let nd = ty.nodes() * nc;
@@ -421,6 +433,7 @@ pub fn gradient(f: Formulation, ty: ElemType, mode: Mode, x: &[[f64; 3]], u: &[f
             match mode {
                 Mode::Trid => (0..3).flat_map(|i| (0..3).map(move |j| (i, j))).map(|(i, j)| d(i, j)).collect(),
                 Mode::PlanCont | Mode::PlanDefo => vec![d(0, 0), d(0, 1), 0.0, d(1, 0), d(1, 1), 0.0, 0.0, 0.0, 0.0],
+                Mode::Fourier(_) => unreachable!("refused above"),
                 Mode::Axis => {
                     let hoop = p.n.iter().enumerate().map(|(a, n)| n * u[a * nc]).sum::<f64>() / p.r;
                     vec![d(0, 0), d(0, 1), 0.0, d(1, 0), d(1, 1), 0.0, 0.0, 0.0, hoop]

@@ -65,6 +65,7 @@ pub fn von_mises(f: Formulation, mode: Mode, m: &Material, sig: &GaussField) -> 
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp | Formulation::Dpge => {
             let names: [&str; 6] = match mode {
                 Mode::Axis => ["SMRR", "SMZZ", "SMTT", "SMRZ", "", ""],
+                Mode::Fourier(_) => super::fourier::STRESSES,
                 _ => ["SMXX", "SMYY", "SMZZ", "SMXY", "SMXZ", "SMYZ"],
             };
             sig.values

@@ -77,7 +77,7 @@ pub fn capacity(ty: ElemType, mode: Mode, x: &[[f64; 3]], m: &Material, lumped: 
 /// Names of the gradient components: T,X T,Y (T,Z in TRID), T,R T,Z in AXIS.
 pub fn gradient_comps(mode: Mode) -> Vec<&'static str> {
     match mode {
-        Mode::Axis => vec!["T,R", "T,Z"],
+        Mode::Axis | Mode::Fourier(_) => vec!["T,R", "T,Z"],
         Mode::Trid => vec!["T,X", "T,Y", "T,Z"],
         Mode::PlanCont | Mode::PlanDefo => vec!["T,X", "T,Y"],
     }

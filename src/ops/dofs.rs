@@ -33,7 +33,7 @@ pub fn rotations(it: &Interp) -> &'static [&'static str] {
 /// Force and moment names of the current mode (FORC/MOME with a vector).
 pub fn forces(it: &Interp) -> &'static [&'static str] {
     let m = it.opts.mode.as_str();
-    if m.starts_with("AXIS") {
+    if m.starts_with("AXIS") || m.starts_with("FOUR") {
         &["FR", "FZ"]
     } else if it.opts.dime == 3 || m == "TRID" {
         &["FX", "FY", "FZ"]

@@ -79,13 +79,15 @@ fn manu(a: &mut Args) -> Result<Curve> {
 
 /// `'COMP' ('REIM'|'MOPH') ('LEGE' T1 T2) (nameX) LX (name1) L1 (name2) L2`:
 /// a complex curve as TFR gives one, two curves on the same abscissae. The
-/// ordinates keep the names that make it a transform (PREE/PIMA or
-/// MODU/PHAS, which `* /` and TFRI read) unless the deck names them.
+/// form fixes the ordinates' names (PREE/PIMA or MODU/PHAS, which `* /`,
+/// RIMP and TFRI read, as Cast3M's subtypes): names the deck gives are
+/// labels, kept as the curves' legends unless 'LEGE' gives them.
 fn complex(a: &mut Args) -> Result<Evolution> {
     let moph = a.keyword(&["REIM", "MOPH"]) == Some("MOPH");
     let (mut t1, mut t2) = if moph { ("Amp", "Phase") } else { ("Re", "Im") };
     let (l1, l2);
-    if a.keyword(&["LEGE"]).is_some() {
+    let lege = a.keyword(&["LEGE"]).is_some();
+    if lege {
         l1 = a.word().ok_or_else(|| a.missing("the title of the first curve"))?;
         l2 = a.word().ok_or_else(|| a.missing("the title of the second curve"))?;
         (t1, t2) = (&l1, &l2);
@@ -93,9 +95,16 @@ fn complex(a: &mut Args) -> Result<Evolution> {
     let x_name = label(a).unwrap_or_default();
     let x = numbers(a).ok_or_else(|| a.missing("LISTREEL (the abscissae)"))?;
     let (d1, d2) = if moph { ("MODU", "PHAS") } else { ("PREE", "PIMA") };
-    let n1 = label(a).unwrap_or_else(|| d1.into());
+    let named = |l: Option<String>, t: &mut String| {
+        if let (Some(l), false) = (l, lege) {
+            *t = l;
+        }
+    };
+    let (mut t1, mut t2) = (t1.to_string(), t2.to_string());
+    named(label(a), &mut t1);
+    let (n1, n2) = (d1.to_string(), d2.to_string());
     let y1 = numbers(a).ok_or_else(|| a.missing("LISTREEL (the real parts or moduli)"))?;
-    let n2 = label(a).unwrap_or_else(|| d2.into());
+    named(label(a), &mut t2);
     let y2 = numbers(a).ok_or_else(|| a.missing("LISTREEL (the imaginary parts or phases)"))?;
     if x.len() != y1.len() || x.len() != y2.len() {
         return Err(a.err(format!(
@@ -115,7 +124,7 @@ fn complex(a: &mut Args) -> Result<Evolution> {
         x: x.clone(),
         y,
     };
-    Ok(Evolution { curves: vec![curve(t1, n1, y1), curve(t2, n2, y2)] })
+    Ok(Evolution { curves: vec![curve(&t1, n1, y1), curve(&t2, n2, y2)] })
 }
 
 /// A list's name: a word before the list, even one that names an

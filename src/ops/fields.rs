@@ -550,11 +550,29 @@ pub(crate) fn extr_chpo(it: &Interp, a: &mut Args, ch: &Chpoint) -> Result<Vec<V
 }
 
 pub(crate) fn extr_rigi(a: &mut Args, r: &Rigidite) -> Result<Vec<Value>> {
-    match a.req_keyword(&["MAIL", "COMP", "DIAG", "CONT"])? {
+    match a.req_keyword(&["MAIL", "COMP", "DIAG", "CONT", "RIGI"])? {
+        // The elementary matrices without the conditions, or the
+        // conditions alone (extr.notice).
+        "RIGI" => {
+            let mult = a.req_keyword(&["NOMU", "MULT"])? == "MULT";
+            let mut out = Rigidite::new(r.subtype);
+            if mult {
+                out.subtype = crate::value::rigidity::Subtype::Blocage;
+                out.conds = r.conds.clone();
+            } else {
+                out.blocks = r.blocks.clone();
+            }
+            Ok(vec![Value::Rigi(Rc::new(out))])
+        }
         // The unilateral solver's table of the last RESO/UNIL of this
         // object (the TABLE UNIL returns).
         "CONT" => match &r.cache.borrow().last_unil {
             Some((report, statuses)) => Ok(vec![super::reso::diagnostics(report, statuses)]),
+            // No unilateral condition: nothing to report (DYNAMIC asks
+            // every RIGIDITE whether it has contacts).
+            None if r.n_unilateral() == 0 => {
+                Ok(vec![Value::Table(Rc::new(std::cell::RefCell::new(crate::value::Table::new())))])
+            }
             None => Err(a.err("this RIGIDITE has not been through a unilateral RESO or UNIL yet: no contact table")),
         },
         "MAIL" => {

@@ -11,7 +11,7 @@ use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[OpDef {
     name: "MANU",
-    signature: "MANU TYPE P1 P2 … | MANU 'SUPE' P1 P2 … | MANU 'CHPO' GEO (n) COMP1 V1 … ('NATURE' 'DIFFUS'|'DISCRET') | MANU 'RIGI' ('TYPE' 'RIGIDITE'|'MASSE') GEO LISTMOTS ('DUAL' LISTMOTS) ('ANTI'|'QUEL') LISTREEL | MANU 'RIGI' CHPOINT 'DIAG' | MANU 'CHML' MMODEL|GEO COMP1 V1 … ('TYPE' word) (support word) | MANU 'CHAM' MMODEL ('TYPE' word) ('POSI' support) COMP ELEM POINT (ZONE) VALUE",
+    signature: "MANU TYPE P1 P2 … | MANU 'SUPE' P1 P2 … | MANU 'CHPO' GEO (n) COMP1 V1 … ('NATURE' 'DIFFUS'|'DISCRET') | MANU 'RIGI' ('TYPE' 'RIGIDITE'|'MASSE'|'AMORTISSEMENT') GEO LISTMOTS ('DUAL' LISTMOTS) ('ANTI'|'QUEL') LISTREEL | MANU 'RIGI' CHPOINT 'DIAG' | MANU 'CHML' MMODEL|GEO COMP1 V1 … ('TYPE' word) (support word) | MANU 'CHAM' MMODEL ('TYPE' word) ('POSI' support) COMP ELEM POINT (ZONE) VALUE",
     doc: "Build a mesh from points, a field from values, a constant field by element on every zone of a model \
           (at the points SIGM uses, or the element nodes with 'NOEUD'; subtype from 'TYPE', default SCALAIRE; \
           other support words such as 'STRESSES' change nothing for a constant), or a matrix from a list of values.",
@@ -344,8 +344,9 @@ fn chpo(it: &mut Interp, a: &mut Args, early: Option<Rc<Mesh>>) -> Result<Vec<Va
 fn rigi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let mut subtype = Subtype::Rigidite;
     if a.keyword(&["TYPE"]).is_some() {
-        subtype = match a.req_keyword(&["RIGIDITE", "MASSE"])? {
+        subtype = match a.req_keyword(&["RIGIDITE", "MASSE", "AMORTISSEMENT"])? {
             "MASSE" => Subtype::Masse,
+            "AMORTISSEMENT" => Subtype::Amortissement,
             _ => Subtype::Rigidite,
         };
     }

@@ -23,6 +23,7 @@ mod coor_field;
 mod covariance;
 mod curves;
 mod dans;
+mod date;
 mod dofs;
 mod elem_field;
 mod element_block;
@@ -120,6 +121,7 @@ mod rela_model;
 mod replace;
 mod reso;
 mod restrict;
+mod rimp;
 mod rtens;
 mod simplex;
 mod special;
@@ -165,6 +167,8 @@ impl Registry {
             hist::OPS,
             ntab::OPS,
             fourier::OPS,
+            date::OPS,
+            rimp::OPS,
             fit::OPS,
             excellence::OPS,
             front::OPS,

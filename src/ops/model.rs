@@ -424,6 +424,9 @@ pub(crate) fn zone_mode(zone: &ModelZone) -> Result<Mode> {
         "PLAN DEFO" | "PLAN GENE" => Mode::PlanDefo,
         "AXIS" => Mode::Axis,
         "TRID" => Mode::Trid,
+        m if m.strip_prefix("FOUR ").is_some_and(|n| n.parse::<i32>().is_ok()) => {
+            Mode::Fourier(m[5..].parse().unwrap_or(0))
+        }
         m => return Err(Error::runtime(format!("analysis mode {} is not supported by the element library", m))),
     })
 }

@@ -123,7 +123,7 @@ pub(crate) fn forces(it: &Interp, a: &Args, model: &Model, fields: &[Rc<Mchaml>]
         let mode = zone_mode(mz)?;
         let width = material_for(mz, fields).dim3.unwrap_or(1.0);
         let names: &[&str] = match mode {
-            Mode::Axis => &["FR", "FZ"],
+            Mode::Axis | Mode::Fourier(_) => &["FR", "FZ"],
             Mode::Trid => &["FX", "FY", "FZ"],
             _ => &["FX", "FY"],
         };
@@ -138,7 +138,7 @@ pub(crate) fn forces(it: &Interp, a: &Args, model: &Model, fields: &[Rc<Mchaml>]
                     |k: usize| v.get(if z.at_nodes { k } else { 0 }).and_then(|r| r.get(c)).copied().unwrap_or(0.0);
                 let x: Vec<[f64; 3]> = nodes.iter().map(|n| it.nodes.get(*n)).collect();
                 // Per unit thickness in the plane modes, or per DIM3.
-                let scale = if matches!(mode, Mode::Axis | Mode::Trid) { 1.0 } else { width };
+                let scale = if matches!(mode, Mode::Axis | Mode::Fourier(_) | Mode::Trid) { 1.0 } else { width };
                 let p: Vec<f64> = (0..nodes.len()).map(|k| scale * at(k)).collect();
                 let f = loads::pressure_load_signed(part.ty, mode, &x, &p, sign).map_err(|err| {
                     a.err(format!(

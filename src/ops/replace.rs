@@ -130,6 +130,7 @@ fn same(a: &Value, b: &Value) -> bool {
         (Value::ListEnti(x), Value::ListEnti(y)) => Rc::ptr_eq(x, y),
         (Value::ListMots(x), Value::ListMots(y)) => Rc::ptr_eq(x, y),
         (Value::ListChpo(x), Value::ListChpo(y)) => Rc::ptr_eq(x, y),
+        (Value::Evol(x), Value::Evol(y)) => Rc::ptr_eq(x, y),
         _ => false,
     }
 }
@@ -137,7 +138,7 @@ fn same(a: &Value, b: &Value) -> bool {
 /// Bind `new` wherever `old` was bound: names of every frame and entries
 /// of every table reachable from them (each table visited once: tables
 /// may hold themselves).
-fn rebind(it: &mut Interp, old: &Value, new: &Value) {
+pub(super) fn rebind(it: &mut Interp, old: &Value, new: &Value) {
     let mut tables: Vec<Rc<RefCell<Table>>> = Vec::new();
     for f in it.store.frames.iter_mut() {
         for v in f.vars.values_mut() {

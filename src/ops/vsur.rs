@@ -37,7 +37,7 @@ fn vsur(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         let (form, mode) = (formulation(z), zone_mode(z)?);
         let comps: &[&str] = match mode {
             Mode::Trid => &["VX", "VY", "VZ"],
-            Mode::Axis => &["VR", "VZ"],
+            Mode::Axis | Mode::Fourier(_) => &["VR", "VZ"],
             _ => &["VX", "VY"],
         };
         let mut nz = MchamlZone { mesh: z.mesh.clone(), element: z.element.clone(), ..Default::default() };

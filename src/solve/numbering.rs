@@ -105,6 +105,10 @@ impl Assembled {
                     // CMCT) holds LX as an ordinary unknown, loaded by FLX.
                     (None, None) => match self.find(n, c) {
                         Some(i) => f[i] += v,
+                        // A zero value on a row the system does not have
+                        // changes nothing (the FLX of K u for a K with
+                        // conditions, solved against M alone).
+                        None if v == 0.0 => {}
                         None => return Err(LoadError::NoCondition { node: n }),
                     },
                 }
@@ -112,6 +116,7 @@ impl Assembled {
             }
             match self.find(n, c) {
                 Some(i) => f[i] += v,
+                None if v == 0.0 => {}
                 None => return Err(LoadError::NoUnknown { node: n, comp: c.to_string() }),
             }
         }

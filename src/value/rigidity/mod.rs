@@ -25,6 +25,8 @@ pub enum Subtype {
     /// Heat conduction and capacity matrices (COND, CAPA).
     Conductivite,
     Capacite,
+    /// Damping (MANU 'RIGI' 'TYPE' 'AMORTISSEMENT').
+    Amortissement,
 }
 
 impl Subtype {
@@ -35,6 +37,7 @@ impl Subtype {
             Subtype::Blocage => "BLOCAGE",
             Subtype::Conductivite => "CONDUCTIVITE",
             Subtype::Capacite => "CAPACITE",
+            Subtype::Amortissement => "AMORTISSEMENT",
         }
     }
 }

@@ -75,6 +75,36 @@ pub fn combine(e: &Evolution, g: &Evolution, op: Bin) -> Option<Result<Evolution
     Some(Ok(Evolution { curves: vec![curve(&e.curves[0], y1), curve(&e.curves[1], y2)] }))
 }
 
+/// RIMP: the same complex curve in the other form (PREE/PIMA ↔ MODU/PHAS,
+/// phases in degrees); `None` when `e` is not a transform.
+pub fn switch_form(e: &Evolution) -> Option<Evolution> {
+    let f = form(e)?;
+    let (names, legends) =
+        if f == Form::ReIm { (["MODU", "PHAS"], ["Amp", "Phase"]) } else { (["PREE", "PIMA"], ["Re", "Im"]) };
+    let (mut y1, mut y2) = (vec![], vec![]);
+    for (p, q) in e.curves[0].y.iter().zip(&e.curves[1].y) {
+        let (re, im) = to_reim(f, *p, *q);
+        if f == Form::ReIm {
+            y1.push(re.hypot(im));
+            y2.push(if re == 0.0 && im == 0.0 { 0.0 } else { im.atan2(re).to_degrees() });
+        } else {
+            y1.push(re);
+            y2.push(im);
+        }
+    }
+    let curve = |k: usize, y: Vec<f64>| {
+        let c = &e.curves[k];
+        // A legend TFR or EVOL 'COMP' chose follows the form; a deck's own stays.
+        let legend = if ["Amp", "Phase", "Re", "Im"].contains(&c.legend.as_str()) {
+            legends[k].into()
+        } else {
+            c.legend.clone()
+        };
+        Curve { legend, y_name: names[k].into(), y, ..c.clone() }
+    };
+    Some(Evolution { curves: vec![curve(0, y1), curve(1, y2)] })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -92,5 +122,14 @@ mod tests {
         // a zero phase in the divisor is not a division by zero
         let r = combine(&moph(6.0, 0.0), &moph(2.0, 0.0), Bin::Div).unwrap().unwrap();
         assert!((r.curves[0].y[0] - 3.0).abs() < 1e-12 && r.curves[1].y[0] == 0.0);
+    }
+
+    #[test]
+    fn switch_and_back() {
+        let r = switch_form(&moph(2.0, 90.0)).unwrap();
+        assert_eq!(r.curves[0].y_name, "PREE");
+        assert!(r.curves[0].y[0].abs() < 1e-12 && (r.curves[1].y[0] - 2.0).abs() < 1e-12);
+        let b = switch_form(&r).unwrap();
+        assert!((b.curves[0].y[0] - 2.0).abs() < 1e-12 && (b.curves[1].y[0] - 90.0).abs() < 1e-9);
     }
 }
