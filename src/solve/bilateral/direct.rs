@@ -220,7 +220,7 @@ impl Factorization {
             self.solve_mat(&mut r)?;
             let refined = &z + &r;
             let eta_refined = self.backward_error(&b, &refined);
-            if eta_refined.is_finite() && !(eta_refined > eta) {
+            if eta_refined.is_finite() && (eta.is_nan() || eta_refined <= eta) {
                 z = refined;
                 eta = eta_refined;
             }
