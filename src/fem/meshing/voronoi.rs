@@ -352,7 +352,9 @@ pub fn partition_2d(
         *degree.entry(s[0]).or_default() += 1;
         *degree.entry(s[1]).or_default() += 1;
     }
-    if let Some((&p, _)) = degree.iter().find(|(_, &d)| d % 2 == 1) {
+    // The first open end in node order, so that the message is the same
+    // from one run to the next (a HashMap iterates in a random order).
+    if let Some(p) = degree.iter().filter(|(_, &d)| d % 2 == 1).map(|(&p, _)| p).min_by_key(|&p| lines.nodes[p]) {
         return fail(op, format!("the boundary is not closed: its node {} ends a line", lines.nodes[p] + 1));
     }
     let mut lo = [f64::INFINITY; 2];
