@@ -51,7 +51,7 @@ fn extr(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         return fields::extr_rigi(a, &r);
     }
     if let Some(m) = a.opt::<Rc<Mchaml>>() {
-        return fields::extr_mchaml(a, &m);
+        return fields::extr_mchaml(it, a, &m);
     }
     if let Some(m) = a.opt::<Rc<Model>>() {
         return fields::extr_model(a, &m);

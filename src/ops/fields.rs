@@ -393,7 +393,7 @@ pub(crate) fn extremum(a: &mut Args, max: bool, use_abs: bool) -> Result<Option<
 
 /// EXTR on an element field: `'COMP'` (the component names), `'MAIL'`
 /// (the mesh it lies on), or one value `COMP (zone (element (point)))`.
-pub(crate) fn extr_mchaml(a: &mut Args, m: &Mchaml) -> Result<Vec<Value>> {
+pub(crate) fn extr_mchaml(it: &mut Interp, a: &mut Args, m: &Mchaml) -> Result<Vec<Value>> {
     if a.keyword_next(&["MAIL"]).is_some() {
         let mesh = m.zones.iter().fold(Mesh::default(), |acc, z| acc.union(&z.mesh));
         return Ok(vec![Value::Mesh(Rc::new(mesh))]);
@@ -410,9 +410,13 @@ pub(crate) fn extr_mchaml(a: &mut Args, m: &Mchaml) -> Result<Vec<Value>> {
         }
         return Ok(vec![Value::ListMots(Rc::new(names))]);
     }
+    // A vector property (CARA/MATE 'VECT') is one component whose value is
+    // a POINT. Its name is also an operator's (VECT), so it is matched
+    // before words are read as component names.
+    let vector = a.keyword_next(&["VECT"]).filter(|_| m.zones.iter().any(|z| z.vectors.contains_key("VECT")));
     // The component may also follow the zone, element and point numbers
     // (Cast3M reads the arguments by type).
-    let comp = a.word_not_operator();
+    let comp = if vector.is_some() { None } else { a.word_not_operator() };
     let mut idx = [1i64; 3];
     for k in idx.iter_mut() {
         match a.opt::<i64>() {
@@ -420,8 +424,12 @@ pub(crate) fn extr_mchaml(a: &mut Args, m: &Mchaml) -> Result<Vec<Value>> {
             None => break,
         }
     }
-    let comp = comp.or_else(|| a.word_not_operator()).ok_or_else(|| a.missing("a component"))?;
     let z = m.zones.get((idx[0] - 1).max(0) as usize).ok_or_else(|| a.err(format!("no zone {}", idx[0])))?;
+    if let Some(name) = vector {
+        let v = *z.vectors.get(name).ok_or_else(|| a.err(format!("zone {} has no vector {}", idx[0], name)))?;
+        return Ok(vec![Value::Point(it.nodes.push(v, 0.0))]);
+    }
+    let comp = comp.or_else(|| a.word_not_operator()).ok_or_else(|| a.missing("a component"))?;
     if let Some(v) = z.constants.get(&comp) {
         return Ok(vec![Value::Float(*v)]);
     }

@@ -7,7 +7,7 @@ use super::{Args, OpDef};
 use crate::error::Result;
 use crate::eval::Interp;
 use crate::fem::mesh::Mesh;
-use crate::fem::meshing::deduce::node_map;
+use crate::fem::meshing::deduce::{moved_masters, node_map};
 use crate::fem::meshing::generatrix::generatrix;
 use crate::fem::meshing::motion::Motion;
 use crate::value::{Chpoint, Key, Table, Value};
@@ -25,8 +25,8 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "DEDU",
-        signature: "OBJ1 .. OBJN DEDU 'TRAN' GEO1 GEO2 | DEDU 'TRAN' OBJ1 .. OBJN GEO1 GEO2 | OBJ1 .. OBJN DEDU angle P1 (P2) 'ROTA' GEO1 GEO2",
-        doc: "Each object (POINT, MAILLAGE, CHPOINT, MCHAML, MMODEL, or a TABLE of them) carried from GEO1 onto GEO2, a mesh of the same topology: node k of element e of GEO1 becomes node k of element e of GEO2. Every node of the objects must be a node of GEO1. With 'ROTA' (GEO2 being GEO1 turned by angle degrees about P1, about the axis P1 P2 in 3D; 'ROTA' may also come first) the vector components of nodal fields (UX UY UZ, FX…, RX…, MX…) and the stress and strain tensors of element fields are turned too.",
+        signature: "DEDU MAI2 MAI_ANC MAI_NOU | OBJ1 .. OBJN DEDU 'TRAN' GEO1 GEO2 | DEDU 'TRAN' OBJ1 .. OBJN GEO1 GEO2 | OBJ1 .. OBJN DEDU angle P1 (P2) 'ROTA' GEO1 GEO2",
+        doc: "DEDU MAI2 MAI_ANC MAI_NOU: MAI2 moved by the affine map that sends the master points MAI_ANC (3 in 2D, 4 in 3D) to MAI_NOU, on new nodes. Otherwise each object (POINT, MAILLAGE, CHPOINT, MCHAML, MMODEL, or a TABLE of them) carried from GEO1 onto GEO2, a mesh of the same topology: node k of element e of GEO1 becomes node k of element e of GEO2. Every node of the objects must be a node of GEO1. With 'ROTA' (GEO2 being GEO1 turned by angle degrees about P1, about the axis P1 P2 in 3D; 'ROTA' may also come first) the vector components of nodal fields (UX UY UZ, FX…, RX…, MX…) and the stress and strain tensors of element fields are turned too.",
         example: "u2 = dedu 'TRAN' (coor 1 bas) bas (bas plus (0. 1.)) ;",
         f: dedu,
     },
@@ -44,6 +44,17 @@ fn dedu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         objects.push(v);
     }
     objects.reverse();
+    // `DEDU MAI2 MAI_ANC MAI_NOU`: a mesh moved by master nodes.
+    if objects.is_empty() && a.peek_right().is_some_and(|v| matches!(v, Value::Mesh(_))) {
+        let mesh = a.req::<Rc<Mesh>>()?;
+        let old = a.req::<Rc<Mesh>>()?;
+        let new = a.req::<Rc<Mesh>>()?;
+        if a.keyword(&["REGU"]).is_some() {
+            return Err(a.err("DEDU … 'REGU' (smoothing the moved mesh) is not implemented"));
+        }
+        let dim = it.opts.dime;
+        return Ok(mesh_val(moved_masters(&mut it.nodes, &mesh, &old, &new, dim)?));
+    }
     // 'TRAN', or a rotation: `angle P1 (P2) 'ROTA'` or `'ROTA' angle P1 (P2)`
     // (P2, the axis, in 3D).
     let turn = if a.keyword(&["TRAN"]).is_some() {
@@ -51,7 +62,7 @@ fn dedu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     } else {
         let rota_first = a.keyword(&["ROTA"]).is_some();
         let angle_deg = a.opt_num().ok_or_else(|| {
-            a.err("gibi implements DEDU 'TRAN' and 'ROTA' (the forms that move mesh nodes and 'ADAP' are not implemented)")
+            a.err("gibi implements DEDU 'TRAN', 'ROTA' and a mesh moved by master nodes fixing an affine map ('ADAP' is not implemented)")
         })?;
         let centre = super::mesh::vector(it, a).ok_or_else(|| a.missing("POINT (the centre)"))?;
         let axis_end = match it.opts.dime >= 3 {
