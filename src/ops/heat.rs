@@ -67,18 +67,7 @@ pub(crate) fn model(it: &Interp, a: &mut Args, geo: &Mesh) -> Result<Vec<Value>>
             .err(format!("a THERMIQUE model in mode {} has no element on {}", mode, p.ty.name()))
             .note("conduction is modelled on surfaces (TRI3, QUA4, TRI6, QUA8) in 2D and volumes in TRID"));
     }
-    let zones = geo
-        .parts
-        .iter()
-        .map(|p| ModelZone {
-            mesh: Mesh::single(p.clone()),
-            formulation: FORMULATION.into(),
-            behaviour: behaviour.clone(),
-            element: p.ty.name().into(),
-            mode: mode.clone(),
-            dpge: None,
-        })
-        .collect();
+    let zones = geo.parts.iter().map(|p| ModelZone::on_part(p, FORMULATION, &behaviour, None, &mode)).collect();
     Ok(vec![Value::Model(Rc::new(Model { zones, ties: Vec::new() }))])
 }
 

@@ -144,14 +144,7 @@ fn mode_on(it: &mut Interp, a: &mut Args, geo: Mesh) -> Result<Vec<Value>> {
     // Massive elements follow the mesh: one zone per element type.
     if element.is_empty() || ElemType::from_name(&element).is_some() {
         for p in &geo.parts {
-            model.zones.push(ModelZone {
-                mesh: Mesh::single(p.clone()),
-                formulation: formulation.clone(),
-                behaviour: behaviour.clone(),
-                element: p.ty.name().into(),
-                mode: mode.clone(),
-                dpge,
-            });
+            model.zones.push(ModelZone { dpge, ..ModelZone::on_part(p, &formulation, &behaviour, None, &mode) });
         }
     } else {
         model.zones.push(ModelZone { mesh: geo, formulation, behaviour, element, mode, dpge: None });
@@ -181,18 +174,8 @@ fn incompressible_model(
     if (ty.dim() == 3) != (mode == "TRID") {
         return Err(a.err(format!("{} elements are not available in mode {}", element, mode)));
     }
-    let zones = geo
-        .parts
-        .iter()
-        .map(|p| ModelZone {
-            mesh: Mesh::single(p.clone()),
-            formulation: formulation.clone(),
-            behaviour: behaviour.clone(),
-            element: element.clone(),
-            mode: mode.clone(),
-            dpge: None,
-        })
-        .collect();
+    let zones =
+        geo.parts.iter().map(|p| ModelZone::on_part(p, &formulation, &behaviour, Some(&element), &mode)).collect();
     Ok(vec![Value::Model(Rc::new(Model { zones, ties: Vec::new() }))])
 }
 
@@ -236,18 +219,7 @@ fn contact_model(it: &mut Interp, a: &mut Args, geo: &Mesh) -> Result<Vec<Value>
             .err(format!("a contact model is made on contact elements, not on {} elements", p.ty.name()))
             .note("make them with IMPO 'MAIL' line1 line2 (surfaces in 3D)"));
     }
-    let zones = geo
-        .parts
-        .iter()
-        .map(|p| ModelZone {
-            mesh: Mesh::single(p.clone()),
-            formulation: "CONTACT".into(),
-            behaviour: behaviour.clone(),
-            element: p.ty.name().into(),
-            mode: it.opts.mode.clone(),
-            dpge: None,
-        })
-        .collect();
+    let zones = geo.parts.iter().map(|p| ModelZone::on_part(p, "CONTACT", &behaviour, None, &it.opts.mode)).collect();
     Ok(vec![Value::Model(Rc::new(Model { zones, ties: Vec::new() }))])
 }
 

@@ -32,14 +32,7 @@ pub(super) fn shells_by_geometry(
         };
         match zones.iter_mut().find(|z| &z.element == name) {
             Some(z) => z.mesh.parts.push(p.clone()),
-            None => zones.push(ModelZone {
-                mesh: Mesh::single(p.clone()),
-                formulation: formulation.clone(),
-                behaviour: behaviour.clone(),
-                element: name.clone(),
-                mode: mode.clone(),
-                dpge: None,
-            }),
+            None => zones.push(ModelZone::on_part(p, &formulation, &behaviour, Some(name), &mode)),
         }
     }
     Ok(vec![Value::Model(Rc::new(Model { zones, ties: Vec::new() }))])

@@ -55,14 +55,7 @@ pub(crate) fn model(it: &Interp, a: &mut Args, geo: &Mesh) -> Result<Vec<Value>>
     let zones = geo
         .parts
         .iter()
-        .map(|p| ModelZone {
-            mesh: Mesh::single(p.clone()),
-            formulation: FORMULATION.into(),
-            behaviour: behaviour.clone(),
-            element: element.clone().unwrap_or_else(|| p.ty.name().into()),
-            mode: it.opts.mode.clone(),
-            dpge: None,
-        })
+        .map(|p| ModelZone::on_part(p, FORMULATION, &behaviour, element.as_deref(), &it.opts.mode))
         .collect();
     Ok(vec![Value::Model(Rc::new(Model { zones, ties: Vec::new() }))])
 }

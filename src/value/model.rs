@@ -1,6 +1,6 @@
 //! MMODEL, MCHAML and EVOLUTIO objects.
 
-use crate::fem::mesh::Mesh;
+use crate::fem::mesh::{Mesh, Part};
 use std::collections::BTreeMap;
 
 /// A model: a mesh tied to a formulation and an element type (`MODE`).
@@ -27,6 +27,28 @@ pub struct ModelZone {
     /// The node carrying the out-of-plane strain of generalised plane
     /// strain (MODE … 'DPGE' P), which every element of the zone shares.
     pub dpge: Option<usize>,
+}
+
+impl ModelZone {
+    /// The zone of one mesh part, as every MODE form makes them: the
+    /// element named after the part's geometry unless one is given, and no
+    /// generalised-plane-strain point.
+    pub fn on_part(
+        part: &Part,
+        formulation: &str,
+        behaviour: &[String],
+        element: Option<&str>,
+        mode: &str,
+    ) -> ModelZone {
+        ModelZone {
+            mesh: Mesh::single(part.clone()),
+            formulation: formulation.into(),
+            behaviour: behaviour.to_vec(),
+            element: element.unwrap_or(part.ty.name()).into(),
+            mode: mode.into(),
+            dpge: None,
+        }
+    }
 }
 
 /// A field by element: per zone, per element, per point, named components.
