@@ -65,14 +65,7 @@ impl Tets {
         if pts.iter().flatten().any(|x| !x.is_finite()) {
             return fail(op, "a point has a coordinate that is not a finite number");
         }
-        let mut lo = [f64::INFINITY; 3];
-        let mut hi = [f64::NEG_INFINITY; 3];
-        for p in pts {
-            for k in 0..3 {
-                lo[k] = lo[k].min(p[k]);
-                hi[k] = hi[k].max(p[k]);
-            }
-        }
+        let (lo, hi) = bounding_box(pts);
         let mid = [0, 1, 2].map(|k| 0.5 * (lo[k] + hi[k]));
         let size = (0..3).map(|k| hi[k] - lo[k]).fold(0.0, f64::max).max(1e-300);
         // Far corners: the hull tetrahedra they spoil are only the very flat
@@ -254,4 +247,17 @@ impl Tets {
     pub fn inner(&self) -> Vec<[usize; 4]> {
         (0..self.tets.len()).filter(|&t| self.alive[t] && !self.touches_corner(t)).map(|t| self.tets[t]).collect()
     }
+}
+
+/// The smallest and largest coordinates of the points.
+pub(crate) fn bounding_box(pts: &[[f64; 3]]) -> ([f64; 3], [f64; 3]) {
+    let mut lo = [f64::INFINITY; 3];
+    let mut hi = [f64::NEG_INFINITY; 3];
+    for p in pts {
+        for k in 0..3 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    (lo, hi)
 }

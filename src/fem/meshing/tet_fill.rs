@@ -192,14 +192,7 @@ fn surface_of(op: &'static str, tris: &[[usize; 3]], ids: &[usize]) -> Result<Su
 /// that recover the surface get stuck; in general position they do not.
 /// The tetrahedra are the same node numbers with the true coordinates.
 fn fill(op: &'static str, pts: &[[f64; 3]], s: &Surface, seed: u64) -> Result<Vec<[usize; 4]>, Failure> {
-    let mut lo = [f64::INFINITY; 3];
-    let mut hi = [f64::NEG_INFINITY; 3];
-    for p in pts {
-        for k in 0..3 {
-            lo[k] = lo[k].min(p[k]);
-            hi[k] = hi[k].max(p[k]);
-        }
-    }
+    let (lo, hi) = super::tet_delaunay::bounding_box(pts);
     let size = (0..3).map(|k| hi[k] - lo[k]).fold(0.0, f64::max);
     let mut r: u64 = 0x2545_f491_4f6c_dd1d ^ (seed.wrapping_mul(0x9e37_79b9_7f4a_7c15));
     let mut next = move || {

@@ -176,14 +176,7 @@ pub fn partition_3d(
     if s_invalid(surf) {
         return fail(op, "a boundary point has a coordinate that is not a finite number");
     }
-    let mut lo = [f64::INFINITY; 3];
-    let mut hi = [f64::NEG_INFINITY; 3];
-    for p in surf.pts {
-        for k in 0..3 {
-            lo[k] = lo[k].min(p[k]);
-            hi[k] = hi[k].max(p[k]);
-        }
-    }
+    let (lo, hi) = super::tet_delaunay::bounding_box(surf.pts);
     let size = (0..3).map(|k| hi[k] - lo[k]).fold(0.0, f64::max);
     if surf.tris.is_empty() || size <= 0.0 {
         return fail(op, "the boundary encloses no volume");
