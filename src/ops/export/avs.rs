@@ -138,12 +138,7 @@ fn cell_values(a: &Args, geo: &Mesh, c: &Mchaml) -> Result<Vec<(String, Vec<f64>
 /// TABLE (MAILSUPP, LEMAILLA, SOUMAILA, LECHPOIN, LEMCHAML, and each
 /// global value under its label cut to 4 characters, such as 'time').
 pub(super) fn lire(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let file = it
-        .opts
-        .text("LECT")
-        .map(|s| s.trim().to_string())
-        .filter(|s| !s.is_empty())
-        .ok_or_else(|| a.err("LIRE 'AVS' reads the file named by OPTI LECT 'name', and none is named"))?;
+    let file = super::lect_file(it, a, "LIRE 'AVS'")?;
     let (pos, line) = match &it.exports.avs_read {
         Some((f, pos, line)) if *f == file => (*pos, *line),
         _ => (0, 0),

@@ -127,6 +127,21 @@ fn wrote(it: &mut Interp, path: &Path) {
     }
 }
 
+/// The file OPTI SORT names, else Cast3M's logical unit 7 ('fort.7').
+fn sort_file(it: &Interp) -> String {
+    it.opts.text("SORT").map(str::trim).filter(|s| !s.is_empty()).unwrap_or("fort.7").to_string()
+}
+
+/// The file OPTI LECT names; `what` (the operation) words the error when
+/// none is named.
+fn lect_file(it: &Interp, a: &Args, what: &str) -> Result<String> {
+    it.opts
+        .text("LECT")
+        .map(|s| s.trim().to_string())
+        .filter(|s| !s.is_empty())
+        .ok_or_else(|| a.err(format!("{} reads the file named by OPTI LECT 'name', and none is named", what)))
+}
+
 /// The base name set by OPTI SORT, without a known extension.
 fn sort_base(it: &Interp) -> Option<String> {
     base_of(it.opts.text("SORT")?)

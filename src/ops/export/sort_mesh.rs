@@ -56,7 +56,7 @@ pub(super) fn sort(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         }
         data.meshes.push((n, m));
     }
-    let file = it.opts.text("SORT").map(str::trim).filter(|s| !s.is_empty()).unwrap_or("fort.7").to_string();
+    let file = super::sort_file(it);
     let p = out_path(it, &file)?;
     std::fs::write(&p, named_meshes::write(&data))
         .map_err(|e| Error::new(ErrorKind::Write, format!("cannot write {}: {}", p.display(), e)))?;
@@ -77,12 +77,7 @@ pub(super) fn lire(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             n
         }
     };
-    let file = it
-        .opts
-        .text("LECT")
-        .map(|s| s.trim().to_string())
-        .filter(|s| !s.is_empty())
-        .ok_or_else(|| a.err("LIRE reads the file named by OPTI LECT 'name', and none is named"))?;
+    let file = super::lect_file(it, a, "LIRE")?;
     let path = it.files.check_read(&file)?;
     let text = std::fs::read_to_string(&path).map_err(|e| a.err(format!("cannot read '{}': {}", file, e)))?;
     let data = named_meshes::read(&text).map_err(|e| a.err(format!("'{}': {}", file, e)))?;

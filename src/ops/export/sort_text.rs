@@ -18,8 +18,7 @@ pub(super) fn sort(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     if parts.is_empty() {
         return Err(a.missing("MOT, ENTIER or FLOTTANT"));
     }
-    // Without a name, Cast3M writes to its logical unit 7.
-    let name = it.opts.text("SORT").map(str::trim).filter(|s| !s.is_empty()).unwrap_or("fort.7").to_string();
+    let name = super::sort_file(it);
     let p = out_path(it, &name)?;
     let append = it.exports.text_written.as_deref() == Some(name.as_str());
     let file = std::fs::OpenOptions::new().create(true).write(true).append(append).truncate(!append).open(&p);
