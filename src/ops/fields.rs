@@ -413,7 +413,8 @@ pub(crate) fn extr_mchaml(it: &mut Interp, a: &mut Args, m: &Mchaml) -> Result<V
     // A vector property (CARA/MATE 'VECT') is one component whose value is
     // a POINT. Its name is also an operator's (VECT), so it is matched
     // before words are read as component names.
-    let vector = a.keyword_next(&["VECT"]).filter(|_| m.zones.iter().any(|z| z.vectors.contains_key("VECT")));
+    let has_vector = m.zones.iter().any(|z| z.vectors.contains_key("VECT"));
+    let vector = if has_vector { a.keyword_next(&["VECT"]) } else { None };
     // The component may also follow the zone, element and point numbers
     // (Cast3M reads the arguments by type).
     let comp = if vector.is_some() { None } else { a.word_not_operator() };
