@@ -200,8 +200,9 @@ fn suit(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     Ok(vec![Value::ListChpo(Rc::new(out))])
 }
 
-/// LISTMOTS hold 4-character words (trailing blanks dropped).
-fn short(w: &str) -> String {
+/// LISTMOTS hold 4-character words (trailing blanks dropped); a longer
+/// word looked up in one is compared by the same first four characters.
+pub(crate) fn short(w: &str) -> String {
     w.chars().take(4).collect::<String>().trim_end().to_string()
 }
 

@@ -5,6 +5,7 @@
 //! or without regard to case ('NOCA'); SAUF (the items of a list absent
 //! from another) uses the same equality.
 
+use super::lists::short;
 use super::{Args, OpDef};
 use crate::error::Result;
 use crate::eval::Interp;
@@ -67,7 +68,7 @@ impl Equality {
         match (a, b) {
             (Value::ListEnti(a), Value::ListEnti(b)) => a[i] == b[j],
             (Value::ListReel(a), Value::ListReel(b)) => self.reals(a[i], b[j]),
-            (Value::ListMots(a), Value::ListMots(b)) => self.words(&a[i], &b[j]),
+            (Value::ListMots(a), Value::ListMots(b)) => self.words(&short(&a[i]), &short(&b[j])),
             _ => false,
         }
     }

@@ -2,6 +2,7 @@
 //! in, a field of the function's values out, the numbers computed in
 //! `props::scatter` (grid, inverse distance, diffuse approximation).
 
+use super::lists::short;
 use super::{Args, OpDef};
 use crate::error::Result;
 use crate::eval::Interp;
@@ -125,12 +126,21 @@ pub(crate) fn ipol(a: &mut Args, nu: &Nuage) -> Result<Vec<Value>> {
         Some("RATI") => Method::Diffuse(Weight::Ratio),
         _ => Method::Diffuse(Weight::Gauss),
     };
-    let has = |c: &str| match &field {
-        Value::Chpo(f) => f.comps.iter().any(|x| x == c),
-        Value::Mchaml(m) => m.zones.iter().any(|z| z.comps.iter().any(|x| x == c) || z.constants.contains_key(c)),
-        _ => false,
+    let names: Vec<String> = match &field {
+        Value::Chpo(f) => f.comps.clone(),
+        Value::Mchaml(m) => {
+            m.zones.iter().flat_map(|z| z.comps.iter().cloned().chain(z.constants.keys().cloned())).collect()
+        }
+        _ => Vec::new(),
     };
-    let f = Function::new(a, nu, &method, &has)?;
+    // A field's components have 4-character names (NOMC): a longer name
+    // of the NUAGE matches the component named by its first four.
+    let field_name = |c: &str| -> Option<String> {
+        names.iter().find(|x| *x == c).or_else(|| names.iter().find(|x| short(x) == short(c))).cloned()
+    };
+    let has = |c: &str| field_name(c).is_some();
+    let mut f = Function::new(a, nu, &method, &has)?;
+    f.inputs = f.inputs.iter().map(|c| field_name(c).unwrap_or_else(|| c.clone())).collect();
     let out = match &field {
         Value::Chpo(c) => Value::Chpo(Rc::new(on_chpoint(a, &f, c)?)),
         Value::Mchaml(m) => Value::Mchaml(Rc::new(on_mchaml(a, &f, m)?)),

@@ -99,7 +99,10 @@ fn exis(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             None => true,
         },
         Value::ListMots(l) => {
-            let has = |w: &str| l.iter().any(|x| x.trim_end() == w.trim_end());
+            let has = |w: &str| {
+                let w = super::lists::short(w);
+                l.iter().any(|x| super::lists::short(x) == w)
+            };
             if let Some(words) = a.opt_right::<Rc<Vec<String>>>() {
                 // A second list: all of it ('ET'), any of it ('OU'), or
                 // one answer per word.
