@@ -319,6 +319,32 @@ impl Mesh {
         out
     }
 
+    /// Union as `ET` orders it without 'TELQUEL' (et.notice): the line
+    /// parts are joined so that the path stays continuous, so operands
+    /// whose lines lead into the other's go first; failing that, a mesh of
+    /// several parts goes before a mesh of one.
+    pub fn union_continuous(&self, other: &Mesh) -> Mesh {
+        let ends = |m: &Mesh| {
+            let seg: Vec<&Part> = m.parts.iter().filter(|p| p.ty == ElemType::Seg2).collect();
+            match (seg.first(), seg.last()) {
+                (Some(f), Some(l)) if !f.conn.is_empty() && !l.conn.is_empty() => {
+                    Some((f.conn[0], l.conn[l.conn.len() - 1]))
+                }
+                _ => None,
+            }
+        };
+        let other_first = match (ends(self), ends(other)) {
+            (Some((s0, s1)), Some((o0, o1))) if o1 == s0 && s1 != o0 => true,
+            (Some((_, s1)), Some((o0, _))) if s1 == o0 => false,
+            _ => self.parts.len() == 1 && other.parts.len() > 1,
+        };
+        if other_first {
+            other.union(self)
+        } else {
+            self.union(other)
+        }
+    }
+
     /// The elements of one colour (ELEM by colour), in their order.
     pub fn of_colour(&self, colour: Colour) -> Mesh {
         let parts = self.parts.iter().filter(|p| p.colour == colour).cloned().collect();

@@ -19,14 +19,14 @@ pub(crate) const OPS: &[OpDef] = &[OpDef {
 }];
 
 fn et(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    // 'TELQUEL' keeps the operands' order and blanks, which gibi always
-    // keeps: the word is accepted and has nothing more to do.
-    a.keyword_next(&["TELQUEL"]);
+    // 'TELQUEL' keeps the operands' order (meshes) and blanks (words,
+    // which gibi always keeps).
+    let mut telq = a.keyword_next(&["TELQUEL"]).is_some();
     let x = match a.left_value() {
         Some(v) => v,
         None => a.right_any().ok_or_else(|| a.missing("a left operand"))?,
     };
-    a.keyword_next(&["TELQUEL"]);
+    telq |= a.keyword_next(&["TELQUEL"]).is_some();
     let y = match a.right_any() {
         Some(y) => y,
         // `ET tab`: the union of every object the table holds (et.notice).
@@ -38,6 +38,10 @@ fn et(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let mut noer = false;
     while let Some(k) = a.keyword(&["NOER", "TELQUEL"]) {
         noer |= k == "NOER";
+        telq |= k == "TELQUEL";
+    }
+    if let (false, Some(m), Some(n)) = (telq, mesh_of(&x), mesh_of(&y)) {
+        return Ok(vec![Value::Mesh(Rc::new(m.union_continuous(&n)))]);
     }
     Ok(vec![union(it, a, x, y, noer)?])
 }
@@ -148,6 +152,14 @@ fn item_count(v: &Value) -> usize {
         Value::ListChpo(l) => l.len(),
         Value::Mot(s) => s.len(),
         _ => 0,
+    }
+}
+
+/// Two MAILLAGEs (not points, which join as POI1 elements in order).
+fn mesh_of(v: &Value) -> Option<Mesh> {
+    match v {
+        Value::Mesh(m) => Some((**m).clone()),
+        _ => None,
     }
 }
 
