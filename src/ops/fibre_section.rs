@@ -27,6 +27,19 @@ impl Given {
         Ok(true)
     }
 
+    /// The section model and material as the field's object components.
+    pub(crate) fn objects(&self) -> Vec<(&'static str, crate::value::Value)> {
+        use crate::value::Value;
+        let mut out = Vec::new();
+        if let Some(m) = &self.model {
+            out.push(("MODS", Value::Model(m.clone())));
+        }
+        if let Some(f) = &self.material {
+            out.push(("MATS", Value::Mchaml(f.clone())));
+        }
+        out
+    }
+
     /// The equivalent section properties (none when no section was given).
     pub(crate) fn properties(&self, it: &Interp, a: &Args) -> Result<Vec<(&'static str, f64)>> {
         let (model, mats) = match (&self.model, &self.material) {

@@ -402,7 +402,7 @@ pub(crate) fn extr_mchaml(it: &mut Interp, a: &mut Args, m: &Mchaml) -> Result<V
         // The component names, every zone's, each once.
         let mut names: Vec<String> = Vec::new();
         for z in &m.zones {
-            for c in z.comps.iter().chain(z.constants.keys()) {
+            for c in z.comps.iter().chain(z.constants.keys()).chain(z.objects.keys()) {
                 if !names.contains(c) {
                     names.push(c.clone());
                 }
@@ -433,6 +433,9 @@ pub(crate) fn extr_mchaml(it: &mut Interp, a: &mut Args, m: &Mchaml) -> Result<V
     let comp = comp.or_else(|| a.word_not_operator()).ok_or_else(|| a.missing("a component"))?;
     if let Some(v) = z.constants.get(&comp) {
         return Ok(vec![Value::Float(*v)]);
+    }
+    if let Some(v) = z.objects.get(&comp) {
+        return Ok(vec![v.clone()]);
     }
     let c = z
         .comps

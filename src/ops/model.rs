@@ -272,6 +272,7 @@ fn props(it: &Interp, a: &mut Args, subtype: &str) -> Result<Vec<Value>> {
             constants: consts.clone(),
             vectors: vecs.clone(),
             laws: laws.clone(),
+            objects: section.objects().into_iter().map(|(k, v)| (k.to_string(), v)).collect(),
             ..Default::default()
         };
         for (name, f) in &fields {

@@ -140,6 +140,7 @@ fn exis(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                         || z.constants.contains_key(comp)
                         || z.laws.contains_key(comp)
                         || z.vectors.contains_key(comp)
+                        || z.objects.contains_key(comp)
                 })
             }
             None => true,

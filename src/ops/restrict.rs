@@ -205,6 +205,7 @@ fn mchaml_to_model(a: &Args, m: &Mchaml, mo: &Model) -> Result<Mchaml> {
                         x.constants.extend(z.constants.clone());
                         x.vectors.extend(z.vectors.clone());
                         x.laws.extend(z.laws.clone());
+                        x.objects.extend(z.objects.clone());
                     }
                     None => out.zones.push(MchamlZone {
                         mesh: mz.mesh.clone(),
@@ -212,6 +213,7 @@ fn mchaml_to_model(a: &Args, m: &Mchaml, mo: &Model) -> Result<Mchaml> {
                         constants: z.constants.clone(),
                         vectors: z.vectors.clone(),
                         laws: z.laws.clone(),
+                        objects: z.objects.clone(),
                         ..Default::default()
                     }),
                 }

@@ -72,6 +72,10 @@ pub struct MchamlZone {
     /// name -> curve whose abscissa names the parameter. VARI evaluates
     /// them against a field of that parameter.
     pub laws: BTreeMap<String, Curve>,
+    /// Components that hold objects, one per zone: the section model and
+    /// material of a fibre beam (MATE … 'MODS' 'MATS'), which procedures
+    /// read back with EXTR.
+    pub objects: BTreeMap<String, super::Value>,
     /// Point values: component names, then values[element][point][component].
     pub comps: Vec<String>,
     pub values: Vec<Vec<Vec<f64>>>,
@@ -150,6 +154,7 @@ impl Mchaml {
                 x.constants.extend(z.constants.clone());
                 x.vectors.extend(z.vectors.clone());
                 x.laws.extend(z.laws.clone());
+                x.objects.extend(z.objects.clone());
             } else if let Some(x) = out.zones.iter_mut().find(|x| x.joins_components(z)) {
                 for (ex, ez) in x.values.iter_mut().zip(&z.values) {
                     for (px, pz) in ex.iter_mut().zip(ez) {
