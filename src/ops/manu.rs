@@ -91,6 +91,7 @@ fn chml(a: &mut Args, early: Option<Rc<Mesh>>) -> Result<Vec<Value>> {
     let mut spread = false;
     let mut centre = false;
     let mut fields: Vec<(String, Rc<Mchaml>)> = Vec::new();
+    let mut objects: Vec<(String, Value)> = Vec::new();
     const SUPPORTS: &[&str] = &["STRESSES", "GRAVITE", "RIGIDITE", "MASSE", "DEFORMATIONS"];
     loop {
         // TYPE unquoted is also an operator name: read as the keyword here.
@@ -120,7 +121,12 @@ fn chml(a: &mut Args, early: Option<Rc<Mesh>>) -> Result<Vec<Value>> {
                 Some(v) => Ok(v),
                 None => match a.opt_right::<Rc<Vec<f64>>>() {
                     Some(l) if spread && !l.is_empty() => Err(l),
-                    Some(_) => return Err(a.err(format!("component {}: a LISTREEL value needs 'REPA' before it", w))),
+                    // Without 'REPA' a list is one object for the whole
+                    // component (manu.notice: OBJi of any type).
+                    Some(l) => {
+                        objects.push((w, Value::ListReel(l)));
+                        continue;
+                    }
                     None => match a.opt_right::<Rc<Mchaml>>() {
                         // A one-component field gives its values, element
                         // by element (filled in once the zones are made).
@@ -128,7 +134,16 @@ fn chml(a: &mut Args, early: Option<Rc<Mesh>>) -> Result<Vec<Value>> {
                             fields.push((w.clone(), f));
                             Ok(0.0)
                         }
-                        None => return Err(a.err(format!("component {} needs a value", w))),
+                        // Names and values alternate, so a word here is
+                        // the value of the component just named.
+                        None => match a.right_any() {
+                            Some(v @ (Value::Mot(_) | Value::ListMots(_) | Value::ListEnti(_) | Value::Table(_))) => {
+                                objects.push((w, v));
+                                continue;
+                            }
+                            Some(Value::Bool(b)) => Ok(if b { 1.0 } else { 2.0 }),
+                            _ => return Err(a.err(format!("component {} needs a value", w))),
+                        },
                     },
                 },
             };
@@ -141,9 +156,10 @@ fn chml(a: &mut Args, early: Option<Rc<Mesh>>) -> Result<Vec<Value>> {
             }
         }
     }
-    if comps.is_empty() {
+    if comps.is_empty() && objects.is_empty() {
         return Err(a.missing("a component name and its value"));
     }
+    let objects: std::collections::BTreeMap<String, Value> = objects.into_iter().collect();
     let mut counter = 0usize;
     let mut values_for = |n_elems: usize, npts: usize| -> Vec<Vec<Vec<f64>>> {
         (0..n_elems)
@@ -168,6 +184,7 @@ fn chml(a: &mut Args, early: Option<Rc<Mesh>>) -> Result<Vec<Value>> {
             comps: comps.clone(),
             values: values_for(part.elems().count(), part.ty.nodes()),
             at_nodes: true,
+            objects: objects.clone(),
             ..Default::default()
         });
     }
@@ -187,6 +204,7 @@ fn chml(a: &mut Args, early: Option<Rc<Mesh>>) -> Result<Vec<Value>> {
                 comps: comps.clone(),
                 values: values_for(part.elems().count(), npts),
                 at_nodes,
+                objects: objects.clone(),
                 ..Default::default()
             });
         }

@@ -153,9 +153,10 @@ fn node_fields(_: &mut Interp, a: &Args, op: Bin, x: &Value, y: &Value) -> Resul
     }))))
 }
 
-/// RIGIDITE * CHPOINT (K u), a number times a RIGIDITE, and the sum or
-/// difference of two (assembly by concatenation).
-fn rigidities(_: &mut Interp, _: &Args, op: Bin, x: &Value, y: &Value) -> Result<Option<Value>> {
+/// RIGIDITE * CHPOINT (K u), a number times a RIGIDITE or a RIGIDITE
+/// divided by one, and the sum or difference of two (assembly by
+/// concatenation).
+fn rigidities(_: &mut Interp, a: &Args, op: Bin, x: &Value, y: &Value) -> Result<Option<Value>> {
     Ok(Some(match (x, y, op) {
         (Value::Rigi(r), Value::Chpo(u), Bin::Mul) | (Value::Chpo(u), Value::Rigi(r), Bin::Mul) => {
             Value::Chpo(Rc::new(r.matvec(u)))
@@ -163,6 +164,10 @@ fn rigidities(_: &mut Interp, _: &Args, op: Bin, x: &Value, y: &Value) -> Result
         (Value::Rigi(r), s, Bin::Mul) | (s, Value::Rigi(r), Bin::Mul) if s.is_number() => {
             Value::Rigi(Rc::new(r.scaled(scalar(s))))
         }
+        (Value::Rigi(r), s, Bin::Div) if s.is_number() => match scalar(s) {
+            d if d == 0.0 => return Err(a.err("a RIGIDITE divided by zero")),
+            d => Value::Rigi(Rc::new(r.scaled(1.0 / d))),
+        },
         (Value::Rigi(r), Value::Rigi(s), Bin::Add) => Value::Rigi(Rc::new(r.union(s))),
         (Value::Rigi(r), Value::Rigi(s), Bin::Sub) => Value::Rigi(Rc::new(r.union(&s.scaled(-1.0)))),
         _ => return Ok(None),
