@@ -102,6 +102,7 @@ pub fn hooke(f: Formulation, ty: ElemType, mode: Mode, m: &Material, eps: &Gauss
         Formulation::Pout | Formulation::Timo => vec!["EPSS", "GAXY", "GAXZ", "CURX", "CURY", "CURZ"],
         Formulation::Solid | Formulation::Q4ri | Formulation::Q8ri | Formulation::Incomp => solid::strain_comps(mode),
         Formulation::Joint => return super::joint::hooke(mode, m, eps),
+        Formulation::Coq2 => return super::coq2::hooke(mode, m, eps),
         // The shells: their forces come from SIGM, not from a strain field.
         _ => return Err(FemError::NotFor { what: "Hooke's law on a strain field (ELAS)", form: f.name() }),
     };

@@ -273,6 +273,27 @@ pub fn stress(mode: Mode, x: &[[f64; 3]], m: &Material, u: &[f64]) -> Result<Gau
     Ok(GaussField { comps: STRESS.to_vec(), values })
 }
 
+/// ELAS: the section's law on a strain field (EPSS EPTT RTSS RTTT, a
+/// missing one read as 0), as [`stress`] applies it to the strains of a
+/// displacement.
+pub fn hooke(mode: Mode, m: &Material, eps: &GaussField) -> Result<GaussField, FemError> {
+    dofs(mode)?;
+    if STRAIN.iter().all(|c| !eps.comps.contains(c)) {
+        return Err(FemError::MissingComponent { comp: STRAIN[0], elem: NAME });
+    }
+    let d = law(&section(mode, m)?);
+    let at = |v: &[f64], c: &str| eps.comps.iter().position(|k| *k == c).map_or(0.0, |i| v[i]);
+    let values = eps
+        .values
+        .iter()
+        .map(|v| {
+            let e: [f64; 4] = std::array::from_fn(|a| at(v, STRAIN[a]));
+            (0..4).map(|a| (0..4).map(|b| d[a][b] * e[b]).sum()).collect()
+        })
+        .collect();
+    Ok(GaussField { comps: STRESS.to_vec(), values })
+}
+
 /// BSIG: Σ w Bᵀ (N11 N22 M11 M22).
 pub fn internal_forces(mode: Mode, x: &[[f64; 3]], m: &Material, sig: &GaussField) -> Result<Vec<f64>, FemError> {
     dofs(mode)?;

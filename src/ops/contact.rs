@@ -17,14 +17,19 @@ use std::rc::Rc;
 pub(crate) const OPS: &[OpDef] = &[
     OpDef {
         name: "IMPO",
-        signature: "IMPO POINT|MAIL1 MAIL2 | IMPO 'MAIL' ('SYME'|'MESC'|'FAIB') MAIL1 MAIL2 | IMPO 'BLOC' MAIL3",
+        signature: "IMPO POINT|MAIL1 MAIL2 | IMPO 'MAIL' ('SYME'|'MESC'|'FAIB') MAIL1 MAIL2 | IMPO 'BLOC' MAIL3 | IMPO 'IMPA' 'MAIT' LINE1 'ESCL' LINE2|POINT | IMPO 'IMPA' LINKS (('HEMI' r|'PLAT' w|'CONE' w 'ANGL' deg) 'VECT' POINT)",
         doc: "Unilateral contact of the nodes of MAIL1 against the oriented SEG2 line (2D) or TRI3 surface (3D) MAIL2, \
               which they must stay on the right-hand side of (the side of the TRI3 normal in 3D; a QUA4 counts as two TRI3): one RELA 'MINI'-like \
               condition per node of MAIL1 that projects onto MAIL2, with the nearest facet. Returns the gap field \
               (as DEPI gives it) and the conditions. 'MAIL' gives the contact elements of MODE 'CONTACT' instead, both \
               ways by default ('SYME'; slave node then facet: TRI3 in 2D, TET4 in 3D), one way with 'MESC' (the nodes \
               of MAIL2 against MAIL1), segment against segment with 'FAIB' (2D, QUA4 elements); 'BLOC' gives the gap \
-              and conditions of a strong contact mesh. Nodes that project onto no facet get no condition.",
+              and conditions of a strong contact mesh. Nodes that project onto no facet get no condition. \
+              'IMPA' (2D, explicit dynamics): with 'MAIT' 'ESCL', every link that may come into play (a TRI3 slave \
+              node then master segment, or a SEG2 master node then projectile point); on such links, the equality \
+              conditions on the approach speed of the links in contact on the current geometry (slave nodes \
+              behind a master segment, or master nodes inside the projectile's nose), a positive multiplier \
+              pushing them apart; ANNULE (EXIS gives FAUX) when none is.",
         example: "jeu0 cont = impo haut_bas sol ; u = reso (k et cont) (f et jeu0) ;",
         f: impo,
     },
@@ -101,7 +106,10 @@ fn other_type(m: &Mesh, want: &[ElemType]) -> Option<ElemType> {
 /// mesh serves 'BLOC' and pictures, not MODE.
 fn impo(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let form = a.keyword(&["MAIL", "BLOC", "ACTI", "IMPA"]);
-    if let Some(k @ ("ACTI" | "IMPA")) = form {
+    if form == Some("IMPA") {
+        return super::impact::impa(it, a);
+    }
+    if let Some(k @ "ACTI") = form {
         return Err(a.err(format!("the option '{}' is not supported", k)));
     }
     let ft = facet_type(it, a)?;

@@ -48,6 +48,7 @@ mod hist;
 mod hist_field;
 mod hooke;
 mod hyperbolic;
+mod impact;
 mod inclusion;
 mod insert;
 mod integrate;
@@ -100,6 +101,7 @@ mod pasapas;
 mod pasapas_fields;
 mod pasapas_model;
 mod pasapas_vary;
+mod pica;
 mod poin_field;
 mod pointwise;
 mod poly_roots;
@@ -216,6 +218,7 @@ impl Registry {
             special::OPS,
             calp::OPS,
             contact::OPS,
+            pica::OPS,
             chargement::OPS,
             model::OPS,
             kp::OPS,

@@ -156,6 +156,7 @@ fn exis(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             Some((key, words)) => !m.zones_with(key, &words).zones.is_empty(),
             None => true,
         },
+        v if super::impact::is_annule(v) => false,
         _ => true,
     };
     Ok(vec![Value::Bool(r)])
