@@ -3,8 +3,10 @@
 //! them (the Lua `linit.c` pattern). Adding an operator touches one file.
 
 mod arith;
+mod assistants;
 mod assemble;
 mod bc;
+mod biot;
 mod born;
 mod calp;
 #[cfg(test)]
@@ -34,6 +36,7 @@ mod evol_extremum;
 mod evol_temps;
 mod excellence;
 mod export;
+mod external;
 mod extract;
 mod fibre_section;
 mod fields;
@@ -193,6 +196,9 @@ impl Registry {
             mesh_query::OPS,
             mesh_free::OPS,
             mesh_partition::OPS,
+            assistants::OPS,
+            external::OPS,
+            biot::OPS,
             mesh_contours::OPS,
             mesh_derive::OPS,
             mesh_delaunay::OPS,
