@@ -35,9 +35,8 @@ impl CommandPolicy {
             CommandPolicy::Only(_) => "it is not among the programs this run may start",
             _ => "this run may not start programs",
         };
-        Err(Error::new(ErrorKind::Denied, format!("running '{}' is not allowed: {}", program, how)).note(
-            "the host allows commands (gibi: --allow-command NAME for one program, --allow-commands for any)",
-        ))
+        Err(Error::new(ErrorKind::Denied, format!("running '{}' is not allowed: {}", program, how))
+            .note("the host allows commands (gibi: --allow-command NAME for one program, --allow-commands for any)"))
     }
 }
 

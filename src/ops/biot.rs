@@ -55,12 +55,16 @@ fn biot(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             }
             let axis = scale(n, 1.0 / nn);
             let start = scale(u, 1.0 / norm(u));
-            let angle = if kind == "CERC" {
-                2.0 * std::f64::consts::PI
-            } else {
-                dot(cross(u, v), axis).atan2(dot(u, v))
-            };
-            Conductor::Coil { centre: c, axis, start, r_in: ri, angle, section: Section { width: re - ri, height: h, slopes } }
+            let angle =
+                if kind == "CERC" { 2.0 * std::f64::consts::PI } else { dot(cross(u, v), axis).atan2(dot(u, v)) };
+            Conductor::Coil {
+                centre: c,
+                axis,
+                start,
+                r_in: ri,
+                angle,
+                section: Section { width: re - ri, height: h, slopes },
+            }
         }
         "BARR" => {
             let (p1, p2, p3) = (pt(a)?, pt(a)?, pt(a)?);
@@ -79,7 +83,12 @@ fn biot(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             if dy < 0.0 || dz < 0.0 {
                 return Err(a.err(format!("the section's sides must be 0 or more, found {} and {}", dy, dz)));
             }
-            Conductor::Bar { from: p1, to: p2, y: scale(y, 1.0 / norm(y)), section: Section { width: dy, height: dz, slopes } }
+            Conductor::Bar {
+                from: p1,
+                to: p2,
+                y: scale(y, 1.0 / norm(y)),
+                section: Section { width: dy, height: dz, slopes },
+            }
         }
         _ => {
             let (p1, p2) = (pt(a)?, pt(a)?);
@@ -88,7 +97,8 @@ fn biot(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 return Err(a.err("the two ends of the wire are the same point"));
             }
             // Any direction across the wire: its section is a point.
-            let t = if u[0].abs() <= u[1].abs() && u[0].abs() <= u[2].abs() { [1.0, 0.0, 0.0] } else { [0.0, 0.0, 1.0] };
+            let t =
+                if u[0].abs() <= u[1].abs() && u[0].abs() <= u[2].abs() { [1.0, 0.0, 0.0] } else { [0.0, 0.0, 1.0] };
             let y = cross(u, t);
             let section = Section { width: 0.0, height: 0.0, slopes: (0.0, 0.0) };
             Conductor::Bar { from: p1, to: p2, y: scale(y, 1.0 / norm(y)), section }

@@ -53,7 +53,9 @@ fn exte(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             TokKind::Quoted(s) => s.to_string(),
             TokKind::Word(w) | TokKind::Nullary { word: w, .. } => w,
             TokKind::Sym(s) => s.to_string(),
-            TokKind::Val(v) => as_text(&v).ok_or_else(|| a.err(format!("cannot send a {} to a command", v.type_name())))?,
+            TokKind::Val(v) => {
+                as_text(&v).ok_or_else(|| a.err(format!("cannot send a {} to a command", v.type_name())))?
+            }
         };
         if !(input.is_empty() || input.ends_with('\n')) {
             input.push(' ');
@@ -72,7 +74,10 @@ fn exte(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let mut child = match cmd.spawn() {
         Ok(c) => c,
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
-            it.println(&format!("warning: EXTE: no program '{}' on this machine: the result is an empty TABLE", program));
+            it.println(&format!(
+                "warning: EXTE: no program '{}' on this machine: the result is an empty TABLE",
+                program
+            ));
             return Ok(vec![table(Table::new())]);
         }
         Err(e) => return Err(a.err(format!("cannot run '{}': {}", program, e))),
@@ -114,7 +119,13 @@ fn exte(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     if !status.success() {
         let why = String::from_utf8_lossy(&err);
         let first = why.lines().next().unwrap_or("").trim();
-        it.println(&format!("warning: EXTE: '{}' ended with {}{}{}", program, status, if first.is_empty() { "" } else { ": " }, first));
+        it.println(&format!(
+            "warning: EXTE: '{}' ended with {}{}{}",
+            program,
+            status,
+            if first.is_empty() { "" } else { ": " },
+            first
+        ));
     }
     let mut t = Table::new();
     for (i, w) in String::from_utf8_lossy(&out).split_whitespace().enumerate() {

@@ -2,9 +2,10 @@
 //! `pub(crate) const OPS: &[OpDef]`; [`Registry::standard`] concatenates
 //! them (the Lua `linit.c` pattern). Adding an operator touches one file.
 
+mod acquire;
 mod arith;
-mod assistants;
 mod assemble;
+mod assistants;
 mod bc;
 mod biot;
 mod born;
@@ -199,6 +200,7 @@ impl Registry {
             assistants::OPS,
             external::OPS,
             biot::OPS,
+            acquire::OPS,
             mesh_contours::OPS,
             mesh_derive::OPS,
             mesh_delaunay::OPS,
