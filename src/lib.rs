@@ -37,7 +37,7 @@ pub mod value;
 pub use error::{Error, ErrorKind, Result};
 pub use eval::args::Args;
 pub use eval::registry::{OpSpec, Registry};
-pub use eval::{FilePolicy, InterruptHandle};
+pub use eval::{CommandPolicy, FilePolicy, InterruptHandle};
 pub use value::Value;
 
 use eval::Interp;
@@ -86,6 +86,7 @@ pub enum Outcome {
 pub struct InterpreterBuilder {
     out: Box<dyn Write>,
     files: FilePolicy,
+    commands: CommandPolicy,
     registry: Registry,
     step_limit: Option<u64>,
     report_files: bool,
@@ -108,6 +109,11 @@ impl InterpreterBuilder {
     /// Which files scripts may read or write. Default: none.
     pub fn files(mut self, policy: FilePolicy) -> Self {
         self.files = policy;
+        self
+    }
+    /// Which programs of the host scripts may run (EXTE). Default: none.
+    pub fn commands(mut self, policy: CommandPolicy) -> Self {
+        self.commands = policy;
         self
     }
     /// Stop any run after this many executed instructions (a sandbox
@@ -139,6 +145,7 @@ impl InterpreterBuilder {
     pub fn build(self) -> Interpreter {
         let mut interp = Interp::new(Rc::new(self.registry), self.out);
         interp.files = self.files;
+        interp.commands = self.commands;
         interp.step_limit = self.step_limit;
         interp.report_files = self.report_files;
         interp.library = eval::library::Library::new(self.procedures);
@@ -168,6 +175,7 @@ impl Interpreter {
         InterpreterBuilder {
             out: Box::new(std::io::sink()),
             files: FilePolicy::Nothing,
+            commands: CommandPolicy::Nothing,
             registry: Registry::standard(),
             step_limit: None,
             report_files: true,

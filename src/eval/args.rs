@@ -538,6 +538,12 @@ impl Args<'_> {
     pub fn drain(&mut self) {
         self.st.right.clear();
     }
+
+    /// Take every remaining token of the instruction, unread (ASSI runs
+    /// them as an instruction of its own).
+    pub fn take_rest(&mut self) -> Vec<Tok> {
+        self.st.right.drain(..).collect()
+    }
 }
 
 impl Args<'_> {

@@ -28,7 +28,9 @@ impl Interp {
         }
         match s {
             Stmt::Instr(ins) => {
-                self.exec_instr(ins)?;
+                if let Err(e) = self.exec_instr(ins) {
+                    self.pass_error(e, ins.span)?;
+                }
                 Ok(Flow::Next)
             }
             Stmt::If { branches, otherwise, span } => {
@@ -69,6 +71,29 @@ impl Interp {
                 Ok(Flow::Next)
             }
         }
+    }
+
+    /// `OPTI ERRE 'IGNORE'` or `'CONTINUER'`: an ordinary error abandons
+    /// its instruction (its results are not assigned) and the deck goes on,
+    /// as Cast3M does; the error is still shown, as a warning. An aborting
+    /// ERRE, an interruption, a syntax error and a bug of gibi still stop.
+    fn pass_error(&mut self, e: Error, span: Span) -> Result<()> {
+        let passes = matches!(self.opts.erre.as_str(), "IGNORE" | "CONTINUER")
+            && matches!(e.kind, ErrorKind::Runtime | ErrorKind::Denied | ErrorKind::Io | ErrorKind::Write);
+        if !passes {
+            return Err(e);
+        }
+        let (at, src) = match (e.span, &e.source) {
+            (Some(s), Some(src)) => (s, src.clone()),
+            _ => (span, self.source.clone()),
+        };
+        let (line, col) = src.line_col(at.start);
+        let msg = format!(
+            "{}:{}:{}: warning: {} (OPTI ERRE {}: the instruction is abandoned)",
+            src.name, line, col, e.message, self.opts.erre
+        );
+        self.println(&msg);
+        Ok(())
     }
 
     fn echo(&mut self, ins: &Instr) {

@@ -5,6 +5,7 @@
 
 pub mod args;
 pub mod catalogue;
+mod commands;
 mod control;
 pub mod env;
 mod fast;
@@ -19,6 +20,7 @@ pub mod registry;
 pub mod tokens;
 pub mod unimplemented;
 
+pub use commands::CommandPolicy;
 pub use files::FilePolicy;
 pub use interrupt::{interrupted, InterruptHandle};
 pub use options::{Exports, Options, Timers};
@@ -43,6 +45,8 @@ pub struct Interp {
     /// The source being run (for error locations).
     pub source: Rc<Source>,
     pub files: FilePolicy,
+    /// Which programs EXTE may run.
+    pub commands: CommandPolicy,
     /// Whether a line `wrote <file>` goes to the output for each file
     /// written (`gibi --quiet` turns it off).
     pub report_files: bool,
@@ -137,6 +141,7 @@ impl Interp {
             out,
             source: Source::new("<none>", ""),
             files: FilePolicy::Nothing,
+            commands: CommandPolicy::Nothing,
             report_files: true,
             timers: Timers::default(),
             exports: Exports::default(),

@@ -78,6 +78,8 @@ pub struct Exports {
     /// The AVS file LIRE 'AVS' reads (OPTI LECT) and where its next
     /// structure starts (byte offset, line number): each LIRE reads one.
     pub avs_read: Option<(String, usize, usize)>,
+    /// The file ACQU reads (OPTI ACQU) and the line its next read starts at.
+    pub acqu_read: Option<(String, usize)>,
 }
 
 /// Cumulative time and call count per operator, for TEMP.

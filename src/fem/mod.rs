@@ -9,6 +9,7 @@ pub mod ahmad;
 pub mod bar;
 pub mod beam;
 pub mod beam_skin;
+pub mod biot_savart;
 pub mod colour;
 pub mod constitutive;
 pub mod contact;

@@ -2,9 +2,12 @@
 //! `pub(crate) const OPS: &[OpDef]`; [`Registry::standard`] concatenates
 //! them (the Lua `linit.c` pattern). Adding an operator touches one file.
 
+mod acquire;
 mod arith;
 mod assemble;
+mod assistants;
 mod bc;
+mod biot;
 mod born;
 mod calp;
 #[cfg(test)]
@@ -34,6 +37,7 @@ mod evol_extremum;
 mod evol_temps;
 mod excellence;
 mod export;
+mod external;
 mod extract;
 mod fibre_section;
 mod fields;
@@ -195,6 +199,10 @@ impl Registry {
             mesh_query::OPS,
             mesh_free::OPS,
             mesh_partition::OPS,
+            assistants::OPS,
+            external::OPS,
+            biot::OPS,
+            acquire::OPS,
             mesh_contours::OPS,
             mesh_derive::OPS,
             mesh_delaunay::OPS,

@@ -7,7 +7,7 @@ mod repl;
 
 use clap::Parser;
 use gibi::source::decode;
-use gibi::{ErrorKind, FilePolicy, Interpreter, Outcome};
+use gibi::{CommandPolicy, ErrorKind, FilePolicy, Interpreter, Outcome};
 use std::ffi::{OsStr, OsString};
 use std::io::{IsTerminal, Read};
 use std::process::ExitCode;
@@ -34,6 +34,14 @@ struct Cli {
     /// of $GIBI_PROCEDURES).
     #[arg(long = "procedures", value_name = "PATH")]
     procedures: Vec<std::path::PathBuf>,
+    /// Let decks run any program of this machine (EXTE). Off by default:
+    /// a deck then reaches no more than the files of its directory.
+    #[arg(long = "allow-commands")]
+    allow_commands: bool,
+    /// Let decks run this program (EXTE), named as the deck writes it
+    /// (repeatable).
+    #[arg(long = "allow-command", value_name = "PROGRAM")]
+    allow_command: Vec<String>,
 }
 
 fn exit_code(kind: ErrorKind) -> u8 {
@@ -148,6 +156,11 @@ fn run() -> ExitCode {
     let mut builder = Interpreter::builder()
         .output(std::io::stdout())
         .files(FilePolicy::Under(cwd))
+        .commands(match (cli.allow_commands, cli.allow_command.is_empty()) {
+            (true, _) => CommandPolicy::Anything,
+            (false, false) => CommandPolicy::Only(cli.allow_command.clone()),
+            (false, true) => CommandPolicy::Nothing,
+        })
         .procedures(procedures)
         .report_files(!cli.quiet);
     if std::io::stderr().is_terminal() {
