@@ -27,7 +27,6 @@ const OTHER: &str = "`gibi --list-operators` lists what gibi implements";
 /// often too vague for them).
 pub(crate) const HINTS: &[(&str, &str)] = &[
     ("ACQU", "read data with LIRE"),
-    ("AMOR", STATICS),
     ("DYNAMIC", STATICS),
     ("DYNE", STATICS),
     ("ECOU", STATICS),

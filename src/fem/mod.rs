@@ -5,6 +5,7 @@
 //! [`loads`] (pressure), post-processing in [`stress`] (VMIS, Gauss points
 //! to nodes). Conventions (dof order, AXIS per radian, output points) are
 //! documented at the top of [`element`] and [`quadrature`].
+pub mod absorbing;
 pub mod ahmad;
 pub mod bar;
 pub mod beam;
@@ -34,6 +35,7 @@ pub mod loads;
 pub mod locate;
 pub mod material;
 pub mod plate;
+pub mod prestress;
 pub mod principal;
 pub mod quadrature;
 pub mod shape;

@@ -17,10 +17,12 @@ mod chargement_extr;
 mod chpo_rigi;
 mod cmct;
 mod colour;
+mod complex_modes;
 mod config;
 mod contact;
 mod coor_field;
 mod covariance;
+mod damping;
 mod curves;
 mod dans;
 mod date;
@@ -110,12 +112,14 @@ mod pres_model;
 mod pres_shell;
 mod prim;
 mod principal;
+mod prestress;
 mod prob;
 mod products;
 mod projection;
 mod raff;
 mod rela_accro;
 mod rela_cori;
+mod rela_cori_dist;
 mod rela_mili;
 mod rela_model;
 mod replace;
@@ -219,6 +223,9 @@ impl Registry {
             chargement::OPS,
             model::OPS,
             kp::OPS,
+            damping::OPS,
+            complex_modes::OPS,
+            prestress::OPS,
             manu::OPS,
             fields::OPS,
             products::OPS,
