@@ -28,8 +28,14 @@ pub fn quadratic_modes(n: usize, m: &[f64], c: Option<&[f64]>, k: &[f64]) -> Res
         return Err("a matrix holds a non-finite value".into());
     }
     let nn = 2 * n;
-    let mut a = Mat::<f64>::zeros(nn, nn);
-    let mut b = Mat::<f64>::zeros(nn, nn);
+    // faer's QZ fails on a 2×2 pencil: smaller pencils are padded with
+    // decoupled rows of infinite eigenvalue (a = 1, b = 0), dropped below.
+    let size = nn.max(4);
+    let mut a = Mat::<f64>::zeros(size, size);
+    let mut b = Mat::<f64>::zeros(size, size);
+    for i in nn..size {
+        a[(i, i)] = 1.0;
+    }
     for i in 0..n {
         a[(i, n + i)] = 1.0;
         b[(i, i)] = 1.0;
@@ -42,8 +48,8 @@ pub fn quadratic_modes(n: usize, m: &[f64], c: Option<&[f64]>, k: &[f64]) -> Res
     let evd = a.generalized_eigen(&b).map_err(|e| format!("the QZ algorithm did not converge ({e:?})"))?;
     let (sa, sb, u) = (evd.S_a().column_vector(), evd.S_b().column_vector(), evd.U());
     let scale = a.norm_max().max(b.norm_max()).max(f64::MIN_POSITIVE);
-    let mut modes = Vec::with_capacity(nn);
-    for j in 0..nn {
+    let mut modes = Vec::with_capacity(size);
+    for j in 0..size {
         let (al, be) = (sa[j], sb[j]);
         let bm = be.norm();
         let lambda = if bm <= 1e-13 * al.norm().max(scale * f64::EPSILON) {
@@ -70,6 +76,8 @@ pub fn quadratic_modes(n: usize, m: &[f64], c: Option<&[f64]>, k: &[f64]) -> Res
         (None, Some(_)) => std::cmp::Ordering::Greater,
         (None, None) => std::cmp::Ordering::Equal,
     });
+    // The padding's modes are infinite, hence last (and alike).
+    modes.truncate(nn);
     Ok(modes)
 }
 
