@@ -85,7 +85,10 @@ pub fn lysmer_damping(
         if let Some(turn) = mode.turn() {
             let r: f64 = s.n.iter().zip(x).map(|(a, b)| a * b[0]).sum();
             if r < 0.0 {
-                return Err(FemError::Degenerate { elem: face.name(), why: format!("AXIS face reaches r = {r:e} < 0") });
+                return Err(FemError::Degenerate {
+                    elem: face.name(),
+                    why: format!("AXIS face reaches r = {r:e} < 0"),
+                });
             }
             wt *= turn * r;
         }

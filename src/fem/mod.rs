@@ -44,6 +44,7 @@ pub mod shell_offset;
 pub mod skin;
 pub mod solid;
 pub mod stress;
+pub mod surface_force;
 pub mod surface_vectors;
 pub mod thermal;
 pub mod thick_shell;

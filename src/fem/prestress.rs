@@ -53,8 +53,7 @@ pub fn tension_profile(x: &[[f64; 3]], p0: f64, ea: f64, area: f64, losses: &Los
         return Err("a cable needs at least two points".into());
     }
     let (s, alpha) = abscissa_and_angle(x)?;
-    let mut p: Vec<f64> =
-        s.iter().zip(&alpha).map(|(s, a)| p0 * (-(losses.ff * a + losses.phif * s)).exp()).collect();
+    let mut p: Vec<f64> = s.iter().zip(&alpha).map(|(s, a)| p0 * (-(losses.ff * a + losses.phif * s)).exp()).collect();
     if losses.ganc > 0.0 {
         anchorage_slip(&s, &mut p, losses.ganc * ea)?;
     }
@@ -169,10 +168,12 @@ mod tests {
     use super::*;
 
     fn arc(r: f64, n: usize, angle: f64) -> Vec<[f64; 3]> {
-        (0..=n).map(|i| {
-            let t = angle * i as f64 / n as f64;
-            [r * t.sin(), r * (1.0 - t.cos()), 0.0]
-        }).collect()
+        (0..=n)
+            .map(|i| {
+                let t = angle * i as f64 / n as f64;
+                [r * t.sin(), r * (1.0 - t.cos()), 0.0]
+            })
+            .collect()
     }
 
     #[test]

@@ -29,14 +29,16 @@ fn vibc(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         mats.push(r);
     }
     if a.opt::<Rc<RefCell<Table>>>().is_some() {
-        return Err(a.err("VIBC: matrices projected on a modal basis (BAS1) are not available; give the matrices on the physical unknowns"));
+        return Err(a.err(
+            "matrices projected on a modal basis (BAS1) are not available; give the matrices on the physical unknowns",
+        ));
     }
     let pairs = a.opt::<i64>();
     if mats.len() == 4 {
-        return Err(a.err("VIBC: the eigenvalues of a monodromy matrix (4 RIGIDITEs) are not available"));
+        return Err(a.err("the eigenvalues of a monodromy matrix (4 RIGIDITEs) are not available"));
     }
     if !(2..=3).contains(&mats.len()) {
-        return Err(a.err("VIBC needs a mass and a stiffness matrix (and optionally a damping matrix)"));
+        return Err(a.err("a mass and a stiffness matrix (and optionally a damping matrix)"));
     }
     let (m, k, c) = sort_matrices(&mats);
     // The unknowns: every one the blocks name, less those a single-term
@@ -48,7 +50,7 @@ fn vibc(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 [(n, comp, _)] => {
                     blocked.insert((*n, comp.clone()));
                 }
-                _ => return Err(a.err("VIBC: only conditions on a single unknown (BLOQ) are supported")),
+                _ => return Err(a.err("only conditions on a single unknown (BLOQ) are supported")),
             }
         }
     }
@@ -67,28 +69,31 @@ fn vibc(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         }
     }
     if unknowns.is_empty() {
-        return Err(a.err("VIBC: the matrices have no free unknown"));
+        return Err(a.err("the matrices have no free unknown"));
     }
     if unknowns.len() > 2000 {
-        return Err(a.err(format!("VIBC: {} unknowns is too many for the dense QZ algorithm (2000 at most)", unknowns.len())));
+        return Err(a.err(format!("{} unknowns is too many for the dense QZ algorithm (2000 at most)", unknowns.len())));
     }
     // Blocked unknowns are numbered past the free ones and cut off.
-    let mut index: HashMap<(usize, String), usize> = unknowns.iter().cloned().enumerate().map(|(i, u)| (u, i)).collect();
+    let mut index: HashMap<(usize, String), usize> =
+        unknowns.iter().cloned().enumerate().map(|(i, u)| (u, i)).collect();
     for u in &blocked {
         let next = index.len();
         index.entry(u.clone()).or_insert(next);
     }
     let n = unknowns.len();
     let dense = |r: &Rigidite| -> Result<Vec<f64>> {
-        let full = r.dense(&index).map_err(|(node, comp)| a.err(format!("VIBC: unknown {comp} of node {} is not numbered", node + 1)))?;
+        let full = r
+            .dense(&index)
+            .map_err(|(node, comp)| a.err(format!("unknown {comp} of node {} is not numbered", node + 1)))?;
         let nt = index.len();
         Ok((0..n).flat_map(|i| full[i * nt..i * nt + n].to_vec()).collect())
     };
     let (dm, dk) = (dense(m)?, dense(k)?);
     let dc = c.map(|c| dense(c)).transpose()?;
-    let modes = quadratic_modes(n, &dm, dc.as_deref(), &dk).map_err(|e| a.err(format!("VIBC: {e}")))?;
+    let modes = quadratic_modes(n, &dm, dc.as_deref(), &dk).map_err(|e| a.err(format!("{e}")))?;
     let keep = match pairs {
-        Some(p) if p < 1 => return Err(a.err("VIBC: the number of pairs of modes must be positive")),
+        Some(p) if p < 1 => return Err(a.err("the number of pairs of modes must be positive")),
         Some(p) => (2 * p as usize).min(modes.len()),
         None => modes.len(),
     };

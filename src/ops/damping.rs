@@ -23,17 +23,17 @@ pub(crate) const OPS: &[OpDef] = &[OpDef {
 
 fn amor(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let model = a.req::<Rc<Model>>().map_err(|_| {
-        a.err("AMOR: gibi builds the absorbing-boundary form AMOR MMODEL MAILLAGE MCHAML (modal damping needs a modal basis, which gibi does not compute)")
+        a.err("gibi builds the absorbing-boundary form AMOR MMODEL MAILLAGE MCHAML (modal damping needs a modal basis, which gibi does not compute)")
     })?;
     let faces = a.opt::<Rc<Mesh>>().ok_or_else(|| {
-        a.err("AMOR: the boundary mesh is missing (AMOR MMODEL MAILLAGE MCHAML; material damping 'VISQ' is not available)")
+        a.err("the boundary mesh is missing (AMOR MMODEL MAILLAGE MCHAML; material damping 'VISQ' is not available)")
     })?;
     let mut fields: Vec<Rc<Mchaml>> = Vec::new();
     while let Some(f) = a.opt::<Rc<Mchaml>>() {
         fields.push(f);
     }
     if fields.is_empty() {
-        return Err(a.err("AMOR: the material field (YOUN, NU, RHO) is missing"));
+        return Err(a.err("the material field (YOUN, NU, RHO) is missing"));
     }
     let zone_nodes: Vec<FxHashSet<usize>> =
         model.zones.iter().map(|z| z.mesh.parts.iter().flat_map(|p| p.conn.iter().copied()).collect()).collect();
@@ -43,9 +43,10 @@ fn amor(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         // nodes gives the mode and the material.
         let mut zone_of = Vec::with_capacity(part.len());
         for (e, nodes) in part.elems().enumerate() {
-            let z = zone_nodes.iter().position(|s| nodes.iter().all(|n| s.contains(n))).ok_or_else(|| {
-                a.err(format!("AMOR: face {} of the boundary mesh is not on the model's elements", e + 1))
-            })?;
+            let z = zone_nodes
+                .iter()
+                .position(|s| nodes.iter().all(|n| s.contains(n)))
+                .ok_or_else(|| a.err(format!("face {} of the boundary mesh is not on the model's elements", e + 1)))?;
             zone_of.push(z);
         }
         let mut props = Vec::with_capacity(model.zones.len());
@@ -56,9 +57,9 @@ fn amor(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         let block = super::element_block::part_block(it, part, None, Symmetry::Symmetric, |e, x| {
             let (mode, youn, nu, rho) = props[zone_of[e]];
             let (Some(youn), Some(rho)) = (youn, rho) else {
-                return Err(a.err("AMOR: the material needs YOUN and RHO on the zone of the boundary"));
+                return Err(a.err("the material needs YOUN and RHO on the zone of the boundary"));
             };
-            let fe = |err: crate::fem::element::FemError| a.err(format!("AMOR: face {}: {}", e + 1, err));
+            let fe = |err: crate::fem::element::FemError| a.err(format!("face {}: {}", e + 1, err));
             let (cp, cs) = absorbing::wave_speeds(youn, nu, rho).map_err(fe)?;
             absorbing::lysmer_damping(part.ty, mode, x, rho, cp, cs).map_err(fe)
         })?;

@@ -22,8 +22,8 @@ mod config;
 mod contact;
 mod coor_field;
 mod covariance;
-mod damping;
 mod curves;
+mod damping;
 mod dans;
 mod date;
 mod dofs;
@@ -110,9 +110,9 @@ mod pres_chel;
 mod pres_field;
 mod pres_model;
 mod pres_shell;
+mod prestress;
 mod prim;
 mod principal;
-mod prestress;
 mod prob;
 mod products;
 mod projection;
@@ -131,6 +131,7 @@ mod simplex;
 mod special;
 mod spectra;
 mod superele;
+mod surface_forces;
 mod symmetry;
 mod tables;
 mod temps;
@@ -226,6 +227,7 @@ impl Registry {
             damping::OPS,
             complex_modes::OPS,
             prestress::OPS,
+            surface_forces::OPS,
             manu::OPS,
             fields::OPS,
             products::OPS,

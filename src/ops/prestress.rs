@@ -29,10 +29,10 @@ fn prec(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let mate = a.req::<Rc<Mchaml>>()?;
     let force = a.req::<super::Num>()?.0;
     if !force.is_finite() {
-        return Err(a.err("PREC: the tension F1 is not a finite number"));
+        return Err(a.err("the tension F1 is not a finite number"));
     }
     let losses = match a.opt::<Rc<RefCell<Table>>>() {
-        Some(t) => Some(read_losses(&t.borrow()).map_err(|e| a.err(format!("PREC: {e}")))?),
+        Some(t) => Some(read_losses(&t.borrow()).map_err(|e| a.err(format!("{e}")))?),
         None => None,
     };
     let anchors: Option<FxHashSet<usize>> = if let Some(m) = a.opt::<Rc<Mesh>>() {
@@ -48,7 +48,7 @@ fn prec(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     for (zi, z) in model.zones.iter().enumerate() {
         for p in &z.mesh.parts {
             if p.ty != ElemType::Seg2 {
-                return Err(a.err(format!("PREC: the cables must be SEG2 elements, not {}", p.ty.name())));
+                return Err(a.err(format!("the cables must be SEG2 elements, not {}", p.ty.name())));
             }
             for e in p.elems() {
                 segs.push([e[0], e[1]]);
@@ -62,10 +62,10 @@ fn prec(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         props.push((m.youn, m.sect));
     }
     let mut tension: FxHashMap<usize, f64> = FxHashMap::default();
-    for (k, chain) in chains(&segs).map_err(|e| a.err(format!("PREC: {e}")))?.into_iter().enumerate() {
+    for (k, chain) in chains(&segs).map_err(|e| a.err(format!("{e}")))?.into_iter().enumerate() {
         let (nodes, first_seg) = chain;
         let (Some(youn), Some(sect)) = props[seg_zone[first_seg]] else {
-            return Err(a.err("PREC: the material needs YOUN and SECT"));
+            return Err(a.err("the material needs YOUN and SECT"));
         };
         let ends = [nodes[0], nodes[nodes.len() - 1]];
         let pulled: Vec<bool> = match &anchors {
@@ -73,15 +73,15 @@ fn prec(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             None => vec![false, true],
         };
         if !pulled.iter().any(|b| *b) {
-            return Err(a.err(format!("PREC: cable {} has no end among the anchorage points", k + 1)));
+            return Err(a.err(format!("cable {} has no end among the anchorage points", k + 1)));
         }
         let no_loss = Losses { ff: 0.0, phif: 0.0, ganc: 0.0, relaxation: None };
         let l = losses.as_ref().unwrap_or(&no_loss);
         for (side, _) in pulled.iter().enumerate().filter(|(_, p)| **p) {
             let order: Vec<usize> = if side == 0 { nodes.clone() } else { nodes.iter().rev().copied().collect() };
             let x: Vec<[f64; 3]> = order.iter().map(|n| it.nodes.get(*n)).collect();
-            let p = tension_profile(&x, force, youn * sect, sect, l)
-                .map_err(|e| a.err(format!("PREC: cable {}: {e}", k + 1)))?;
+            let p =
+                tension_profile(&x, force, youn * sect, sect, l).map_err(|e| a.err(format!("cable {}: {e}", k + 1)))?;
             // Pulled at both ends: each point keeps the larger tension.
             for (n, v) in order.iter().zip(p) {
                 let t = tension.entry(*n).or_insert(v);
@@ -101,7 +101,7 @@ fn prec(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         out.zones.push(nz);
     }
     if let Some(p0) = pre0 {
-        out = add_initial(out, &p0).map_err(|e| a.err(format!("PREC: {e}")))?;
+        out = add_initial(out, &p0).map_err(|e| a.err(format!("{e}")))?;
     }
     Ok(vec![Value::Mchaml(Rc::new(out))])
 }

@@ -114,7 +114,8 @@ fn best_fix(x: &[[f64; 3]], i: usize, refs: &[usize], dim: usize) -> Vec<usize> 
         let pick: Vec<usize> = refs.iter().enumerate().filter(|(k, _)| *k != skip).map(|(_, r)| *r).collect();
         let dirs: Option<Vec<[f64; 3]>> = pick.iter().map(|&j| unit(j)).collect();
         let Some(u) = dirs else { continue };
-        let det = if dim == 3 { dot(u[0], cross(u[1], u[2])).abs() } else { (u[0][0] * u[1][1] - u[0][1] * u[1][0]).abs() };
+        let det =
+            if dim == 3 { dot(u[0], cross(u[1], u[2])).abs() } else { (u[0][0] * u[1][1] - u[0][1] * u[1][0]).abs() };
         if det > best.1 {
             best = (pick, det);
         }
