@@ -26,7 +26,6 @@ const OTHER: &str = "`gibi --list-operators` lists what gibi implements";
 /// Pointers for particular names, by key (what the name's section says is
 /// often too vague for them).
 pub(crate) const HINTS: &[(&str, &str)] = &[
-    ("AMOR", STATICS),
     ("DYNAMIC", STATICS),
     ("DYNE", STATICS),
     ("ECOU", STATICS),

@@ -129,7 +129,7 @@ fn check(face: ElemType, mode: Mode, x: &[[f64; 3]], p: &[f64]) -> Result<bool, 
 }
 
 /// Area-scaled normal at a reference point, before orientation.
-fn normal(edge: bool, s: &super::shape::Shape, x: &[[f64; 3]]) -> [f64; 3] {
+pub(crate) fn normal(edge: bool, s: &super::shape::Shape, x: &[[f64; 3]]) -> [f64; 3] {
     let mut t = [[0.0; 3]; 2];
     for (d, xi) in s.dn.iter().zip(x) {
         for a in 0..2 {

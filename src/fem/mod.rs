@@ -5,6 +5,7 @@
 //! [`loads`] (pressure), post-processing in [`stress`] (VMIS, Gauss points
 //! to nodes). Conventions (dof order, AXIS per radian, output points) are
 //! documented at the top of [`element`] and [`quadrature`].
+pub mod absorbing;
 pub mod ahmad;
 pub mod bar;
 pub mod beam;
@@ -37,6 +38,7 @@ pub mod loads;
 pub mod locate;
 pub mod material;
 pub mod plate;
+pub mod prestress;
 pub mod principal;
 pub mod quadrature;
 pub mod shape;
@@ -45,6 +47,7 @@ pub mod shell_offset;
 pub mod skin;
 pub mod solid;
 pub mod stress;
+pub mod surface_force;
 pub mod surface_vectors;
 pub mod thermal;
 pub mod thick_shell;

@@ -20,11 +20,13 @@ mod chargement_extr;
 mod chpo_rigi;
 mod cmct;
 mod colour;
+mod complex_modes;
 mod config;
 mod contact;
 mod coor_field;
 mod covariance;
 mod curves;
+mod damping;
 mod dans;
 mod date;
 mod dofs;
@@ -114,6 +116,7 @@ mod pres_chel;
 mod pres_field;
 mod pres_model;
 mod pres_shell;
+mod prestress;
 mod prim;
 mod principal;
 mod prob;
@@ -122,6 +125,7 @@ mod projection;
 mod raff;
 mod rela_accro;
 mod rela_cori;
+mod rela_cori_dist;
 mod rela_mili;
 mod rela_model;
 mod replace;
@@ -133,6 +137,7 @@ mod simplex;
 mod special;
 mod spectra;
 mod superele;
+mod surface_forces;
 mod symmetry;
 mod tables;
 mod temps;
@@ -230,6 +235,10 @@ impl Registry {
             chargement::OPS,
             model::OPS,
             kp::OPS,
+            damping::OPS,
+            complex_modes::OPS,
+            prestress::OPS,
+            surface_forces::OPS,
             manu::OPS,
             fields::OPS,
             products::OPS,

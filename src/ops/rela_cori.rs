@@ -22,9 +22,7 @@ pub(super) fn rela_cori(it: &mut Interp, a: &mut Args, kind: Kind) -> Result<Vec
         rota |= k == "ROTA";
     }
     if !rota {
-        return Err(a.err(
-            "CORI without 'ROTA' (rigid link through constant distances) is not implemented: give 'DEPL' 'ROTA' GEO1 (GEO2), GEO1 carrying rotations",
-        ));
+        return super::rela_cori_dist::rela_cori_distances(it, a, kind);
     }
     let g1 = req_geo(a)?.node_list();
     let g2 = opt_geo(a).map(|g| g.node_list()).unwrap_or_default();

@@ -283,6 +283,9 @@ fn equal(it: &Interp, a: &mut Args) -> Result<bool> {
         (Evol(p), Evol(q)) => std::rc::Rc::ptr_eq(p, q),
         (Table(p), Table(q)) => std::rc::Rc::ptr_eq(p, q),
         (ListChpo(p), ListChpo(q)) => std::rc::Rc::ptr_eq(p, q),
+        // A word is not equal to an object of another type: an unset name
+        // reads as a word (`EGA f 0.` with f never assigned is FAUX).
+        (Mot(_), _) | (_, Mot(_)) => false,
         _ => {
             return Err(a.err(format!("cannot compare {} with {}", x.type_name(), y.type_name())));
         }

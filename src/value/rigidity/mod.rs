@@ -10,6 +10,7 @@
 
 pub mod algebra;
 mod cmct;
+mod dense;
 pub mod numbering;
 mod primal;
 
