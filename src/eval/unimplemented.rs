@@ -33,14 +33,12 @@ pub(crate) const HINTS: &[(&str, &str)] = &[
     ("ECOU", STATICS),
     ("EXCI", "UNIL runs the unilateral status iteration natively"),
     ("FLUX", STATICS),
-    ("KSIG", STATICS),
     ("MREM", "RESO and UNIL re-insert eliminated unknowns themselves"),
     ("OBTE", FILES),
     ("PJBA", STATICS),
     ("RECO", STATICS),
     ("REST", FILES),
     ("SAUV", FILES),
-    ("VIBR", STATICS),
 ];
 
 /// What gibi offers instead of a name, from the section of the manual it

@@ -54,6 +54,8 @@ mod integrate;
 mod io;
 mod joint_mesh;
 mod kp;
+mod ksigma;
+mod vibr;
 mod level_set;
 mod limits;
 mod lists;
@@ -219,6 +221,8 @@ impl Registry {
             chargement::OPS,
             model::OPS,
             kp::OPS,
+            ksigma::OPS,
+            vibr::OPS,
             manu::OPS,
             fields::OPS,
             products::OPS,

@@ -24,6 +24,7 @@
 pub mod assignment;
 pub mod bilateral;
 pub mod cache;
+pub mod eigen;
 pub mod error;
 pub mod mma;
 pub mod numbering;
