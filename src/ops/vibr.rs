@@ -15,7 +15,7 @@ use std::f64::consts::TAU;
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[OpDef {
-    name: "VIBR",
+    name: "VIBRATION",
     signature: "VIBR 'PROCHE' LISTREEL (LISTENTI) | 'INTERVALLE' F1 F2 ('BASSE'|'HAUTE' N) | 'SIMULTANE' F N | 'IRAM' F N, then RIGIDITE MASSE ('MULT') ('IMPR') (LOGIQUE)",
     doc: "Eigenmodes of K x = (2πf)² M x under K's equality conditions (BLOQ, RELA), solved densely: 'PROCHE' the N (default 1) modes closest to each frequency of the list, 'INTERVALLE' those with f1 ≤ f ≤ f2 (the N lowest or highest), 'SIMULTANE' and 'IRAM' the N closest to F. A negative (2πf)² gives a negative f unless LOGIQUE is FAUX. The result is a BASE_MODALE table: .'MODES'.i holds 'FREQUENCE', 'DEFORMEE_MODALE' (largest component 1), 'MASSE_GENERALISEE' (xᵀMx), 'NUMERO_MODE', 'POINT_REPERE' and 'DEPLACEMENTS_GENERALISES' (xᵀM·u_d for a unit translation along each axis).",
     example: "opti dime 2 elem seg2 mode plan cont ; l = (0. 0.) droi 4 (1. 0.) ; mo = mode l mecanique elastique barr ; ma = mate mo youn 1. nu 0.3 rho 1. sect 1. ; k = (rigi mo ma) et (bloq (l poin 1) depl) et (bloq l uy) ; m = mass mo ma ; t = vibr 'PROC' (prog 0.) (lect 2) k m ; f = t . 'MODES' . 1 . 'FREQUENCE' ;",
@@ -42,7 +42,7 @@ fn vibr(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             };
             if n.len() != f.len() {
                 return Err(a.err(format!(
-                    "VIBR 'PROCHE': {} frequencies but {} numbers of modes (the lists go in pairs)",
+                    "'PROCHE': {} frequencies but {} numbers of modes (the lists go in pairs)",
                     f.len(),
                     n.len()
                 )));
@@ -67,7 +67,7 @@ fn vibr(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let k = a.req::<Rc<Rigidite>>()?;
     let m = a.req::<Rc<Rigidite>>()?;
     if a.opt::<Rc<Rigidite>>().is_some() {
-        return Err(a.err("VIBR: a damping matrix is not available (real modes of K and M only)"));
+        return Err(a.err("a damping matrix is not available (real modes of K and M only)"));
     }
     let _ = a.keyword(&["MULT"]);
     let _ = a.keyword(&["IMPR"]);
@@ -76,14 +76,14 @@ fn vibr(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     for v in [&choice] {
         if let Choice::Interval { lo, hi, .. } = v {
             if !lo.is_finite() || !hi.is_finite() {
-                return Err(a.err("VIBR: the interval bounds must be finite"));
+                return Err(a.err("the interval bounds must be finite"));
             }
         }
     }
 
     let asm = k.number();
     if asm.problem.conditions.iter().any(|c| c.kind != Kind::Equal || c.dual.is_some()) {
-        return Err(a.err("VIBR: the stiffness holds unilateral or non-associated conditions"));
+        return Err(a.err("the stiffness holds unilateral or non-associated conditions"));
     }
     let mut mentries = Vec::new();
     for b in &m.blocks {
@@ -93,7 +93,7 @@ fn vibr(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             let mut idx = Vec::with_capacity(nd);
             for (l, c) in &b.dofs {
                 idx.push(asm.position(conn[*l], c).ok_or_else(|| {
-                    a.err(format!("VIBR: the mass has the unknown {} at node {}, which the stiffness lacks", c, conn[*l] + 1))
+                    a.err(format!("the mass has the unknown {} at node {}, which the stiffness lacks", c, conn[*l] + 1))
                 })?);
             }
             let mat = b.mat(e);
@@ -106,7 +106,7 @@ fn vibr(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     }
     let conds: Vec<Vec<(usize, f64)>> = asm.problem.conditions.iter().map(|c| c.terms.clone()).collect();
     let n = asm.dofs.len();
-    let pairs = eigen::solve(n, &asm.problem.k.entries, &mentries, &conds).map_err(|e| a.err(format!("VIBR: {}", e)))?;
+    let pairs = eigen::solve(n, &asm.problem.k.entries, &mentries, &conds).map_err(|e| a.err(e.to_string()))?;
     let freq = |p: &Pair| {
         let f = p.lambda.abs().sqrt() / TAU;
         if signed && p.lambda < 0.0 {
