@@ -27,7 +27,13 @@ use super::quadrature::seg;
 
 /// The geometric stiffness of one element under the stresses `sig` (at the
 /// element's output points).
-pub fn stiffness(f: Formulation, mode: Mode, x: &[[f64; 3]], m: &Material, sig: &GaussField) -> Result<ElemMatrix, FemError> {
+pub fn stiffness(
+    f: Formulation,
+    mode: Mode,
+    x: &[[f64; 3]],
+    m: &Material,
+    sig: &GaussField,
+) -> Result<ElemMatrix, FemError> {
     let elem = f.name();
     let (force_comp, cubic) = match f {
         Formulation::Barr => ("EFFX", false),

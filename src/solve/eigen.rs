@@ -31,7 +31,9 @@ pub struct Pair {
 
 #[derive(Debug, Clone, PartialEq)]
 pub enum EigenError {
-    TooLarge { n: usize },
+    TooLarge {
+        n: usize,
+    },
     /// No shift made K − σM positive definite.
     NoShift,
     Failed,
@@ -63,7 +65,7 @@ pub fn solve(
     conditions: &[Vec<(usize, f64)>],
 ) -> Result<Vec<Pair>, EigenError> {
     let z = null_space(n, conditions)?;
-    let r = z.ncols();
+    let r = z.cols();
     if r > MAX_DENSE {
         return Err(EigenError::TooLarge { n: r });
     }
@@ -90,7 +92,7 @@ pub fn solve(
                 continue;
             }
             let sw: Vec<f64> = (0..r).map(|a| (0..r).map(|b| s[(a, b)] * w[(b, i)]).sum()).collect();
-            let x: Vec<f64> = (0..n).map(|a| (0..r).map(|b| z[(a, b)] * sw[b]).sum()).collect();
+            let x = z.expand(n, &sw);
             out.push(Pair { lambda: sigma + 1.0 / nu[i], x });
         }
         out.sort_by(|a, b| a.lambda.total_cmp(&b.lambda));
@@ -113,18 +115,67 @@ fn inverse_sqrt(b: &Mat<f64>) -> Option<Mat<f64>> {
     Some(&vs * v.transpose())
 }
 
-/// Zᵀ A Z, symmetrised.
-fn reduce(n: usize, a: &[(usize, usize, f64)], z: &Mat<f64>) -> Mat<f64> {
-    let mut full = Mat::<f64>::zeros(n, n);
-    for &(i, j, v) in a {
-        full[(i, j)] += 0.5 * v;
-        full[(j, i)] += 0.5 * v;
+/// A basis of the unknowns the conditions leave free: some of the unknowns
+/// themselves (when every condition fixes one unknown), or dense columns.
+enum Basis {
+    Select(Vec<usize>),
+    Dense(Mat<f64>),
+}
+
+impl Basis {
+    fn cols(&self) -> usize {
+        match self {
+            Basis::Select(f) => f.len(),
+            Basis::Dense(z) => z.ncols(),
+        }
     }
-    z.transpose() * &full * z
+
+    /// Z y over all the unknowns.
+    fn expand(&self, n: usize, y: &[f64]) -> Vec<f64> {
+        match self {
+            Basis::Select(free) => {
+                let mut x = vec![0.0; n];
+                for (k, &j) in free.iter().enumerate() {
+                    x[j] = y[k];
+                }
+                x
+            }
+            Basis::Dense(z) => (0..n).map(|a| (0..y.len()).map(|b| z[(a, b)] * y[b]).sum()).collect(),
+        }
+    }
+}
+
+/// Zᵀ A Z, symmetrised (a selection never forms the full matrix).
+fn reduce(n: usize, a: &[(usize, usize, f64)], z: &Basis) -> Mat<f64> {
+    match z {
+        Basis::Select(free) => {
+            let mut at = vec![usize::MAX; n];
+            for (k, &j) in free.iter().enumerate() {
+                at[j] = k;
+            }
+            let mut out = Mat::<f64>::zeros(free.len(), free.len());
+            for &(i, j, v) in a {
+                let (p, q) = (at[i], at[j]);
+                if p != usize::MAX && q != usize::MAX {
+                    out[(p, q)] += 0.5 * v;
+                    out[(q, p)] += 0.5 * v;
+                }
+            }
+            out
+        }
+        Basis::Dense(z) => {
+            let mut full = Mat::<f64>::zeros(n, n);
+            for &(i, j, v) in a {
+                full[(i, j)] += 0.5 * v;
+                full[(j, i)] += 0.5 * v;
+            }
+            z.transpose() * &full * z
+        }
+    }
 }
 
 /// An orthonormal basis of {x : every condition row · x = 0}.
-fn null_space(n: usize, conditions: &[Vec<(usize, f64)>]) -> Result<Mat<f64>, EigenError> {
+fn null_space(n: usize, conditions: &[Vec<(usize, f64)>]) -> Result<Basis, EigenError> {
     let single = conditions.iter().all(|c| c.iter().filter(|(_, v)| *v != 0.0).count() <= 1);
     if single {
         let mut fixed = vec![false; n];
@@ -139,7 +190,7 @@ fn null_space(n: usize, conditions: &[Vec<(usize, f64)>]) -> Result<Mat<f64>, Ei
         if free.len() > MAX_DENSE {
             return Err(EigenError::TooLarge { n: free.len() });
         }
-        return Ok(Mat::from_fn(n, free.len(), |i, j| f64::from(u8::from(free[j] == i))));
+        return Ok(Basis::Select(free));
     }
     if n > MAX_DENSE {
         return Err(EigenError::TooLarge { n });
@@ -156,7 +207,7 @@ fn null_space(n: usize, conditions: &[Vec<(usize, f64)>]) -> Result<Mat<f64>, Ei
     let smax = (0..s.nrows()).map(|i| s[i]).fold(0.0, f64::max);
     let rank = (0..s.nrows()).filter(|&i| s[i] > 1e-10 * smax).count();
     let v = svd.V();
-    Ok(Mat::from_fn(n, n - rank, |i, j| v[(i, rank + j)]))
+    Ok(Basis::Dense(Mat::from_fn(n, n - rank, |i, j| v[(i, rank + j)])))
 }
 
 #[cfg(test)]
