@@ -108,7 +108,8 @@ fn inverse_sqrt(b: &Mat<f64>) -> Option<Mat<f64>> {
     let d = evd.S().column_vector();
     let v = evd.U();
     let dmax = (0..r).map(|i| d[i].abs()).fold(0.0, f64::max);
-    if (0..r).any(|i| !(d[i] > 1e-11 * dmax)) {
+    // NaN counts as not positive.
+    if (0..r).any(|i| d[i].is_nan() || d[i] <= 1e-11 * dmax) {
         return None;
     }
     let vs = Mat::from_fn(r, r, |i, j| v[(i, j)] / d[j].sqrt());
