@@ -4,7 +4,7 @@
 //! stops the deck where the deck *calls* it, by its full name and with
 //! what gibi offers instead. Without this a name would be an unknown word,
 //! hence a MOT (language.md §2.2): `SAUV l ;` would run silently and
-//! `y = VIBR k m 3 ;` would fail far away with "3 results for 1 name(s)".
+//! `y = DYNE k m 3 ;` would fail far away with "3 results for 1 name(s)".
 //!
 //! A refused name is refused only where it would run: as the operator of
 //! an instruction or a group. Where an operator reads its arguments it
@@ -31,14 +31,12 @@ pub(crate) const HINTS: &[(&str, &str)] = &[
     ("ECOU", STATICS),
     ("EXCI", "UNIL runs the unilateral status iteration natively"),
     ("FLUX", STATICS),
-    ("KSIG", STATICS),
     ("MREM", "RESO and UNIL re-insert eliminated unknowns themselves"),
     ("OBTE", FILES),
     ("PJBA", STATICS),
     ("RECO", STATICS),
     ("REST", FILES),
     ("SAUV", FILES),
-    ("VIBR", STATICS),
 ];
 
 /// What gibi offers instead of a name, from the section of the manual it

@@ -61,6 +61,7 @@ mod integrate;
 mod io;
 mod joint_mesh;
 mod kp;
+mod ksigma;
 mod level_set;
 mod limits;
 mod lists;
@@ -149,6 +150,7 @@ mod union;
 mod variable;
 mod variable_fields;
 mod vector_product;
+mod vibr;
 mod voronoi;
 mod vsur;
 mod weibull;
@@ -239,6 +241,8 @@ impl Registry {
             complex_modes::OPS,
             prestress::OPS,
             surface_forces::OPS,
+            ksigma::OPS,
+            vibr::OPS,
             manu::OPS,
             fields::OPS,
             products::OPS,

@@ -24,7 +24,7 @@ pub(crate) const OPS: &[OpDef] = &[
 const FORMS: &[&str] = &[
     "BARR", "POUT", "TIMO", "Q4RI", "Q8RI", "COQ3", "DKT", "DST", "COQ4", "COQ6", "COQ8", "COQ2", "TRI3", "TRI6",
     "QUA4", "QUA8", "CUB8", "TET4", "PRI6", "CU20", "PR15", "SEG2", "JOI2", "JOI3", "JOI4", "ICT3", "ICQ4", "ICT6",
-    "ICQ8", "ICT4", "ICC8", "ICP6", "BAEX", "QUAS", "TRIS",
+    "ICQ8", "ICT4", "ICC8", "ICP6", "BAEX", "QUAS", "TRIS", "TUYA",
 ];
 
 const BEHAVIOURS: &[&str] = &["ELASTIQUE", "ISOTROPE", "EPSILON", "SECTION"];
@@ -226,7 +226,7 @@ fn contact_model(it: &mut Interp, a: &mut Args, geo: &Mesh) -> Result<Vec<Value>
 const PROPS: &[&str] = &[
     "YOUN", "NU", "RHO", "ALPH", "TREF", "SECT", "INRY", "INRZ", "TORS", "SECY", "SECZ", "EPAI", "DIM3", "EXCE", "DX",
     "DY", "DZ", "VECT", "VX", "VY", "VZ", "EXCY", "EXCZ", "MODS", "MATS", "ALPY", "ALPZ", "JEU", "ADHE", "SIGY", "H",
-    "KS", "KN", "ALPN", "K", "C",
+    "KS", "KN", "ALPN", "K", "C", "RAYO", "RACO", "PRES",
 ];
 
 fn props(it: &Interp, a: &mut Args, subtype: &str) -> Result<Vec<Value>> {
@@ -275,6 +275,9 @@ fn props(it: &Interp, a: &mut Args, subtype: &str) -> Result<Vec<Value>> {
             objects: section.objects().into_iter().map(|(k, v)| (k.to_string(), v)).collect(),
             ..Default::default()
         };
+        if z.element == "TUYA" {
+            tube_section(a, &mut mz.constants)?;
+        }
         for (name, f) in &fields {
             let per = element_values(f, &z.mesh, name).map_err(|e| a.err(e))?;
             match per.iter().all(|v| *v == per[0]) {
@@ -296,6 +299,18 @@ fn props(it: &Interp, a: &mut Args, subtype: &str) -> Result<Vec<Value>> {
         zones.push(mz);
     }
     Ok(vec![Value::Mchaml(Rc::new(Mchaml { subtype: subtype.into(), zones }))])
+}
+
+/// TUYA: the beam section of a tube (`fem::pipe`) from EPAI and RAYO
+/// (and RACO, PRES for an elbow), when both are given in this call.
+fn tube_section(a: &Args, c: &mut std::collections::BTreeMap<String, f64>) -> Result<()> {
+    let (Some(&e), Some(&r)) = (c.get("EPAI"), c.get("RAYO")) else { return Ok(()) };
+    let props = crate::fem::pipe::section(e, r, c.get("RACO").copied(), c.get("PRES").copied(), c.get("YOUN").copied())
+        .map_err(|m| a.err(m))?;
+    for (k, v) in props {
+        c.entry(k.to_string()).or_insert(v);
+    }
+    Ok(())
 }
 
 /// The value of component `name` of `f` on each element of `mesh` (its
@@ -381,6 +396,8 @@ pub(crate) fn formulation(zone: &ModelZone) -> Formulation {
         "BAEX" => Formulation::Baex,
         "POUT" => Formulation::Pout,
         "TIMO" => Formulation::Timo,
+        // A pipe is a beam with a tube's section (`tube_section`).
+        "TUYA" => Formulation::Pout,
         "Q4RI" => Formulation::Q4ri,
         "Q8RI" => Formulation::Q8ri,
         "JOI2" | "JOI3" | "JOI4" => Formulation::Joint,

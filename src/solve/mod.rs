@@ -25,6 +25,7 @@ pub mod assignment;
 pub mod bilateral;
 pub mod cache;
 pub mod complex_modes;
+pub mod eigen;
 pub mod error;
 pub mod mma;
 pub mod numbering;

@@ -82,6 +82,13 @@ impl Assembled {
         self.problem.k = Matrix { n: self.dofs.len(), entries, symmetric };
     }
 
+    /// The number of the unknown (node, primal component), if the system
+    /// has it.
+    pub fn position(&self, node: usize, comp: &str) -> Option<usize> {
+        let id = self.comps.iter().position(|c| c == comp)?;
+        self.index.get(&(node, id as u16)).copied()
+    }
+
     /// The unknown a load component names: a dual name (FX) or the primal
     /// name itself.
     fn find(&self, node: usize, comp: &str) -> Option<usize> {
