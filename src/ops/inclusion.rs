@@ -105,7 +105,8 @@ fn incl(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             for e in p.elems() {
                 if p.ty.dim() == 1 {
                     // A SEG3 through its middle node (e[1]), as its curve.
-                    let chain: Vec<usize> = if e.len() == 3 { vec![e[0], e[1], e[2]] } else { vec![e[0], e[e.len() - 1]] };
+                    let chain: Vec<usize> =
+                        if e.len() == 3 { vec![e[0], e[1], e[2]] } else { vec![e[0], e[e.len() - 1]] };
                     segs.extend(chain.windows(2).map(|w| [local[&w[0]], local[&w[1]]]));
                 } else {
                     tris.extend(triangles(p.ty, e).into_iter().map(|t| t.map(|n| local[&n])));
