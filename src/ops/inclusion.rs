@@ -26,13 +26,23 @@ enum Mode {
     Bary,
 }
 
-/// The corners of a surface element, split in triangles.
+/// A surface element split in triangles. A quadratic element is cut
+/// through its mid-side nodes: its curved sides bulge out of the chords
+/// between corners, and a mid-side node shared with GEO2 must be on the
+/// region's boundary, not outside it.
 fn triangles(ty: ElemType, e: &[usize]) -> Vec<[usize; 3]> {
     match ty {
         ElemType::Tri3 => vec![[e[0], e[1], e[2]]],
-        ElemType::Tri6 => vec![[e[0], e[2], e[4]]],
+        ElemType::Tri6 => vec![[e[0], e[1], e[5]], [e[1], e[2], e[3]], [e[3], e[4], e[5]], [e[1], e[3], e[5]]],
         ElemType::Qua4 => vec![[e[0], e[1], e[2]], [e[0], e[2], e[3]]],
-        ElemType::Qua8 => vec![[e[0], e[2], e[4]], [e[0], e[4], e[6]]],
+        ElemType::Qua8 => vec![
+            [e[7], e[0], e[1]],
+            [e[1], e[2], e[3]],
+            [e[3], e[4], e[5]],
+            [e[5], e[6], e[7]],
+            [e[1], e[3], e[5]],
+            [e[1], e[5], e[7]],
+        ],
         _ => vec![],
     }
 }
@@ -94,7 +104,10 @@ fn incl(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         for p in &geo3.parts {
             for e in p.elems() {
                 if p.ty.dim() == 1 {
-                    segs.push([local[&e[0]], local[&e[e.len() - 1]]]);
+                    // A SEG3 through its middle node (e[1]), as its curve.
+                    let chain: Vec<usize> =
+                        if e.len() == 3 { vec![e[0], e[1], e[2]] } else { vec![e[0], e[e.len() - 1]] };
+                    segs.extend(chain.windows(2).map(|w| [local[&w[0]], local[&w[1]]]));
                 } else {
                     tris.extend(triangles(p.ty, e).into_iter().map(|t| t.map(|n| local[&n])));
                 }

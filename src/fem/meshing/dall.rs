@@ -172,6 +172,11 @@ impl Grid {
         let v2 = arc_fractions(nodes, &c[1]);
         let u3: Vec<f64> = arc_fractions(nodes, &c[2]).iter().rev().map(|s| 1.0 - s).collect();
         let v4: Vec<f64> = arc_fractions(nodes, &c[3]).iter().rev().map(|s| 1.0 - s).collect();
+        // The sides' nodes in grid order (i for sides 1 and 3, j for 2 and 4).
+        let c1: Vec<usize> = (0..=m1).map(|i| ids[i]).collect();
+        let c3: Vec<usize> = (0..=m1).map(|i| ids[m2 * w + i]).collect();
+        let c2: Vec<usize> = (0..=m2).map(|j| ids[j * w + m1]).collect();
+        let c4: Vec<usize> = (0..=m2).map(|j| ids[j * w]).collect();
         let p = |n: usize| (nodes.get(n), nodes.density[n]);
         let corners = [p(c[0][0]), p(c[1][0]), p(c[2][0]), p(c[3][0])];
         let mut new = Vec::new();
@@ -186,7 +191,15 @@ impl Grid {
                 let (du, dv) = (u3[i] - u1[i], v2[j] - v4[j]);
                 let u = (u1[i] + v4[j] * du) / (1.0 - du * dv);
                 let v = v4[j] + u * dv;
-                let sides = [p(ids[i]), p(ids[j * w + m1]), p(ids[m2 * w + i]), p(ids[j * w])];
+                // Each side at the point's own parameter (not at the side
+                // node of the same index): with unequal gradings on opposite
+                // sides the index-sampled patch folds rows out of the contour.
+                let sides = [
+                    along(nodes, &c1, &u1, u),
+                    along(nodes, &c2, &v2, v),
+                    along(nodes, &c3, &u3, u),
+                    along(nodes, &c4, &v4, v),
+                ];
                 let w_side = [1.0 - v, u, v, 1.0 - u];
                 let w_corner = [(1.0 - u) * (1.0 - v), u * (1.0 - v), u * v, (1.0 - u) * v];
                 let mut x: V3 = [0.0; 3];
@@ -232,6 +245,20 @@ impl Grid {
         }
         mesh_of(vec![(ty, conn)])
     }
+}
+
+/// The point (and density) at fraction `s` of a side whose nodes `chain`
+/// sit at the increasing fractions `fr`, linear between nodes.
+fn along(nodes: &Nodes, chain: &[usize], fr: &[f64], s: f64) -> (V3, f64) {
+    let k = fr.windows(2).position(|w| s <= w[1]).unwrap_or(fr.len().saturating_sub(2)).min(chain.len() - 1);
+    if k + 1 >= chain.len() {
+        return (nodes.get(chain[k]), nodes.density[chain[k]]);
+    }
+    let span = fr[k + 1] - fr[k];
+    let t = if span > 0.0 { ((s - fr[k]) / span).clamp(0.0, 1.0) } else { 0.0 };
+    let (a, b) = (chain[k], chain[k + 1]);
+    let x = add(scale(nodes.get(a), 1.0 - t), scale(nodes.get(b), t));
+    (x, (1.0 - t) * nodes.density[a] + t * nodes.density[b])
 }
 
 /// Cumulative arc length of a chain as fractions of its total (index

@@ -4,11 +4,13 @@
 //! as Cast3M does (decks join the halves with `ET` and merge the nodes on
 //! the mirror with `ELIM`). Elements keep their place in the mesh. Lines
 //! keep their node order, so the image of a line runs from the image of
-//! its first point. Surface and volume elements are turned over when the
-//! symmetry reverses orientation (a mirror line in 2D, a plane in 3D, a
-//! point in 3D), so that the image of a counter-clockwise surface is
-//! counter-clockwise and the image of a positive volume is positive: the
-//! two halves of a symmetric part join into one consistently oriented mesh.
+//! its first point. Elements of the space's dimension (surfaces in 2D,
+//! volumes in 3D) are turned over when the symmetry reverses orientation
+//! (a mirror line in 2D, a plane or a point in 3D), so that the image of
+//! a counter-clockwise surface is counter-clockwise and the image of a
+//! positive volume is positive. Surfaces in 3D keep their node order, as
+//! Cast3M's crack decks expect (the lower lip is INVE of the upper one's
+//! image).
 
 use super::vec3::{add, cross, dot, norm, scale, sub, V3};
 use super::{check_nodes, fail, MeshError, NodeMap};
@@ -121,7 +123,15 @@ pub fn syme_together(nodes: &mut Nodes, meshes: &[&Mesh], mirror: Mirror, dim: u
             let parts = image
                 .parts
                 .into_iter()
+                // Only elements of the space's own dimension (surfaces in
+                // 2D, volumes in 3D) are turned over: their measure must stay
+                // positive. A surface in 3D keeps its node order, as a line
+                // does: a face in the mirror plane keeps its normal, and a
+                // crack's other lip is INVE of its image.
                 .map(|p| {
+                    if p.ty.dim() != dim {
+                        return p;
+                    }
                     let perm = turn_over(p.ty);
                     let conn = p.elems().flat_map(|e| perm.iter().map(move |&k| e[k])).collect();
                     Part { conn, ..p }
