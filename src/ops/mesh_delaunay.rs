@@ -85,6 +85,7 @@ fn tria(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             space_dim: 2,
             crit: 1e-2,
             sizes: geo.node_list().into_iter().map(|n| (n, h)).collect(),
+            sphere: None,
         };
         return Ok(vec![Value::Mesh(Rc::new(mg::surf::surf(&mut it.nodes, &geo, ElemType::Tri3, &o)?))]);
     }

@@ -5,6 +5,7 @@
 use super::mesh::mesh_val;
 use super::{Args, OpDef};
 use crate::error::Result;
+use crate::eval::args::keyword_matches;
 use crate::eval::Interp;
 use crate::fem::mesh::Mesh;
 use crate::fem::meshing::deduce::{moved_masters, node_map};
@@ -44,11 +45,18 @@ fn dedu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         objects.push(v);
     }
     objects.reverse();
+    // Objects may also follow DEDU, before the word or the angle that
+    // says how they move (`DEDU OBJ1 'TRAN' GEO1 GEO2`).
+    let mut after = Vec::new();
+    while a.peek_right().is_some_and(|v| !matches!(v, Value::Mot(_) | Value::Int(_) | Value::Float(_))) {
+        after.extend(a.right_any());
+    }
     // `DEDU MAI2 MAI_ANC MAI_NOU`: a mesh moved by master nodes.
-    if objects.is_empty() && a.peek_right().is_some_and(|v| matches!(v, Value::Mesh(_))) {
-        let mesh = a.req::<Rc<Mesh>>()?;
-        let old = a.req::<Rc<Mesh>>()?;
-        let new = a.req::<Rc<Mesh>>()?;
+    let moves = a.peek_word().is_some_and(|w| ["TRAN", "ROTA"].iter().any(|k| keyword_matches(&w, k)))
+        || a.peek_right().is_some_and(|v| matches!(v, Value::Int(_) | Value::Float(_)));
+    if let (true, [Value::Mesh(mesh), Value::Mesh(old), Value::Mesh(new)]) =
+        (objects.is_empty() && !moves, after.as_slice())
+    {
         if a.keyword(&["REGU"]).is_some() {
             return Err(a.err("DEDU … 'REGU' (smoothing the moved mesh) is not implemented"));
         }
@@ -74,6 +82,7 @@ fn dedu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         }
         Some(Motion::Rotate { angle_deg, centre, axis_end })
     };
+    objects.extend(after);
     objects.extend(a.rest());
     if objects.len() < 3 {
         return Err(a.missing("the objects to carry, then the meshes GEO1 and GEO2"));

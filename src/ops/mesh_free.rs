@@ -1,7 +1,7 @@
 //! Free meshing: SURF. The mesher is `fem::meshing::surf`; this file reads
 //! the Gibiane arguments.
 
-use super::{Args, OpDef};
+use super::{Args, OpDef, PointId};
 use crate::error::Result;
 use crate::eval::Interp;
 use crate::fem::mesh::Mesh;
@@ -11,8 +11,8 @@ use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[OpDef {
     name: "SURF",
-    signature: "SURF (CHPO_SIZES) LINE ('PLAN' (crit))",
-    doc: "Free meshing of the inside of closed contours (holes are inner contours) lying in a plane: TRI3/TRI6, or under OPTI ELEM QUA4/QUA8 quadrangles with a few triangles. Element size from the contour (node densities, else its segment lengths), or from a CHPOINT of sizes.",
+    signature: "SURF (CHPO_SIZES) LINE ('PLAN' (crit) | 'SPHE' CENTRE)",
+    doc: "Free meshing of the inside of closed contours (holes are inner contours) lying in a plane, or on a sphere ('SPHE' and its centre: a cap smaller than a hemisphere): TRI3/TRI6, or under OPTI ELEM QUA4/QUA8 quadrangles with a few triangles. Element size from the contour (node densities, else its segment lengths), or from a CHPOINT of sizes.",
     example: "s = surf (d1 et d2 et d3 et d4) 'PLAN' ;",
     f: surf,
 }];
@@ -29,6 +29,7 @@ fn surf(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         None => Default::default(),
     };
     let mut crit = PLANE_CRIT;
+    let mut sphere = None;
     match a.keyword(&["PLAN", "SPHE", "CYLI", "CONI", "TORI", "POLY"]) {
         None => {}
         Some("PLAN") => {
@@ -39,16 +40,18 @@ fn surf(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
                 crit = c;
             }
         }
+        Some("SPHE") => sphere = Some(it.nodes.get(a.req::<PointId>()?.0)),
         Some(k) => {
             return Err(a.err(format!(
-                "'{k}' surfaces are not available: gibi meshes plane contours ('PLAN'); \
+                "'{k}' surfaces are not available: gibi meshes plane contours ('PLAN') and caps of a \
+                 sphere ('SPHE'); \
                  mesh a curved surface with DALL, TRAN or ROTA"
             )))
         }
     }
     let dim = it.opts.dime.max(2);
     let ty = mg::surf::surface_type(&it.opts.elem);
-    let o = mg::surf::SurfOptions { space_dim: dim, crit, sizes };
+    let o = mg::surf::SurfOptions { space_dim: dim, crit, sizes, sphere };
     Ok(vec![Value::Mesh(Rc::new(mg::surf::surf(&mut it.nodes, &contour, ty, &o)?))])
 }
 

@@ -28,8 +28,8 @@ pub(crate) const OPS: &[OpDef] = &[
     },
     OpDef {
         name: "PROJ",
-        signature: "POINT|MAILLAGE PROJ 'CYLI' VECTOR|'CONI' APEX  'PLAN' P1 P2 P3 | 'DROI' P1 P2",
-        doc: "A copy on new nodes projected on a plane (3D) or a line (2D), along a direction (CYLI) or from an apex (CONI).",
+        signature: "POINT|MAILLAGE PROJ 'CYLI' VECTOR|'CONI' APEX  'PLAN' P1 P2 P3 | 'DROI' P1 P2 | 'SPHE' CENTRE P | 'CERC' CENTRE P | 'CYLI' C1 C2 P",
+        doc: "A copy on new nodes projected on a plane (3D) or a line (2D), a sphere (3D) or a circle (2D) of that centre through P, or the cylinder of axis C1 C2 through P, along a direction (CYLI) or from an apex (CONI). On a sphere, circle or cylinder the image is the nearer of the two points where the line of projection meets it.",
         example: "s2 = s1 proj 'CYLI' (0. 0. 1.) 'PLAN' p1 p2 p3 ;",
         f: proj,
     },
@@ -105,7 +105,7 @@ pub(crate) fn read_proj(it: &Interp, a: &mut Args) -> Result<PointMap> {
     // proj.notice: 'CYLI' (along a vector) is the default.
     let how = a.keyword(&["CYLI", "CONI"]).unwrap_or("CYLI");
     let v = point(it, a, if how == "CYLI" { "the direction" } else { "the apex" })?;
-    let target = match a.req_keyword(&["PLAN", "DROI", "SPHE", "CYLI", "CONI", "TORI"])? {
+    let target = match a.req_keyword(&["PLAN", "DROI", "SPHE", "CERC", "CYLI", "CONI", "TORI"])? {
         "PLAN" => {
             if it.opts.dime < 3 {
                 return Err(a.err("'PLAN' needs OPTI DIME 3; in 2D project on a line with 'DROI' P1 P2"));
@@ -121,8 +121,20 @@ pub(crate) fn read_proj(it: &Interp, a: &mut Args) -> Result<PointMap> {
             let p1 = point(it, a, "the first point of the line")?;
             Target::line2d("PROJ", p1, point(it, a, "the second point of the line")?)?
         }
+        "SPHE" | "CERC" => {
+            let c = point(it, a, "the centre")?;
+            Target::sphere("PROJ", c, point(it, a, "a point of the sphere")?)?
+        }
+        "CYLI" => {
+            let c1 = point(it, a, "the first point of the axis")?;
+            let c2 = point(it, a, "the second point of the axis")?;
+            Target::cylinder("PROJ", c1, c2, point(it, a, "a point of the cylinder")?)?
+        }
         other => {
-            return Err(a.err(format!("projection on a {} is not implemented in gibi (only 'PLAN' and 'DROI')", other)))
+            return Err(a.err(format!(
+                "projection on a {} is not implemented in gibi ('PLAN', 'DROI', 'SPHE', 'CERC', 'CYLI')",
+                other
+            )))
         }
     };
     Ok(if how == "CYLI" { PointMap::Cylindrical { dir: v, target } } else { PointMap::Conical { apex: v, target } })

@@ -27,7 +27,7 @@ pub fn dall_unequal(nodes: &mut Nodes, chains: &[Vec<usize>], ty: ElemType) -> R
         let conn = chains.iter().flat_map(|c| c.windows(2).flat_map(|w| [w[0], w[1]]));
         mesh_of(vec![(ElemType::Seg2, conn.collect())])
     };
-    let o = SurfOptions { space_dim: 3, crit: PLANE_CRIT, sizes: Default::default() };
+    let o = SurfOptions { space_dim: 3, crit: PLANE_CRIT, ..Default::default() };
     surf(nodes, &contour, ty, &o).map_err(|e| {
         MeshError::new(
             "DALL",

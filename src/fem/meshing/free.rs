@@ -82,7 +82,9 @@ pub fn triangulate(
 }
 
 pub(crate) fn load(op: &'static str, points: &[[f64; 2]], edges: &[[usize; 2]]) -> Result<Cdt, MeshError> {
-    let verts: Vec<Point2<f64>> = points.iter().map(|p| Point2::new(p[0], p[1])).collect();
+    // Coordinates below spade's smallest (about 1e-43, left by rounding in
+    // a change of frame) are zeros.
+    let verts: Vec<Point2<f64>> = points.iter().map(|p| spade::mitigate_underflow(Point2::new(p[0], p[1]))).collect();
     let mut crossing = false;
     let cdt = Cdt::try_bulk_load_cdt(verts, edges.to_vec(), |_| crossing = true)
         .map_err(|e| super::MeshError::new(op, format!("the contour cannot be triangulated ({e:?})")))?;
@@ -180,7 +182,8 @@ fn refine(op: &'static str, cdt: &mut Cdt, size: &SizeField) -> Result<(), MeshE
                 if !inside_face || cdt.get_vertices_in_circle(p, (SPACING * h).powi(2)).next().is_some() {
                     continue;
                 }
-                cdt.insert(p).map_err(|e| super::MeshError::new(op, format!("cannot insert a point ({e:?})")))?;
+                cdt.insert(spade::mitigate_underflow(p))
+                    .map_err(|e| super::MeshError::new(op, format!("cannot insert a point ({e:?})")))?;
                 // Faces made by an insertion inside the region are inside.
                 inside.resize(cdt.num_all_faces(), true);
                 inserted += 1;

@@ -55,6 +55,7 @@ pub mod refine;
 pub mod regenerate;
 pub mod select;
 pub mod surf;
+pub mod surf_sphere;
 pub mod surface_cut;
 pub mod sweep;
 pub mod symmetry;

@@ -14,6 +14,7 @@
 //! is the target size there.
 
 use super::contour::{corner_sizes, loops, Frame};
+use super::surf_sphere::Stereographic;
 use super::{free, mesh_of, pairing, MeshError};
 use crate::fem::mesh::{ElemType, Mesh, Nodes, Part};
 use std::collections::HashMap;
@@ -42,20 +43,42 @@ pub struct SurfOptions {
     /// Sizes given by a field at some contour nodes; they win over the
     /// node densities.
     pub sizes: HashMap<usize, f64>,
+    /// 'SPHE': the centre of the sphere the contour lies on.
+    pub sphere: Option<[f64; 3]>,
 }
 
 /// `SURF contour` with elements of type `ty` (TRI3, TRI6, QUA4, QUA8).
 pub fn surf(nodes: &mut Nodes, contour: &Mesh, ty: ElemType, o: &SurfOptions) -> Result<Mesh, MeshError> {
     let lps = loops(OP, nodes, contour)?;
-    let frame = Frame::of(OP, nodes, &lps, o.space_dim, o.crit)?;
+    // On a sphere the contour is filled on its stereographic projection.
+    let sphere = match o.sphere {
+        Some(c) => {
+            let corners: Vec<[f64; 3]> = lps.iter().flat_map(|l| l.corners.iter().map(|&n| nodes.get(n))).collect();
+            Some(Stereographic::new(OP, c, &corners)?)
+        }
+        None => None,
+    };
+    let flat;
+    let geo: &Nodes = match &sphere {
+        None => nodes,
+        Some(g) => {
+            let mut f = nodes.clone();
+            for &n in lps.iter().flat_map(|l| &l.corners) {
+                f.coords[n] = g.to_plane(nodes.get(n));
+            }
+            flat = f;
+            &flat
+        }
+    };
+    let frame = Frame::of(OP, geo, &lps, o.space_dim, o.crit)?;
     let mut local: HashMap<usize, usize> = HashMap::new();
     let (mut pts, mut sizes, mut ids, mut polys) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
     for l in &lps {
-        let hs = corner_sizes(nodes, l);
+        let hs = corner_sizes(geo, l);
         let mut poly = Vec::with_capacity(l.corners.len());
         for (&n, h) in l.corners.iter().zip(hs) {
             let k = *local.entry(n).or_insert_with(|| {
-                pts.push(frame.local(nodes.get(n)));
+                pts.push(frame.local(geo.get(n)));
                 sizes.push(o.sizes.get(&n).copied().unwrap_or(h));
                 ids.push(n);
                 ids.len() - 1
@@ -66,7 +89,8 @@ pub fn surf(nodes: &mut Nodes, contour: &Mesh, ty: ElemType, o: &SurfOptions) ->
     }
     let planar = free::triangulate(OP, &pts, &sizes, &polys)?;
     for (p, h) in planar.points.iter().zip(&planar.sizes).skip(ids.len()) {
-        ids.push(nodes.push(frame.global(*p), *h));
+        let x = frame.global(*p);
+        ids.push(nodes.push(sphere.map_or(x, |g| g.to_sphere(x)), *h));
     }
     let g = |t: &[usize]| t.iter().map(|&k| ids[k]).collect::<Vec<_>>();
     let mut parts: Vec<(ElemType, Vec<usize>)> = Vec::new();

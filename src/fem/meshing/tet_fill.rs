@@ -64,7 +64,10 @@ pub fn volu_closed(op: &'static str, nodes: &mut Nodes, surf: &Mesh) -> Result<M
                 Ok(inside) => {
                     let first = nodes.len();
                     for (k, e) in r.added.iter().enumerate() {
-                        let d = 0.5 * (nodes.density[ids[e[0]]] + nodes.density[ids[e[1]]]);
+                        // A point may split an edge ending at a point
+                        // added before it (pushed already, in order).
+                        let dens = |v: usize| nodes.density[if v < ids.len() { ids[v] } else { first + v - ids.len() }];
+                        let d = 0.5 * (dens(e[0]) + dens(e[1]));
                         let at = nodes.push(r.pts[ids.len() + k], d);
                         debug_assert_eq!(at, first + k);
                     }

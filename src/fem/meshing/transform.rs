@@ -1,5 +1,7 @@
 //! Point maps applied to copies of meshes: HOMO (homothety), AFFI
-//! (affinity), PROJ (projection on a plane or a line), and BARY (the
+//! (affinity), PROJ (projection on a plane, a line, a sphere, a circle or a
+//! cylinder: on a round target, the nearer of the two points where the
+//! line of projection meets it), and BARY (the
 //! barycentre of the nodes).
 //!
 //! As for PLUS and SYME, every node of the mesh gets a new node at its
@@ -28,25 +30,95 @@ pub enum PointMap {
     Conical { apex: V3, target: Target },
 }
 
-/// What PROJ projects on: a plane (3D), or a line (2D), both given by a
-/// point and a unit normal.
+/// What PROJ projects on: a plane (3D) or a line (2D), given by a point
+/// and a unit normal; a sphere (3D) or a circle (2D); a cylinder.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Target {
-    pub origin: V3,
-    pub normal: V3,
+pub enum Target {
+    Plane {
+        origin: V3,
+        normal: V3,
+    },
+    /// A sphere (a circle in the plane z = 0); with an axis (a unit vector
+    /// through the centre), the cylinder about it.
+    Round {
+        centre: V3,
+        axis: Option<V3>,
+        radius: f64,
+    },
 }
 
 impl Target {
     /// `'PLAN' P1 P2 P3`.
     pub fn plane(op: &'static str, a: V3, b: V3, c: V3) -> Result<Target, MeshError> {
         unit(op, cross(sub(b, a), sub(c, a)), "the three points of the plane are aligned")
-            .map(|normal| Target { origin: a, normal })
+            .map(|normal| Target::Plane { origin: a, normal })
     }
 
     /// `'DROI' P1 P2` in the plane z = 0.
     pub fn line2d(op: &'static str, a: V3, b: V3) -> Result<Target, MeshError> {
         let d = sub(b, a);
-        unit(op, [-d[1], d[0], 0.0], "the two points of the line coincide").map(|normal| Target { origin: a, normal })
+        unit(op, [-d[1], d[0], 0.0], "the two points of the line coincide")
+            .map(|normal| Target::Plane { origin: a, normal })
+    }
+
+    /// `'SPHE' C P` (`'CERC' C P` in 2D): centre C, through P.
+    pub fn sphere(op: &'static str, centre: V3, p: V3) -> Result<Target, MeshError> {
+        let radius = norm(sub(p, centre));
+        if !(radius > 0.0 && radius.is_finite()) {
+            return fail(op, "the point the sphere passes through is its centre");
+        }
+        Ok(Target::Round { centre, axis: None, radius })
+    }
+
+    /// `'CYLI' C1 C2 P`: the axis through C1 and C2, through P.
+    pub fn cylinder(op: &'static str, c1: V3, c2: V3, p: V3) -> Result<Target, MeshError> {
+        let k = unit(op, sub(c2, c1), "the two points of the cylinder's axis coincide")?;
+        let w = sub(p, c1);
+        let radius = norm(sub(w, scale(k, dot(w, k))));
+        if !(radius > 0.0 && radius.is_finite()) {
+            return fail(op, "the point the cylinder passes through is on its axis");
+        }
+        Ok(Target::Round { centre: c1, axis: Some(k), radius })
+    }
+
+    /// The unit normal of a plane target (AFFI's base).
+    fn normal(&self) -> V3 {
+        match *self {
+            Target::Plane { normal, .. } => normal,
+            Target::Round { .. } => [0.0; 3],
+        }
+    }
+
+    /// Where the line `x + t d` meets the target, nearest to `x` (the
+    /// smallest |t|), or None when it misses it.
+    fn hit(&self, x: V3, d: V3) -> Option<V3> {
+        let t = match *self {
+            Target::Plane { origin, normal } => {
+                let along = dot(d, normal);
+                if along.abs() <= 1e-12 * norm(d) {
+                    return None;
+                }
+                dot(sub(origin, x), normal) / along
+            }
+            Target::Round { centre, axis, radius } => {
+                // Across the axis for a cylinder: |w + t e|² = R².
+                let flat = |v: V3| axis.map_or(v, |k| sub(v, scale(k, dot(v, k))));
+                let (w, e) = (flat(sub(x, centre)), flat(d));
+                let (a, b, c) = (dot(e, e), dot(e, w), dot(w, w) - radius * radius);
+                let disc = b * b - a * c;
+                if a <= 1e-24 * dot(d, d) || disc < 0.0 {
+                    return None;
+                }
+                let (t1, t2) = ((-b - disc.sqrt()) / a, (-b + disc.sqrt()) / a);
+                // A tie (the point on the axis) goes along the direction.
+                if t2.abs() <= t1.abs() {
+                    t2
+                } else {
+                    t1
+                }
+            }
+        };
+        t.is_finite().then(|| add(x, scale(d, t)))
     }
 }
 
@@ -62,7 +134,7 @@ impl PointMap {
     /// `AFFI` in 2D: base line P1 P2.
     pub fn affinity_2d(ratio: f64, a: V3, b: V3) -> Result<PointMap, MeshError> {
         let t = Target::line2d("AFFI", a, b)?;
-        Ok(PointMap::Affinity { ratio, origin: a, normal: t.normal })
+        Ok(PointMap::Affinity { ratio, origin: a, normal: t.normal() })
     }
 
     /// `AFFI ratio P1 P2` in 3D (affi.notice): distances along the
@@ -78,7 +150,7 @@ impl PointMap {
     /// `AFFI` in 3D: base plane P1 P2 P3.
     pub fn affinity_3d(ratio: f64, a: V3, b: V3, c: V3) -> Result<PointMap, MeshError> {
         let t = Target::plane("AFFI", a, b, c)?;
-        Ok(PointMap::Affinity { ratio, origin: a, normal: t.normal })
+        Ok(PointMap::Affinity { ratio, origin: a, normal: t.normal() })
     }
 
     fn op(&self) -> &'static str {
@@ -98,22 +170,18 @@ impl PointMap {
                 let h = dot(sub(x, origin), normal);
                 Ok(add(x, scale(normal, (ratio - 1.0) * h)))
             }
-            PointMap::Cylindrical { dir, target } => {
-                let along = dot(dir, target.normal);
-                if along.abs() <= 1e-12 * norm(dir) {
-                    return fail("PROJ", "the direction of projection is parallel to the target");
-                }
-                let t = dot(sub(target.origin, x), target.normal) / along;
-                Ok(add(x, scale(dir, t)))
-            }
+            PointMap::Cylindrical { dir, target } => target
+                .hit(x, dir)
+                .ok_or_else(|| MeshError::new("PROJ", "the direction of projection misses the target")),
             PointMap::Conical { apex, target } => {
                 let ray = sub(x, apex);
-                let along = dot(ray, target.normal);
-                if along.abs() <= 1e-12 * norm(ray) || norm(ray) == 0.0 {
-                    return fail("PROJ", format!("the ray from the apex through {:?} does not meet the target", x));
+                match norm(ray) > 0.0 {
+                    true => target.hit(x, ray),
+                    false => None,
                 }
-                let s = dot(sub(target.origin, apex), target.normal) / along;
-                Ok(add(apex, scale(ray, s)))
+                .ok_or_else(|| {
+                    MeshError::new("PROJ", format!("the ray from the apex through {:?} does not meet the target", x))
+                })
             }
         }
     }
@@ -220,6 +288,16 @@ mod tests {
         assert!(close(k.image([1.0, 1.0, 1.0]).unwrap(), [2.0, 2.0, 2.0]));
         let par = PointMap::Cylindrical { dir: [1.0, 0.0, 0.0], target: plane };
         assert!(par.image([0.0; 3]).is_err());
+        let ball = Target::sphere("PROJ", [0.0; 3], [0.0, 0.0, 2.0]).unwrap();
+        let k = PointMap::Conical { apex: [0.0; 3], target: ball };
+        assert!(close(k.image([3.0, 4.0, 0.0]).unwrap(), [1.2, 1.6, 0.0]));
+        let c = PointMap::Cylindrical { dir: [0.0, 0.0, -1.0], target: ball };
+        assert!(close(c.image([0.0, 0.0, 5.0]).unwrap(), [0.0, 0.0, 2.0]));
+        assert!(c.image([3.0, 0.0, 5.0]).is_err());
+        let tube = Target::cylinder("PROJ", [0.0; 3], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0]).unwrap();
+        let c = PointMap::Cylindrical { dir: [1.0, 1.0, 0.0], target: tube };
+        let h = 0.5f64.sqrt();
+        assert!(close(c.image([0.0, 0.0, 7.0]).unwrap(), [h, h, 7.0]));
     }
 
     #[test]
