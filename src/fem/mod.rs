@@ -47,6 +47,7 @@ pub mod thermal;
 pub mod thick_shell;
 pub mod vec3;
 pub mod work;
+pub mod xfem;
 pub mod xfem_c8r;
 pub mod xfem_c8r_cut;
 

@@ -55,6 +55,8 @@ mod io;
 mod joint_mesh;
 mod kp;
 mod level_set;
+mod xfem;
+mod xfem_model;
 mod limits;
 mod lists;
 mod lists_search;
@@ -239,6 +241,7 @@ impl Registry {
             cmct::OPS,
             fracture::OPS,
             level_set::OPS,
+            xfem::OPS,
             export::OPS,
             evol::OPS,
             curves::OPS,
