@@ -23,6 +23,8 @@ use super::material::{elasticity, Material};
 use super::mesh::ElemType;
 use super::quadrature::{hexa, QPoint};
 use super::solid::{points, Point};
+use super::xfem::q4::{self, XElem};
+use super::xfem::NodeKind;
 use super::xfem_c8r_cut::{sided_rule, SidedPoint};
 
 pub const NAME: &str = "XC8R";
@@ -392,4 +394,42 @@ pub fn displacement_at(
         }
     }
     Ok(out)
+}
+
+/// The element as an X-FEM zone describes it ([`super::xfem`]): PSI is the
+/// tangent level set, PHI the normal one; a node has at most one kind.
+pub fn crack_of(e: &XElem) -> Result<Crack, FemError> {
+    for n in [e.x.len(), e.psi.len(), e.phi.len(), e.kinds.len()] {
+        if n != 8 {
+            return Err(FemError::WrongNodeCount { elem: NAME, expected: 8, got: n });
+        }
+    }
+    let mut c = Crack::none();
+    for i in 0..8 {
+        c.tangent[i] = e.psi[i];
+        c.normal[i] = e.phi[i];
+        c.heaviside[i] = e.kinds[i] == Some(NodeKind::Jump);
+        c.tip[i] = e.kinds[i] == Some(NodeKind::Tip);
+    }
+    Ok(c)
+}
+
+/// The unknowns of an element whose nodes have these enrichments.
+pub fn dofs(kinds: &[Option<NodeKind>]) -> Vec<(usize, &'static str)> {
+    let mut c = Crack::none();
+    for (i, k) in kinds.iter().enumerate().take(8) {
+        c.heaviside[i] = *k == Some(NodeKind::Jump);
+        c.tip[i] = *k == Some(NodeKind::Tip);
+    }
+    c.dofs()
+}
+
+/// What the zone asks of a field, in this element's terms.
+pub fn field_of(e: &XElem, m: &Material, u: &[f64], what: q4::Field) -> Result<GaussField, FemError> {
+    let w = match what {
+        q4::Field::Strain => Field::Strain,
+        q4::Field::Stress => Field::Stress,
+        q4::Field::Gradient => Field::Gradient,
+    };
+    field(e.x, &crack_of(e)?, m, u, w)
 }

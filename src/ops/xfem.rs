@@ -4,14 +4,13 @@
 //! The zone plumbing is `ops/xfem_model.rs`, the numerics `fem::xfem`.
 
 use super::mesh::req_geo;
-use super::xfem_model::{elem_data, element_dofs, Shared};
+use super::xfem_model::{components, el_displacement, elem_data, element_dofs, geometry, Shared};
 use super::{Args, OpDef};
 use crate::error::Result;
 use crate::eval::Interp;
 use crate::fem::locate::locate;
-use crate::fem::mesh::{ElemType, Mesh};
+use crate::fem::mesh::Mesh;
 use crate::fem::shape::ref_nodes;
-use crate::fem::xfem::q4;
 use crate::fem::xfem::{select, ElemLevels, Enrichment, NodeKind, ENRICHED_DOFS};
 use crate::value::model::{MchamlZone, ModelZone};
 use crate::value::{Chpoint, Mchaml, Model, Nature, Value};
@@ -36,10 +35,9 @@ pub(crate) const OPS: &[OpDef] = &[
 ];
 
 fn xfem_zones(a: &Args, model: &Model) -> Result<Vec<(ModelZone, Shared)>> {
-    let out: Vec<_> =
-        model.zones.iter().filter_map(|z| z.xfem.as_ref().map(|x| (z.clone(), x.clone()))).collect();
+    let out: Vec<_> = model.zones.iter().filter_map(|z| z.xfem.as_ref().map(|x| (z.clone(), x.clone()))).collect();
     if out.is_empty() {
-        return Err(a.err("the model has no X-FEM zone (MODE … 'XQ4R')"));
+        return Err(a.err("the model has no X-FEM zone (MODE … 'XQ4R' or 'XC8R')"));
     }
     Ok(out)
 }
@@ -169,8 +167,8 @@ fn xfem(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 fn reco(it: &Interp, a: &Args, u: &Chpoint, model: &Model) -> Result<Vec<Value>> {
     let zones = xfem_zones(a, model)?;
     let mut out = Chpoint::from_entries(u.nature, u.entries().filter(|(_, c, _)| !ENRICHED_DOFS.contains(c)));
-    let corners = ref_nodes(ElemType::Qua4);
     for (zone, x) in &zones {
+        let corners = ref_nodes(geometry(zone));
         let enr = x.borrow();
         let mut done = HashSet::new();
         for part in &zone.mesh.parts {
@@ -179,14 +177,15 @@ fn reco(it: &Interp, a: &Args, u: &Chpoint, model: &Model) -> Result<Vec<Value>>
                     continue;
                 }
                 let d = elem_data(it, a, &enr, nodes)?;
-                let ue = element_dofs(a, u, nodes, &d.kinds)?;
+                let ue = element_dofs(a, zone, u, nodes, &d.kinds)?;
                 for (l, n) in nodes.iter().enumerate() {
                     if d.kinds[l].is_none() || !done.insert(*n) {
                         continue;
                     }
-                    let v = q4::displacement(&d.elem(), corners[l], &ue, None).map_err(|e| a.err(e))?;
-                    out.add(*n, "UX", v[0], false);
-                    out.add(*n, "UY", v[1], false);
+                    let v = el_displacement(zone, &d.elem(), corners[l], &ue, None).map_err(|e| a.err(e))?;
+                    for (c, vc) in components(zone).iter().zip(v) {
+                        out.add(*n, c, vc, false);
+                    }
                 }
             }
         }
@@ -205,13 +204,14 @@ fn lips(it: &Interp, a: &Args, geo: &Mesh, u: &Chpoint, model: &Model) -> Result
             for part in &zone.mesh.parts {
                 for nodes in part.elems() {
                     let xs: Vec<[f64; 3]> = nodes.iter().map(|m| it.nodes.get(*m)).collect();
-                    let Some(xi) = locate(ElemType::Qua4, &xs, p) else { continue };
+                    let Some(xi) = locate(geometry(zone), &xs, p) else { continue };
                     let d = elem_data(it, a, &enr, nodes)?;
-                    let ue = element_dofs(a, u, nodes, &d.kinds)?;
+                    let ue = element_dofs(a, zone, u, nodes, &d.kinds)?;
                     for (side, f) in [(1.0, &mut up), (-1.0, &mut down)] {
-                        let v = q4::displacement(&d.elem(), xi, &ue, Some(side)).map_err(|e| a.err(e))?;
-                        f.add(n, "UX", v[0], false);
-                        f.add(n, "UY", v[1], false);
+                        let v = el_displacement(zone, &d.elem(), xi, &ue, Some(side)).map_err(|e| a.err(e))?;
+                        for (c, vc) in components(zone).iter().zip(v) {
+                            f.add(n, c, vc, false);
+                        }
                     }
                     break 'search;
                 }

@@ -7,10 +7,11 @@ use super::model::{material_for, zone_mode};
 use super::Args;
 use crate::error::Result;
 use crate::eval::Interp;
-use crate::fem::element::dual_name;
+use crate::fem::element::{dual_name, FemError};
 use crate::fem::mesh::{ElemType, Mesh, Part};
 use crate::fem::xfem::q4::{self, Field, XElem};
 use crate::fem::xfem::{Enrichment, NodeKind};
+use crate::fem::xfem_c8r as c8r;
 use crate::value::model::{MchamlZone, ModelZone};
 use crate::value::rigidity::{Block, Symmetry};
 use crate::value::{Chpoint, Mchaml, Model, Value};
@@ -20,30 +21,87 @@ use std::rc::Rc;
 
 pub(super) type Shared = Rc<RefCell<Enrichment>>;
 
-/// MODE GEO 'MECANIQUE' … 'XQ4R': one X-FEM zone, not yet enriched.
+/// MODE GEO 'MECANIQUE' … 'XQ4R' (QUA4, plane modes) or 'XC8R' (CUB8,
+/// TRID): one X-FEM zone, not yet enriched.
 pub(super) fn model(
     a: &Args,
     geo: Mesh,
     formulation: String,
     behaviour: Vec<String>,
     mode: String,
+    element: &str,
 ) -> Result<Vec<Value>> {
-    if let Some(p) = geo.parts.iter().find(|p| p.ty != ElemType::Qua4) {
-        return Err(a.err(format!("XQ4R is an X-FEM element on QUA4 meshes; this mesh has {} elements", p.ty.name())));
+    let (ty, modes, need): (ElemType, &[&str], &str) = if element == "XC8R" {
+        (ElemType::Cub8, &["TRID"], "OPTI MODE TRID")
+    } else {
+        (ElemType::Qua4, &["PLAN DEFO", "PLAN CONT"], "a plane mode (OPTI MODE PLAN DEFO or PLAN CONT)")
+    };
+    if let Some(p) = geo.parts.iter().find(|p| p.ty != ty) {
+        return Err(a.err(format!(
+            "{element} is an X-FEM element on {} meshes; this mesh has {} elements",
+            ty.name(),
+            p.ty.name()
+        )));
     }
-    if !matches!(mode.as_str(), "PLAN DEFO" | "PLAN CONT") {
-        return Err(a.err(format!("XQ4R elements need a plane mode (OPTI MODE PLAN DEFO or PLAN CONT), not {}", mode)));
+    if !modes.contains(&mode.as_str()) {
+        return Err(a.err(format!("{element} elements need {need}, not {mode}")));
     }
     let zone = ModelZone {
         mesh: geo,
         formulation,
         behaviour,
-        element: "XQ4R".into(),
+        element: element.into(),
         mode,
         dpge: None,
         xfem: Some(Rc::new(RefCell::new(Enrichment::default()))),
     };
     Ok(vec![Value::Model(Rc::new(Model { zones: vec![zone], ties: Vec::new() }))])
+}
+
+/// Is the zone made of XC8R (else XQ4R)?
+pub(super) fn is_c8(zone: &ModelZone) -> bool {
+    zone.element == "XC8R"
+}
+
+/// The geometry of the zone's elements.
+pub(super) fn geometry(zone: &ModelZone) -> ElemType {
+    if is_c8(zone) {
+        ElemType::Cub8
+    } else {
+        ElemType::Qua4
+    }
+}
+
+/// The physical displacement components of the zone.
+pub(super) fn components(zone: &ModelZone) -> &'static [&'static str] {
+    if is_c8(zone) {
+        &["UX", "UY", "UZ"]
+    } else {
+        &["UX", "UY"]
+    }
+}
+
+pub(super) fn el_dofs(zone: &ModelZone, kinds: &[Option<NodeKind>]) -> Vec<(usize, &'static str)> {
+    if is_c8(zone) {
+        c8r::dofs(kinds)
+    } else {
+        q4::dofs(kinds)
+    }
+}
+
+/// The displacement at reference point `xi` of an element of the zone.
+pub(super) fn el_displacement(
+    zone: &ModelZone,
+    e: &XElem,
+    xi: [f64; 3],
+    u: &[f64],
+    side: Option<f64>,
+) -> std::result::Result<Vec<f64>, FemError> {
+    if is_c8(zone) {
+        Ok(c8r::displacement_at(e.x, &c8r::crack_of(e)?, u, xi, side)?.to_vec())
+    } else {
+        Ok(q4::displacement(e, xi, u, side)?.to_vec())
+    }
 }
 
 /// One element's corners, level sets and node enrichments.
@@ -78,14 +136,21 @@ pub(super) fn elem_data(it: &Interp, a: &Args, enr: &Enrichment, nodes: &[usize]
 }
 
 /// The element values of a displacement field, in the element's dof order.
-pub(super) fn element_dofs(a: &Args, u: &Chpoint, nodes: &[usize], kinds: &[Option<NodeKind>]) -> Result<Vec<f64>> {
+pub(super) fn element_dofs(
+    a: &Args,
+    zone: &ModelZone,
+    u: &Chpoint,
+    nodes: &[usize],
+    kinds: &[Option<NodeKind>],
+) -> Result<Vec<f64>> {
     if let Some(n) = nodes.iter().find(|n| u.get(**n, "UX").is_none() && u.get(**n, "UY").is_none()) {
         return Err(a.err(format!(
-            "node {} of an XQ4R element has no displacement in the CHPOINT (is it the solution for this model?)",
-            n + 1
+            "node {} of an {} element has no displacement in the CHPOINT (is it the solution for this model?)",
+            n + 1,
+            zone.element
         )));
     }
-    Ok(q4::dofs(kinds).iter().map(|(l, c)| u.get(nodes[*l], c).unwrap_or(0.0)).collect())
+    Ok(el_dofs(zone, kinds).iter().map(|(l, c)| u.get(nodes[*l], c).unwrap_or(0.0)).collect())
 }
 
 /// RIGI of an X-FEM zone: one block per layout of enriched unknowns
@@ -109,10 +174,15 @@ pub(super) fn stiffness_blocks(
     }
     let mut out = Vec::new();
     for conn in groups.into_values() {
-        let part = Part::with(ElemType::Qua4, conn);
+        let part = Part::with(geometry(zone), conn);
         let block = super::element_block::part_block(it, &part, None, Symmetry::Symmetric, |e, _| {
             let d = elem_data(it, a, &enr, part.elem(e))?;
-            q4::stiffness(mode, &d.elem(), &mat).map_err(|err| a.err(format!("XQ4R element: {}", err)))
+            let k = if is_c8(zone) {
+                c8r::crack_of(&d.elem()).and_then(|c| c8r::stiffness(&d.x, &c, &mat))
+            } else {
+                q4::stiffness(mode, &d.elem(), &mat)
+            };
+            k.map_err(|err| a.err(format!("{} element: {}", zone.element, err)))
         })?;
         out.extend(block);
     }
@@ -139,12 +209,17 @@ pub(super) fn gauss_zones(
     let enr = x.borrow();
     let mut out = Vec::new();
     for part in &zone.mesh.parts {
-        let mut z = MchamlZone { mesh: Mesh::single(part.clone()), element: zone.element.clone(), ..Default::default() };
+        let mut z =
+            MchamlZone { mesh: Mesh::single(part.clone()), element: zone.element.clone(), ..Default::default() };
         for (e, nodes) in part.elems().enumerate() {
             let d = elem_data(it, a, &enr, nodes)?;
-            let ue = element_dofs(a, u, nodes, &d.kinds)?;
-            let g = q4::field(mode, &d.elem(), &mat, &ue, what)
-                .map_err(|err| a.err(format!("element {}: {}", e + 1, err)))?;
+            let ue = element_dofs(a, zone, u, nodes, &d.kinds)?;
+            let g = if is_c8(zone) {
+                c8r::field_of(&d.elem(), &mat, &ue, what)
+            } else {
+                q4::field(mode, &d.elem(), &mat, &ue, what)
+            };
+            let g = g.map_err(|err| a.err(format!("element {}: {}", e + 1, err)))?;
             if z.comps.is_empty() {
                 z.comps = g.comps.iter().map(|c| c.to_string()).collect();
             }
@@ -175,9 +250,14 @@ pub(super) fn bsig_zone(
                 return Err(a.err(format!("the stress field has no values on element {}", e + 1)));
             }
             let d = elem_data(it, a, &enr, nodes)?;
-            let f = q4::internal_forces(mode, &d.elem(), &mat, &super::post::to_gauss(z, e))
-                .map_err(|err| a.err(format!("element {}: {}", e + 1, err)))?;
-            for ((l, c), v) in q4::dofs(&d.kinds).iter().zip(f) {
+            let sig = super::post::to_gauss(z, e);
+            let f = if is_c8(zone) {
+                c8r::crack_of(&d.elem()).and_then(|c| c8r::internal_forces(&d.x, &c, &sig))
+            } else {
+                q4::internal_forces(mode, &d.elem(), &mat, &sig)
+            };
+            let f = f.map_err(|err| a.err(format!("element {}: {}", e + 1, err)))?;
+            for ((l, c), v) in el_dofs(zone, &d.kinds).iter().zip(f) {
                 out.add(nodes[*l], &dual_name(c), v, true);
             }
             e += 1;

@@ -182,8 +182,10 @@ pub fn stiffness(mode: Mode, e: &XElem, m: &Material) -> Result<ElemMatrix, FemE
     let mut k = vec![0.0; nd * nd];
     for (p, side) in integration(mode, e, t)? {
         let b = bmat(&basis(e, &p, side));
-        let db: Vec<Vec<f64>> =
-            d.iter().map(|row| (0..nd).map(|j| row.iter().zip(&b).map(|(dv, br)| dv * br[j]).sum()).collect()).collect();
+        let db: Vec<Vec<f64>> = d
+            .iter()
+            .map(|row| (0..nd).map(|j| row.iter().zip(&b).map(|(dv, br)| dv * br[j]).sum()).collect())
+            .collect();
         for q in 0..4 {
             for r in 0..nd {
                 let br = b[q][r] * p.w;

@@ -141,11 +141,8 @@ fn duffy(t: [P2; 3], s: f64, g: &[(f64, f64)], out: &mut Vec<SidePoint>) {
             let u = (a + 1.0) / 2.0;
             for &(b, wb) in g {
                 let v = (b + 1.0) / 2.0;
-                let x = [
-                    t[0][0] + u * ((1.0 - v) * e1[0] + v * e2[0]),
-                    t[0][1] + u * ((1.0 - v) * e1[1] + v * e2[1]),
-                    0.0,
-                ];
+                let x =
+                    [t[0][0] + u * ((1.0 - v) * e1[0] + v * e2[0]), t[0][1] + u * ((1.0 - v) * e1[1] + v * e2[1]), 0.0];
                 out.push(((x, wa * wb / 4.0 * u * det), s));
             }
         }

@@ -245,7 +245,19 @@ fn tip_element_residual_of_uniform_stress() {
     let _ = sig;
     let k = q4::stiffness(Mode::PlanDefo, &e, &mat()).unwrap();
     let nd = k.dofs.len();
-    let u: Vec<f64> = k.dofs.iter().map(|(l, c)| if *c == "UX" { x[*l][0] } else if *c == "UY" { -0.3 / 0.7 * x[*l][1] } else { 0.0 }).collect();
+    let u: Vec<f64> = k
+        .dofs
+        .iter()
+        .map(|(l, c)| {
+            if *c == "UX" {
+                x[*l][0]
+            } else if *c == "UY" {
+                -0.3 / 0.7 * x[*l][1]
+            } else {
+                0.0
+            }
+        })
+        .collect();
     let ku: Vec<f64> = (0..nd).map(|r| (0..nd).map(|c| k.k[r * nd + c] * u[c]).sum()).collect();
     // Boundary integral of N_i F_k n_x σxx over the left and right edges.
     let sxx = ku[0].abs(); // scale
@@ -263,7 +275,13 @@ fn tip_element_residual_of_uniform_stress() {
                         let xi = [2.0 * (side.0 - 1.0) - 1.0, 2.0 * (y - 1.0) - 1.0, 0.0];
                         let s = crate::fem::shape::eval(crate::fem::mesh::ElemType::Qua4, xi);
                         let (ps, ph) = (side.0 - 1.5, y - 1.501);
-                        let f = super::functions::tip(ps, ph, [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], if ph < 0.0 { -1.0 } else { 1.0 });
+                        let f = super::functions::tip(
+                            ps,
+                            ph,
+                            [1.0, 0.0, 0.0],
+                            [0.0, 1.0, 0.0],
+                            if ph < 0.0 { -1.0 } else { 1.0 },
+                        );
                         let kk = ["B1X", "C1X", "D1X", "E1X"].iter().position(|n| n == c).unwrap();
                         refv += s.n[*l] * f[kk].v * side.1 / m as f64;
                     }
