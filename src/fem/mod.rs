@@ -55,6 +55,9 @@ pub mod thermal;
 pub mod thick_shell;
 pub mod vec3;
 pub mod work;
+pub mod xfem;
+pub mod xfem_c8r;
+pub mod xfem_c8r_cut;
 
 #[cfg(test)]
 mod test_support;
@@ -74,6 +77,8 @@ mod tests_shell;
 mod tests_solid;
 #[cfg(test)]
 mod tests_traction;
+#[cfg(test)]
+mod tests_xfem_c8r;
 
 pub mod mesh;
 pub mod meshing;

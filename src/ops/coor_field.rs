@@ -21,6 +21,7 @@ fn positions(it: &Interp, a: &Args, z: &MchamlZone) -> Result<Vec<Vec<[f64; 3]>>
         element: z.element.clone(),
         mode: String::new(),
         dpge: None,
+        xfem: None,
     };
     let form = super::model::formulation(&mz);
     let mut out = Vec::new();

@@ -272,6 +272,10 @@ fn bsig(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let mut out = Chpoint::new(Nature::Discret);
     for z in &sig.zones {
         let mz = zone_of(&model, z).ok_or_else(|| a.err("the stress field does not belong to this model"))?;
+        if let Some(x) = &mz.xfem {
+            super::xfem_model::bsig_zone(it, a, mz, x, z, &fields, &mut out)?;
+            continue;
+        }
         let (form, mode) = (formulation(mz), zone_mode(mz)?);
         let mat = material_for(mz, &fields);
         let duals = element::node_duals(form, mode).map_err(|e| fem_err(a, e))?;

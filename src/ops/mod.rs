@@ -155,6 +155,8 @@ mod voronoi;
 mod vsur;
 mod weibull;
 mod work;
+mod xfem;
+mod xfem_model;
 mod zero;
 
 // The machine and the argument reader live in `eval`; the families name
@@ -263,6 +265,7 @@ impl Registry {
             cmct::OPS,
             fracture::OPS,
             level_set::OPS,
+            xfem::OPS,
             export::OPS,
             evol::OPS,
             curves::OPS,

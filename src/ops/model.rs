@@ -24,7 +24,7 @@ pub(crate) const OPS: &[OpDef] = &[
 const FORMS: &[&str] = &[
     "BARR", "POUT", "TIMO", "Q4RI", "Q8RI", "COQ3", "DKT", "DST", "COQ4", "COQ6", "COQ8", "COQ2", "TRI3", "TRI6",
     "QUA4", "QUA8", "CUB8", "TET4", "PRI6", "CU20", "PR15", "SEG2", "JOI2", "JOI3", "JOI4", "ICT3", "ICQ4", "ICT6",
-    "ICQ8", "ICT4", "ICC8", "ICP6", "BAEX", "QUAS", "TRIS", "TUYA",
+    "ICQ8", "ICT4", "ICC8", "ICP6", "BAEX", "QUAS", "TRIS", "TUYA", "XQ4R", "XC8R",
 ];
 
 const BEHAVIOURS: &[&str] = &["ELASTIQUE", "ISOTROPE", "EPSILON", "SECTION"];
@@ -141,13 +141,16 @@ fn mode_on(it: &mut Interp, a: &mut Args, geo: Mesh) -> Result<Vec<Value>> {
     if let Some(&(_, ty)) = incomp::NAMES.iter().find(|(n, _)| *n == element) {
         return incompressible_model(a, geo, formulation, behaviour, element, ty, mode);
     }
+    if element == "XQ4R" || element == "XC8R" {
+        return super::xfem_model::model(a, geo, formulation, behaviour, mode, &element);
+    }
     // Massive elements follow the mesh: one zone per element type.
     if element.is_empty() || ElemType::from_name(&element).is_some() {
         for p in &geo.parts {
             model.zones.push(ModelZone { dpge, ..ModelZone::on_part(p, &formulation, &behaviour, None, &mode) });
         }
     } else {
-        model.zones.push(ModelZone { mesh: geo, formulation, behaviour, element, mode, dpge: None });
+        model.zones.push(ModelZone { mesh: geo, formulation, behaviour, element, mode, dpge: None, xfem: None });
     }
     Ok(vec![Value::Model(Rc::new(model))])
 }
@@ -439,6 +442,10 @@ fn rigi(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             return Err(a
                 .err(format!("a {} model describes a beam section and has no stiffness of its own", zone.element))
                 .note("give it to a TIMO beam: MATE beam_model 'MODS' section_model 'MATS' section_material"));
+        }
+        if let Some(x) = &zone.xfem {
+            rig.blocks.extend(super::xfem_model::stiffness_blocks(it, a, zone, x, &fields)?);
+            continue;
         }
         let form = formulation(zone);
         let mode = zone_mode(zone)?;

@@ -65,6 +65,10 @@ fn gauss_field(it: &Interp, a: &mut Args, subtype: &str, f: PointFn) -> Result<V
     let mut out = Mchaml { subtype: subtype.into(), zones: vec![] };
     let have = u.components();
     for zone in model.zones.iter().filter(|z| z.formulation != super::pres_model::FORMULATION) {
+        if let Some(x) = &zone.xfem {
+            out.zones.extend(super::xfem_model::gauss_zones(it, a, zone, x, &fields, &u, subtype)?);
+            continue;
+        }
         let form = formulation(zone);
         let mode = zone_mode(zone)?;
         let mat = material_for(zone, &fields);

@@ -27,6 +27,9 @@ pub struct ModelZone {
     /// The node carrying the out-of-plane strain of generalised plane
     /// strain (MODE … 'DPGE' P), which every element of the zone shares.
     pub dpge: Option<usize>,
+    /// The crack enrichment of an X-FEM zone (XQ4R), set by TRIE; shared by
+    /// every model holding the zone, as TRIE changes the model in place.
+    pub xfem: Option<std::rc::Rc<std::cell::RefCell<crate::fem::xfem::Enrichment>>>,
 }
 
 impl ModelZone {
@@ -47,6 +50,7 @@ impl ModelZone {
             element: element.unwrap_or(part.ty.name()).into(),
             mode: mode.into(),
             dpge: None,
+            xfem: None,
         }
     }
 }
