@@ -55,8 +55,6 @@ mod io;
 mod joint_mesh;
 mod kp;
 mod level_set;
-mod xfem;
-mod xfem_model;
 mod limits;
 mod lists;
 mod lists_search;
@@ -144,6 +142,8 @@ mod voronoi;
 mod vsur;
 mod weibull;
 mod work;
+mod xfem;
+mod xfem_model;
 mod zero;
 
 // The machine and the argument reader live in `eval`; the families name

@@ -36,8 +36,7 @@ pub(crate) const OPS: &[OpDef] = &[
 ];
 
 fn xfem_zones(a: &Args, model: &Model) -> Result<Vec<(ModelZone, Shared)>> {
-    let out: Vec<_> =
-        model.zones.iter().filter_map(|z| z.xfem.as_ref().map(|x| (z.clone(), x.clone()))).collect();
+    let out: Vec<_> = model.zones.iter().filter_map(|z| z.xfem.as_ref().map(|x| (z.clone(), x.clone()))).collect();
     if out.is_empty() {
         return Err(a.err("the model has no X-FEM zone (MODE … 'XQ4R')"));
     }

@@ -139,7 +139,8 @@ pub(super) fn gauss_zones(
     let enr = x.borrow();
     let mut out = Vec::new();
     for part in &zone.mesh.parts {
-        let mut z = MchamlZone { mesh: Mesh::single(part.clone()), element: zone.element.clone(), ..Default::default() };
+        let mut z =
+            MchamlZone { mesh: Mesh::single(part.clone()), element: zone.element.clone(), ..Default::default() };
         for (e, nodes) in part.elems().enumerate() {
             let d = elem_data(it, a, &enr, nodes)?;
             let ue = element_dofs(a, u, nodes, &d.kinds)?;

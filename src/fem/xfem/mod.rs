@@ -51,17 +51,14 @@ pub fn kind_dofs(kind: NodeKind, dim: usize) -> &'static [&'static str] {
     match (kind, dim) {
         (NodeKind::Jump, 3) => &["AX", "AY", "AZ"],
         (NodeKind::Jump, _) => &["AX", "AY"],
-        (NodeKind::Tip, 3) => {
-            &["B1X", "B1Y", "B1Z", "C1X", "C1Y", "C1Z", "D1X", "D1Y", "D1Z", "E1X", "E1Y", "E1Z"]
-        }
+        (NodeKind::Tip, 3) => &["B1X", "B1Y", "B1Z", "C1X", "C1Y", "C1Z", "D1X", "D1Y", "D1Z", "E1X", "E1Y", "E1Z"],
         (NodeKind::Tip, _) => &["B1X", "B1Y", "C1X", "C1Y", "D1X", "D1Y", "E1X", "E1Y"],
     }
 }
 
 /// Every enriched unknown name (RECO drops them from the physical field).
-pub const ENRICHED_DOFS: &[&str] = &[
-    "AX", "AY", "AZ", "B1X", "B1Y", "B1Z", "C1X", "C1Y", "C1Z", "D1X", "D1Y", "D1Z", "E1X", "E1Y", "E1Z",
-];
+pub const ENRICHED_DOFS: &[&str] =
+    &["AX", "AY", "AZ", "B1X", "B1Y", "B1Z", "C1X", "C1Y", "C1Z", "D1X", "D1Y", "D1Z", "E1X", "E1Y", "E1Z"];
 
 /// The state of an X-FEM zone after TRIE: the level sets at its nodes and
 /// the enrichment of each enriched node (a node absent is classical).

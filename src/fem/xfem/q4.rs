@@ -136,10 +136,10 @@ fn integration(mode: Mode, e: &XElem, t: f64) -> Result<Vec<(Point, f64)>, FemEr
     let sp = if !e.kinds.contains(&Some(NodeKind::Tip)) {
         subcell::quad_rule(e.phi, 0)
     } else if let Some(t) = tip_point(e) {
-        subcell::tip_rule(e.phi, t, 4)
+        subcell::tip_rule(e.phi, t, 2)
     } else {
         // Tip functions away from the tip: smooth, but not polynomials.
-        subcell::quad_rule(e.phi, 1)
+        subcell::quad_rule(e.phi, 2)
     };
     let rule: Vec<_> = sp.iter().map(|(q, _)| *q).collect();
     let pts = solid::points(ElemType::Qua4, mode, e.x, &rule, t)?;
@@ -182,8 +182,10 @@ pub fn stiffness(mode: Mode, e: &XElem, m: &Material) -> Result<ElemMatrix, FemE
     let mut k = vec![0.0; nd * nd];
     for (p, side) in integration(mode, e, t)? {
         let b = bmat(&basis(e, &p, side));
-        let db: Vec<Vec<f64>> =
-            d.iter().map(|row| (0..nd).map(|j| row.iter().zip(&b).map(|(dv, br)| dv * br[j]).sum()).collect()).collect();
+        let db: Vec<Vec<f64>> = d
+            .iter()
+            .map(|row| (0..nd).map(|j| row.iter().zip(&b).map(|(dv, br)| dv * br[j]).sum()).collect())
+            .collect();
         for q in 0..4 {
             for r in 0..nd {
                 let br = b[q][r] * p.w;
