@@ -136,10 +136,10 @@ fn integration(mode: Mode, e: &XElem, t: f64) -> Result<Vec<(Point, f64)>, FemEr
     let sp = if !e.kinds.contains(&Some(NodeKind::Tip)) {
         subcell::quad_rule(e.phi, 0)
     } else if let Some(t) = tip_point(e) {
-        subcell::tip_rule(e.phi, t, 4)
+        subcell::tip_rule(e.phi, t, 2)
     } else {
         // Tip functions away from the tip: smooth, but not polynomials.
-        subcell::quad_rule(e.phi, 1)
+        subcell::quad_rule(e.phi, 2)
     };
     let rule: Vec<_> = sp.iter().map(|(q, _)| *q).collect();
     let pts = solid::points(ElemType::Qua4, mode, e.x, &rule, t)?;

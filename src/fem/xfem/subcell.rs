@@ -97,7 +97,8 @@ pub fn quad_rule(phi: &[f64], levels: usize) -> Vec<SidePoint> {
 /// a corner), each integrated by a collapsed (Duffy) Gauss rule of n × n
 /// points, whose Jacobian vanishes at the tip like r and so cancels the
 /// 1/r of the tip functions' strain energy. Each piece is fanned into
-/// `fan` thinner ones, each with 3 × 3 points.
+/// `fan` thinner ones, each with 6 × 6 points; the radial coordinate is
+/// u = s², which makes the √r of the tip functions polynomial in s.
 pub fn tip_rule(phi: &[f64], tip: [f64; 2], fan: usize) -> Vec<SidePoint> {
     let corners: [P2; 4] = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]];
     let mut cells = Vec::new();
@@ -105,7 +106,7 @@ pub fn tip_rule(phi: &[f64], tip: [f64; 2], fan: usize) -> Vec<SidePoint> {
         let l = (k + 1) % 4;
         cut([tip, corners[k], corners[l]], [0.0, phi[k], phi[l]], &mut cells);
     }
-    let g = crate::fem::quadrature::gauss_1d(3);
+    let g = gauss_legendre(6);
     let mut out = Vec::new();
     for (t, s) in cells {
         // Put the tip first: `cut` keeps it as the first corner of each piece.
@@ -138,13 +139,39 @@ fn duffy(t: [P2; 3], s: f64, g: &[(f64, f64)], out: &mut Vec<SidePoint>) {
             return;
         }
         for &(a, wa) in g {
-            let u = (a + 1.0) / 2.0;
+            let sv = (a + 1.0) / 2.0;
+            let u = sv * sv;
             for &(b, wb) in g {
                 let v = (b + 1.0) / 2.0;
                 let x =
                     [t[0][0] + u * ((1.0 - v) * e1[0] + v * e2[0]), t[0][1] + u * ((1.0 - v) * e1[1] + v * e2[1]), 0.0];
-                out.push(((x, wa * wb / 4.0 * u * det), s));
+                out.push(((x, wa * wb / 4.0 * 2.0 * sv * u * det), s));
             }
         }
     }
+}
+
+/// Gauss–Legendre points and weights on [-1, 1] (Newton on Pₙ).
+fn gauss_legendre(n: usize) -> Vec<(f64, f64)> {
+    (0..n)
+        .map(|i| {
+            let mut x = (std::f64::consts::PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
+            let mut dp = 1.0;
+            for _ in 0..100 {
+                let (mut p0, mut p1) = (1.0, x);
+                for k in 2..=n {
+                    let p2 = ((2 * k - 1) as f64 * x * p1 - (k - 1) as f64 * p0) / k as f64;
+                    p0 = p1;
+                    p1 = p2;
+                }
+                dp = n as f64 * (x * p1 - p0) / (x * x - 1.0);
+                let dx = p1 / dp;
+                x -= dx;
+                if dx.abs() < 1e-15 {
+                    break;
+                }
+            }
+            (x, 2.0 / ((1.0 - x * x) * dp * dp))
+        })
+        .collect()
 }
