@@ -90,8 +90,8 @@ fn vibc(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         Ok((0..n).flat_map(|i| full[i * nt..i * nt + n].to_vec()).collect())
     };
     let (dm, dk) = (dense(m)?, dense(k)?);
-    let dc = c.map(|c| dense(c)).transpose()?;
-    let modes = quadratic_modes(n, &dm, dc.as_deref(), &dk).map_err(|e| a.err(format!("{e}")))?;
+    let dc = c.map(dense).transpose()?;
+    let modes = quadratic_modes(n, &dm, dc.as_deref(), &dk).map_err(|e| a.err(e.to_string()))?;
     let keep = match pairs {
         Some(p) if p < 1 => return Err(a.err("the number of pairs of modes must be positive")),
         Some(p) => (2 * p as usize).min(modes.len()),

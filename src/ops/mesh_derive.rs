@@ -61,7 +61,7 @@ fn dedu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             return Err(a.err("DEDU … 'REGU' (smoothing the moved mesh) is not implemented"));
         }
         let dim = it.opts.dime;
-        return Ok(mesh_val(moved_masters(&mut it.nodes, &mesh, &old, &new, dim)?));
+        return Ok(mesh_val(moved_masters(&mut it.nodes, mesh, old, new, dim)?));
     }
     // 'TRAN', or a rotation: `angle P1 (P2) 'ROTA'` or `'ROTA' angle P1 (P2)`
     // (P2, the axis, in 3D).

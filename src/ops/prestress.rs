@@ -32,7 +32,7 @@ fn prec(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         return Err(a.err("the tension F1 is not a finite number"));
     }
     let losses = match a.opt::<Rc<RefCell<Table>>>() {
-        Some(t) => Some(read_losses(&t.borrow()).map_err(|e| a.err(format!("{e}")))?),
+        Some(t) => Some(read_losses(&t.borrow()).map_err(|e| a.err(e.to_string()))?),
         None => None,
     };
     let anchors: Option<FxHashSet<usize>> = if let Some(m) = a.opt::<Rc<Mesh>>() {
@@ -62,7 +62,7 @@ fn prec(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         props.push((m.youn, m.sect));
     }
     let mut tension: FxHashMap<usize, f64> = FxHashMap::default();
-    for (k, chain) in chains(&segs).map_err(|e| a.err(format!("{e}")))?.into_iter().enumerate() {
+    for (k, chain) in chains(&segs).map_err(|e| a.err(e.to_string()))?.into_iter().enumerate() {
         let (nodes, first_seg) = chain;
         let (Some(youn), Some(sect)) = props[seg_zone[first_seg]] else {
             return Err(a.err("the material needs YOUN and SECT"));
@@ -101,7 +101,7 @@ fn prec(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         out.zones.push(nz);
     }
     if let Some(p0) = pre0 {
-        out = add_initial(out, &p0).map_err(|e| a.err(format!("{e}")))?;
+        out = add_initial(out, &p0).map_err(|e| a.err(e.to_string()))?;
     }
     Ok(vec![Value::Mchaml(Rc::new(out))])
 }
@@ -146,30 +146,20 @@ fn chains(segs: &[[usize; 2]]) -> std::result::Result<Vec<(Vec<usize>, usize)>, 
         }
         // Walk back to the chain's start.
         let (mut node, mut seg) = (s[0], i);
-        loop {
-            match adj[&node].iter().find(|(_, j)| *j != seg) {
-                Some(&(prev, j)) => {
-                    if j == i {
-                        return Err("a cable is a closed loop: it has no end to pull".into());
-                    }
-                    node = prev;
-                    seg = j;
-                }
-                None => break,
+        while let Some(&(prev, j)) = adj[&node].iter().find(|(_, j)| *j != seg) {
+            if j == i {
+                return Err("a cable is a closed loop: it has no end to pull".into());
             }
+            node = prev;
+            seg = j;
         }
         let mut nodes = vec![node];
         let mut last = usize::MAX;
-        loop {
-            match adj[&node].iter().find(|(_, j)| *j != last && !used[*j]) {
-                Some(&(next, j)) => {
-                    used[j] = true;
-                    nodes.push(next);
-                    node = next;
-                    last = j;
-                }
-                None => break,
-            }
+        while let Some(&(next, j)) = adj[&node].iter().find(|(_, j)| *j != last && !used[*j]) {
+            used[j] = true;
+            nodes.push(next);
+            node = next;
+            last = j;
         }
         out.push((nodes, i));
     }

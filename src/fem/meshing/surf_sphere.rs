@@ -49,12 +49,14 @@ impl Stereographic {
             }
         }
         let l = norm(mean);
-        if !(l > 1e-9 * rays.len() as f64) {
+        // Written so that a NaN length also fails.
+        if l.is_nan() || l <= 1e-9 * rays.len() as f64 {
             return fail(op, "the contour goes all round the sphere: it encloses no cap");
         }
         let axis = scale(mean, 1.0 / l);
         for (i, &r) in rays.iter().enumerate() {
-            if !(dot(r, axis) > MIN_COS * norm(r)) {
+            let (c, m) = (dot(r, axis), MIN_COS * norm(r));
+            if c.is_nan() || c <= m {
                 return fail(
                     op,
                     format!(

@@ -69,7 +69,7 @@ fn basis(e: &XElem, p: &Point, side: f64) -> Vec<(usize, f64, [f64; 3])> {
         }
         (p.n.iter().zip(v).map(|(a, b)| a * b).sum(), g)
     };
-    let tips: Option<[Fun; 4]> = e.kinds.iter().any(|k| *k == Some(NodeKind::Tip)).then(|| {
+    let tips: Option<[Fun; 4]> = e.kinds.contains(&Some(NodeKind::Tip)).then(|| {
         let ((s, gs), (f, gf)) = (lv(e.psi), lv(e.phi));
         tip(s, f, gs, gf, side)
     });

@@ -52,12 +52,15 @@ impl Grid {
 
 /// Assemble and solve with the dofs of `fixed` prescribed; gives the value
 /// of every (node, dof).
+/// Nodal unknowns by (node, name), and the enrichment of each node.
+type Solution = (HashMap<(usize, &'static str), f64>, HashMap<usize, NodeKind>);
+
 fn solve(
     g: &Grid,
     psi: &dyn Fn([f64; 3]) -> f64,
     phi: &dyn Fn([f64; 3]) -> f64,
     fixed: &dyn Fn(usize, &str) -> Option<f64>,
-) -> (HashMap<(usize, &'static str), f64>, HashMap<usize, NodeKind>) {
+) -> Solution {
     let elems = g.elems();
     let lv: Vec<(Vec<f64>, Vec<f64>)> = elems
         .iter()
@@ -113,8 +116,9 @@ fn solve(
             if r != c {
                 let f = a[r][c] / a[c][c];
                 if f != 0.0 {
-                    for k in c..=n {
-                        a[r][k] -= f * a[c][k];
+                    let pivot_row = a[c].clone();
+                    for (x, p) in a[r][c..=n].iter_mut().zip(&pivot_row[c..=n]) {
+                        *x -= f * p;
                     }
                 }
             }

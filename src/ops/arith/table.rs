@@ -165,7 +165,7 @@ fn rigidities(_: &mut Interp, a: &Args, op: Bin, x: &Value, y: &Value) -> Result
             Value::Rigi(Rc::new(r.scaled(scalar(s))))
         }
         (Value::Rigi(r), s, Bin::Div) if s.is_number() => match scalar(s) {
-            d if d == 0.0 => return Err(a.err("a RIGIDITE divided by zero")),
+            0.0 => return Err(a.err("a RIGIDITE divided by zero")),
             d => Value::Rigi(Rc::new(r.scaled(1.0 / d))),
         },
         (Value::Rigi(r), Value::Rigi(s), Bin::Add) => Value::Rigi(Rc::new(r.union(s))),
