@@ -190,12 +190,14 @@ mod tests {
     fn anchorage_slip_gives_back_the_slip() {
         // A straight cable with linear friction: check the lost elongation.
         let x: Vec<[f64; 3]> = (0..=1000).map(|i| [0.01 * i as f64, 0.0, 0.0]).collect();
-        let (ea, g) = (2e8, 1e-3);
+        // sqrt(g EA φ / P0) = 0.1: the slip is taken back over about 2.1 m.
+        let (ea, g) = (2e5, 1e-3);
         let l = Losses { ff: 0.0, phif: 0.05, ganc: g, relaxation: None };
         let before = tension_profile(&x, 1000.0, ea, 1.0, &Losses { ganc: 0.0, ..l }).unwrap();
         let after = tension_profile(&x, 1000.0, ea, 1.0, &l).unwrap();
         let lost: f64 = (1..x.len()).map(|k| 0.005 * ((before[k] - after[k]) + (before[k - 1] - after[k - 1]))).sum();
-        assert!((lost / ea - g).abs() < 1e-6 * g, "{}", lost / ea);
+        // (1000 segments: the trapezoid rule leaves 5e-6 of the slip.)
+        assert!((lost / ea - g).abs() < 2e-5 * g, "{}", lost / ea);
         // Analytically l = -ln(1 - sqrt(g EA φ / P0)) / φ.
         let la = -(1.0 - (g * ea * 0.05 / 1000.0f64).sqrt()).ln() / 0.05;
         let k = (la / 0.01) as usize + 3;

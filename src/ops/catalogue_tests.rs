@@ -11,7 +11,7 @@ fn statuses() {
     let st = |w: &str| status(lookup(w).unwrap(), &r);
     assert_eq!(st("RESO"), Status::Implemented);
     assert_eq!(st("SI"), Status::Implemented);
-    assert_eq!(st("VIBC"), Status::Refused);
+    assert_eq!(st("DYNE"), Status::Refused);
     assert_eq!(st("MAILSTRU"), Status::Procedure);
     // PASAPAS is a procedure in Cast3M and an operator in gibi.
     assert_eq!(st("PASAPAS"), Status::Implemented);
