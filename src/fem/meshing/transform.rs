@@ -170,9 +170,14 @@ impl PointMap {
                 let h = dot(sub(x, origin), normal);
                 Ok(add(x, scale(normal, (ratio - 1.0) * h)))
             }
-            PointMap::Cylindrical { dir, target } => target
-                .hit(x, dir)
-                .ok_or_else(|| MeshError::new("PROJ", "the direction of projection misses the target")),
+            PointMap::Cylindrical { dir, target } => target.hit(x, dir).ok_or_else(|| {
+                // A line misses a plane only by being parallel to it.
+                let why = match target {
+                    Target::Plane { .. } => "is parallel to the target",
+                    Target::Round { .. } => "misses the target",
+                };
+                MeshError::new("PROJ", format!("the direction of projection {}", why))
+            }),
             PointMap::Conical { apex, target } => {
                 let ray = sub(x, apex);
                 match norm(ray) > 0.0 {
