@@ -86,7 +86,7 @@ fn convert(it: &mut Interp, a: &mut Args, forward: bool) -> Result<Vec<Value>> {
     let field = a.req::<Rc<Mchaml>>()?;
     let u = a.req::<Rc<Chpoint>>()?;
     if a.opt::<Rc<Chpoint>>().is_some() {
-        return Err(a.err("a second displacement field is for XFEM elements, which gibi does not have"));
+        return Err(a.err("PICA with a second displacement field (the X-FEM form) is not implemented"));
     }
     let measure = match field.subtype.as_str() {
         "CONTRAINTES" => Measure::Stress,
