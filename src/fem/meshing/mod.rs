@@ -67,7 +67,7 @@ pub mod tet_steiner;
 pub mod tetra;
 pub mod transform;
 pub mod tri6_split;
-mod vec3;
+pub(crate) mod vec3;
 pub mod verify;
 pub mod voronoi;
 pub mod voronoi_3d;
