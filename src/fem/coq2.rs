@@ -140,8 +140,8 @@ fn local_rows(g: &Geom, xi: f64, axis: bool) -> Result<[[f64; 6]; 4], FemError> 
 }
 
 /// Hermite functions of w over (w1 β1 w2 β2) at ξ, with their first and
-/// second σ-derivatives.
-fn hermite(l: f64, xi: f64) -> ([f64; 4], [f64; 4], [f64; 4]) {
+/// second σ-derivatives (KSIGMA's beams use the first ones too).
+pub(crate) fn hermite(l: f64, xi: f64) -> ([f64; 4], [f64; 4], [f64; 4]) {
     let h = [
         0.25 * (1.0 - xi).powi(2) * (2.0 + xi),
         l / 8.0 * (1.0 - xi).powi(2) * (1.0 + xi),

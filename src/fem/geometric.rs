@@ -94,14 +94,8 @@ fn derivative_rows(names: &[&str], t: &[f64; 3], l: f64, xi: f64, cubic: bool) -
     let nd = names.len();
     let mut b = [vec![0.0; 2 * nd], vec![0.0; 2 * nd], vec![0.0; 2 * nd]];
     let dn = [-1.0 / l, 1.0 / l];
-    let j = 2.0 / l;
     // Derivatives of the Hermite functions (the slope ones in length units).
-    let dh = [
-        0.75 * (xi * xi - 1.0) * j,
-        l / 8.0 * (3.0 * xi * xi - 2.0 * xi - 1.0) * j,
-        0.75 * (1.0 - xi * xi) * j,
-        l / 8.0 * (3.0 * xi * xi + 2.0 * xi - 1.0) * j,
-    ];
+    let (_, dh, _) = super::coq2::hermite(l, xi);
     for a in 0..2 {
         for (ci, name) in names.iter().enumerate() {
             let col = a * nd + ci;

@@ -40,8 +40,9 @@ fn et(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         noer |= k == "NOER";
         telq |= k == "TELQUEL";
     }
-    if let (false, Some(m), Some(n)) = (telq, mesh_of(&x), mesh_of(&y)) {
-        return Ok(vec![Value::Mesh(Rc::new(m.union_continuous(&n)))]);
+    // Two meshes (points join as POI1 elements in order, in `union`).
+    if let (false, Value::Mesh(m), Value::Mesh(n)) = (telq, &x, &y) {
+        return Ok(vec![Value::Mesh(Rc::new(m.union_continuous(n)))]);
     }
     Ok(vec![union(it, a, x, y, noer)?])
 }
@@ -152,14 +153,6 @@ fn item_count(v: &Value) -> usize {
         Value::ListChpo(l) => l.len(),
         Value::Mot(s) => s.len(),
         _ => 0,
-    }
-}
-
-/// Two MAILLAGEs (not points, which join as POI1 elements in order).
-fn mesh_of(v: &Value) -> Option<Mesh> {
-    match v {
-        Value::Mesh(m) => Some((**m).clone()),
-        _ => None,
     }
 }
 
