@@ -161,6 +161,8 @@ impl ElemType {
 pub struct Nodes {
     pub coords: Vec<[f64; 3]>,
     pub density: Vec<f64>,
+    /// The numbers shown for the nodes (TASS renumbers).
+    pub numbering: super::node_numbering::NodeNumbering,
 }
 
 impl Nodes {

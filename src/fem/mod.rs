@@ -83,4 +83,5 @@ mod tests_xfem_c8r;
 pub mod mesh;
 pub mod meshing;
 pub mod midside;
+pub mod node_numbering;
 pub mod tensor_frame;

@@ -19,13 +19,13 @@ pub(crate) const OPS: &[OpDef] = &[
 
 fn noeu(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     if let Some(p) = a.opt::<PointId>() {
-        return Ok(vec![Value::Int(p.0 as i64 + 1)]);
+        return Ok(vec![Value::Int(it.nodes.numbering.number(p.0) as i64 + 1)]);
     }
     let n = a.req::<i64>()?;
     if n < 1 || n as usize > it.nodes.len() {
         return Err(a.err(format!("there is no node {} (nodes are numbered 1 to {})", n, it.nodes.len())));
     }
-    Ok(vec![Value::Point(n as usize - 1)])
+    Ok(vec![Value::Point(it.nodes.numbering.node(n as usize - 1))])
 }
 
 fn coor(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {

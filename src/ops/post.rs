@@ -17,7 +17,7 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "EPSI", signature: "EPSI ('LINE') MMODEL (MCHAML) CHPOINT", doc: "Strains (EPXX … GAXY; generalised strains for bars and beams; EPSS EPTT GAST RTSS RTTT RTST for shells).", example: "eps = epsi mo ma u ;", f: epsi },
     OpDef { name: "GRAD", signature: "GRAD MMODEL (MCHAML) CHPOINT|MCHAML_NOEUD (MCHAML)", doc: "Gradient of the displacements of a massive model at its stress points: the nine terms UX,X UX,Y UX,Z UY,X … UZ,Z (those along Z zero in the plane; UR,R UR,Z UR,T UZ,R … UT,T in AXIS, UT,T = UR/R). The displacements may be a CHPOINT or an element field at the nodes (CHAN 'CHAM' … 'NOEUD'). On a THERMIQUE model, the temperature gradient T,X T,Y (T,Z), or T,R T,Z in AXIS.", example: "g = grad mo u ;", f: grad },
     OpDef { name: "VMIS", signature: "VMIS MMODEL MCHAML_STRESS (MCHAML)", doc: "Von Mises equivalent stress (the beam formula for bars and beams).", example: "vm = vmis mo sig ma ;", f: vmis },
-    OpDef { name: "CHAN", signature: "CHAN 'POI1'|QUA8|TRI6|SEG3|QUA4|TRI3|SEG2 GEO | CHAN 'CHPO'|'NOEUD'|'GRAVITE' MMODEL MCHAML ('MOYE'|'SOMM') | CHAN 'RIGIDITE'|'MASSE'|'STRESSES' MMODEL MCHAML (subtype) | CHAN 'INCO' RIGIDITE LISTMOTS LISTMOTS | CHAN 'ATTRIBUT' CHPOINT 'NATURE' word | CHAN 'CHAM' CHPOINT GEO|MMODEL ('NOEUD'|'GRAVITE'|'RIGIDITE'|'MASSE'|'STRESSES') (subtype) | CHAN 'TYPE' MCHAML word | CHAN 'MAJU'|'MINU' MOT", doc: "Change the type or attributes of an object.", example: "pts = chan 'POI1' l ;", f: chan },
+    OpDef { name: "CHAN", signature: "CHAN 'POI1'|QUA8|TRI6|SEG3|QUA4|TRI3|SEG2 GEO | CHAN 'CHPO'|'NOEUD'|'GRAVITE' MMODEL MCHAML ('MOYE'|'SOMM') | CHAN 'RIGIDITE'|'MASSE'|'STRESSES' MMODEL MCHAML (subtype) | CHAN 'INCO' RIGIDITE LISTMOTS LISTMOTS | CHAN 'ATTRIBUT' CHPOINT 'NATURE' word | CHAN 'CHAM' CHPOINT GEO|MMODEL ('NOEUD'|'GRAVITE'|'RIGIDITE'|'MASSE'|'STRESSES') (subtype) | CHAN 'TYPE' MCHAML word | CHAN 'MAJU'|'MINU' MOT | CHAN 'TABL' CHARGEMENT MOT", doc: "Change the type or attributes of an object.", example: "pts = chan 'POI1' l ;", f: chan },
     OpDef { name: "PRES", signature: "PRES 'MASS' MMODEL (MCHAML) VALUE GEO | PRES 'COQU' MMODEL VALUE ('NORM') | PRES MMODEL_PRESSION 'PRES' VALUE|CHPOINT", doc: "Of a pressure model (MODE … 'CHARGEMENT' 'PRESSION'): the pressure at the element nodes, an MCHAML for BSIG (positive along the left normal of each oriented line SEG2 SEG3 in 2D, along x_xi ^ x_eta of each surface TRI3 QUA4 TRI6 QUA8 in TRID). Otherwise: Nodal forces equivalent to a pressure on edges/faces of a massive model (positive towards the solid; in plane stress for the DIM3 thickness of the characteristics MCHAML when given, else per unit thickness), or on every element of a shell model (positive along the element normal).", example: "f = pres 'MASS' mo 10. haut ;", f: pres },
     OpDef { name: "MASS", signature: "MASS MMODEL MCHAML (MCHAML) ('LUMP') | MASS ('DEPL') ('ROTA') (comps) VALUE GEO", doc: "Mass matrix (consistent, or lumped with 'LUMP'), or point masses on the given unknowns of every node of GEO.", example: "m = mass mo ma ;", f: mass },
     OpDef { name: "LUMP", signature: "LUMP MMODEL MCHAML (MCHAML)", doc: "Lumped (diagonal) mass matrix of a model.", example: "m = lump mo ma ;", f: lump },
@@ -202,7 +202,7 @@ fn vmis(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     const KW: &[&str] = &[
         "POI1", "QUA8", "TRI6", "SEG3", "QUA4", "TRI3", "SEG2", "CHPO", "NOEUD", "INCO", "ATTRIBUT", "COMP", "TYPE",
-        "GRAVITE", "MAJU", "MINU", "QUAD", "LIGN", "CHAM", "LINE", "RIGIDITE", "MASSE", "STRESSES",
+        "GRAVITE", "MAJU", "MINU", "QUAD", "LIGN", "CHAM", "LINE", "RIGIDITE", "MASSE", "STRESSES", "TABL",
     ];
     // CHAN (TYPE) POI1_MESH LISTENTI: elements joining the mesh's points.
     if let Some(r) = super::chan_cham::connect(it, a)? {
@@ -216,6 +216,18 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let k = a.req_keyword(KW)?;
     match k {
         "MAJU" => Ok(vec![Value::mot(a.req::<String>()?.to_uppercase())]),
+        // Cast3M's table layout of a CHARGEMENT is a storage choice for
+        // TIRE's speed: gibi's loads already give the same values.
+        "TABL" => {
+            let Some(c) = a.opt_with(|v| match v {
+                Value::Charge(c) => Some(c.clone()),
+                _ => None,
+            }) else {
+                return Err(a.missing("CHARGEMENT"));
+            };
+            let _kind = a.req::<String>()?;
+            Ok(vec![Value::Charge(c)])
+        }
         "MINU" => Ok(vec![Value::mot(a.req::<String>()?.to_lowercase())]),
         "POI1" => Ok(vec![Value::Mesh(Rc::new(mg::change_to_poi1(&super::mesh::req_geo(a)?)))]),
         "LIGN" => Ok(vec![Value::Mesh(Rc::new(mg::edges::all_edges(&super::mesh::req_geo(a)?)))]),

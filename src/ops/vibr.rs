@@ -69,9 +69,8 @@ fn vibr(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     if a.opt::<Rc<Rigidite>>().is_some() {
         return Err(a.err("a damping matrix is not available (real modes of K and M only)"));
     }
-    let _ = a.keyword(&["MULT"]);
-    let _ = a.keyword(&["IMPR"]);
-    let _ = a.keyword(&["TBAS"]);
+    // The options come in any order ('IMPR' 'MULT' as well as 'MULT' 'IMPR').
+    while a.keyword(&["MULT", "IMPR", "TBAS"]).is_some() {}
     let signed = a.opt::<bool>().unwrap_or(true);
     for v in [&choice] {
         if let Choice::Interval { lo, hi, .. } = v {
