@@ -22,6 +22,7 @@ pub mod element;
 pub mod enclosed;
 pub mod fibre_section;
 pub mod finite_strain;
+pub mod combustion;
 pub mod flow;
 pub mod fofi;
 pub mod fourier;
