@@ -25,10 +25,7 @@ pub(crate) const OPS: &[OpDef] = &[OpDef {
 const FORMS: &[&str] = &["ARRHENIU", "HEAVYSID", "LAMINAIR", "EBU", "CREBCOM", "CREBCOM2"];
 
 fn flam(_it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
-    let form = a
-        .word()
-        .map(|w| w.trim().to_uppercase())
-        .ok_or_else(|| a.missing("one of 'ARRHENIU' 'HEAVYSID'"))?;
+    let form = a.word().map(|w| w.trim().to_uppercase()).ok_or_else(|| a.missing("one of 'ARRHENIU' 'HEAVYSID'"))?;
     // 'CREBCOM' and 'CREBCOM2' share their first four letters: whole words.
     let form = match FORMS.iter().find(|f| **f == form || (form.len() == 4 && f.starts_with(&form))) {
         Some(f) => *f,
