@@ -319,7 +319,13 @@ impl<'a> Args<'a> {
         let (i, c) = found?;
         let right = &mut self.st.right;
         right.remove(i);
-        let end = (i..right.len()).find(|&j| ends_window(&right[j], self.registry)).unwrap_or(right.len());
+        // A quoted operator name also ends it: it runs where it stands
+        // (`MAXI ch 'ABS' '/' x` divides the maximum), as in `take_typed`.
+        let ends = |t: &Tok| {
+            ends_window(t, self.registry)
+                || matches!(&t.kind, TokKind::Quoted(s) if !s.contains(char::is_whitespace) && self.registry.find(s).is_some())
+        };
+        let end = (i..right.len()).find(|&j| ends(&right[j])).unwrap_or(right.len());
         right.make_contiguous()[..end].rotate_left(i);
         Some(c)
     }

@@ -12,6 +12,7 @@ pub mod beam;
 pub mod beam_skin;
 pub mod biot_savart;
 pub mod colour;
+pub mod combustion;
 pub mod constitutive;
 pub mod contact;
 pub mod contact_weak;

@@ -44,6 +44,7 @@ mod extract;
 mod fibre_section;
 mod fields;
 mod fit;
+mod flam;
 mod fofi;
 mod format;
 mod fourier;
@@ -274,6 +275,7 @@ impl Registry {
             variable::OPS,
             pasapas::OPS,
             prim::OPS,
+            flam::OPS,
             raff::OPS,
             chpo_rigi::OPS,
             work::OPS,
