@@ -189,11 +189,7 @@ fn lattice(lo: V3, hi: V3, h: f64) -> Vec<V3> {
         for j in 0..=n[1] {
             for k in 0..=n[2] {
                 for s in [0.0, 0.5] {
-                    out.push([
-                        lo[0] + (i as f64 + s) * h,
-                        lo[1] + (j as f64 + s) * h,
-                        lo[2] + (k as f64 + s) * h,
-                    ]);
+                    out.push([lo[0] + (i as f64 + s) * h, lo[1] + (j as f64 + s) * h, lo[2] + (k as f64 + s) * h]);
                 }
             }
         }
