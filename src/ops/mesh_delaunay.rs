@@ -127,10 +127,13 @@ fn tria(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     Ok(vec![Value::Mesh(Rc::new(Mesh::single(Part::with(ElemType::Tri3, conn))))])
 }
 
+/// Points' coordinates in their plane, and the plane's origin and axes.
+type InPlane = (Vec<[f64; 2]>, [[f64; 3]; 3]);
+
 /// TRIA of points with a target size `h` (2D, or 3D): the input nodes
 /// and nodes added (density `h`), Delaunay elements over them.
 fn points_sized(it: &mut Interp, ids: &[usize], coords: &[[f64; 3]], dim: usize, h: f64) -> Result<Mesh> {
-    let plane: Option<(Vec<[f64; 2]>, [[f64; 3]; 3])> = if mg::tria_sized::collinear(coords) {
+    let plane: Option<InPlane> = if mg::tria_sized::collinear(coords) {
         // Points on one line: no element, as without a size.
         return Ok(Mesh::single(Part::with(ElemType::Tri3, vec![])));
     } else if dim == 2 {
@@ -162,7 +165,7 @@ fn points_sized(it: &mut Interp, ids: &[usize], coords: &[[f64; 3]], dim: usize,
 /// the farthest point, then the normal, oriented to its largest component
 /// being positive, crossed with it), or None if they span a volume or lie
 /// on one line.
-fn in_plane(x: &[[f64; 3]]) -> Option<(Vec<[f64; 2]>, [[f64; 3]; 3])> {
+fn in_plane(x: &[[f64; 3]]) -> Option<InPlane> {
     let sub = |a: [f64; 3], b: [f64; 3]| [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
     let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
     let cross =

@@ -28,10 +28,13 @@ const SPACING: f64 = 0.55;
 /// A safety net on the node count: a size far too small for the region.
 const MAX_POINTS: usize = 2_000_000;
 
+/// Plane points and triangles of indices into them.
+pub type Triangles2 = (Vec<[f64; 2]>, Vec<[usize; 3]>);
+
 /// The sized triangulation of plane points: all points (the input first,
 /// in order) and counter-clockwise triangles of indices into them. No
 /// triangle (empty) when the points are all on one line.
-pub fn points_2d(op: &'static str, pts: &[[f64; 2]], h: f64) -> Result<(Vec<[f64; 2]>, Vec<[usize; 3]>), MeshError> {
+pub fn points_2d(op: &'static str, pts: &[[f64; 2]], h: f64) -> Result<Triangles2, MeshError> {
     let tris = match super::delaunay::points_2d(op, pts) {
         Ok(t) => t,
         Err(_) if collinear_2d(pts) => return Ok((pts.to_vec(), vec![])),
