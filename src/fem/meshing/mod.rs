@@ -67,6 +67,7 @@ pub mod tet_steiner;
 pub mod tetra;
 pub mod transform;
 pub mod tri6_split;
+pub mod tria_sized;
 pub(crate) mod vec3;
 pub mod verify;
 pub mod voronoi;

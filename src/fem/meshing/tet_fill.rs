@@ -34,6 +34,12 @@ pub fn points_3d(op: &'static str, pts: &[[f64; 3]]) -> Result<Vec<[usize; 4]>, 
 /// tetrahedra use the surface's nodes, plus points added on the surface
 /// (new nodes) where flips alone cannot make it appear (`tet_steiner`).
 pub fn volu_closed(op: &'static str, nodes: &mut Nodes, surf: &Mesh) -> Result<Mesh, MeshError> {
+    volu_closed_sized(op, nodes, surf, None)
+}
+
+/// `volu_closed` with, given a target size `h`, interior nodes at about
+/// that spacing (`tria_sized::interior_points`); the surface is kept.
+pub fn volu_closed_sized(op: &'static str, nodes: &mut Nodes, surf: &Mesh, h: Option<f64>) -> Result<Mesh, MeshError> {
     check_nodes(op, nodes, surf)?;
     let mut tris: Vec<[usize; 3]> = vec![];
     for p in surf.parts.iter().filter(|p| !p.is_empty()) {
@@ -50,6 +56,15 @@ pub fn volu_closed(op: &'static str, nodes: &mut Nodes, surf: &Mesh) -> Result<M
     let pts: Vec<[f64; 3]> = ids.iter().map(|&n| nodes.get(n)).collect();
     let tris: Vec<[usize; 3]> = tris.iter().map(|f| f.map(|n| local[&n])).collect();
     let s = surface_of(op, &tris, &ids)?;
+    let (mut ids, mut pts) = (ids, pts);
+    if let Some(h) = h {
+        // Interior points are new nodes from the start: the points added on
+        // the surface come after them, as the numbering below expects.
+        for p in super::tria_sized::interior_points(op, &pts, &tris, h)? {
+            ids.push(nodes.push(p, h));
+            pts.push(p);
+        }
+    }
     let mut r = Refined { pts, tris, added: vec![] };
     let mut s = s;
     let mut last = None;
