@@ -17,9 +17,11 @@
 //! conserves the energy exactly (its only error is a period elongation).
 //!
 //! The inertial force r = M a + C v is carried from step to step rather
-//! than a: at the start it is the equilibrium residual F₀ − K u₀ (what
-//! Cast3M does), so a run loaded from its first instant starts with the
-//! acceleration its load gives even when no 'ACCELERATIONS' is given.
+//! than a: at the start it comes from the equilibrium residual F₀ − K u₀
+//! (as in Cast3M), so a run loaded from its first instant starts with the
+//! acceleration its load gives even when no 'ACCELERATIONS' is given (the
+//! accelerations reported follow the scheme from 'ACCELERATIONS'.0, 0 by
+//! default, as Cast3M reports them).
 
 use super::stepper::Stepper;
 use crate::solve::{Condition, Load, Matrix, Problem};
