@@ -8,9 +8,11 @@
 //! * [`history`]: time functions and loads as functions of time.
 //! * [`body`]: element sets on numbered unknowns; strains, stresses and
 //!   thermal forces through the [`material`] seam (elasticity today).
+//! * [`dynamics`]: Newmark's average acceleration over the stepper.
 //! * [`stepper`]: the operator factorised once, one load per step, the
 //!   contact statuses carried from step to step.
 pub mod body;
+pub mod dynamics;
 pub mod history;
 pub mod material;
 pub mod stepper;

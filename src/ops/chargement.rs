@@ -36,6 +36,9 @@ pub(crate) const OPS: &[OpDef] = &[
 /// Options of CHAR that gibi reads but that change nothing for loads tied
 /// to the structure (the default): a moving load ('TRAN', 'ROTA', 'TRAJ')
 /// is refused by name.
+/// The first components that make an unnamed CHPOINT load a 'MECA' one.
+const FORCE_NAMES: &[&str] = &["FX", "FY", "FZ", "FR", "FT", "MR", "MT", "MX", "MY", "MZ"];
+
 const CHAR_WORDS: &[&str] = &["LIBRE", "LIE", "TRAN", "ROTA", "TRAJ"];
 
 fn char(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
@@ -63,6 +66,12 @@ fn char(_: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     read_options(a)?;
     let c = ev.curves.first().ok_or_else(|| a.err("the EVOLUTIO holds no curve"))?;
     let function = TimeFunction::new(c.x.clone(), c.y.clone()).map_err(|e| a.err(e))?;
+    // Unnamed, a field of forces is a mechanical load: Cast3M names it
+    // 'MECA' when its first component is a force or a moment.
+    let name = name.or_else(|| match &field {
+        Value::Chpo(c) => c.comps.first().filter(|k| FORCE_NAMES.contains(&k.as_str())).map(|_| "MECA".to_string()),
+        _ => None,
+    });
     Ok(vec![one(name, Timing::Scaled { field, function })])
 }
 

@@ -106,6 +106,7 @@ mod ordo_cost;
 mod orient_check;
 mod param_fit;
 mod pasapas;
+mod pasapas_dyn;
 mod pasapas_fields;
 mod pasapas_model;
 mod pasapas_vary;

@@ -32,13 +32,17 @@
 //! field of that name (`pasapas_vary`); 'AUTOMATIQUE' computes the times
 //! asked: an elastic step is exact whatever the steps before it.
 //!
+//! 'DYNAMIQUE' VRAI runs linear dynamics (`pasapas_dyn`, the scheme in
+//! `analysis::dynamics`): 'VITESSES' and 'ACCELERATIONS' join the results.
+//!
 //! What is not elastic mechanics (a plastic model, friction, large
-//! displacements, dynamics, thermal analysis) is refused before anything is
+//! displacements, thermal analysis) is refused before anything is
 //! written: the table is left untouched.
 
 use super::pasapas_fields as fields;
 use super::pasapas_model::{self as pmodel, Loads, Structure};
 use super::{Args, OpDef};
+use crate::analysis::dynamics::Newmark;
 use crate::analysis::stepper::{StepOutcome, Stepper};
 use crate::error::Result;
 use crate::eval::machine::GroupState;
@@ -54,7 +58,7 @@ pub(crate) const OPS: &[OpDef] = &[OpDef {
     doc: "Incremental analysis of an elastic structure, with contact models and unilateral conditions, following \
           Cast3M's table: MODELE, CARACTERISTIQUES, BLOCAGES_MECANIQUES, CHARGEMENT ('MECA', 'DIMP', 'T'), \
           TEMPS_CALCULES, TEMPS_SAUVES in; TEMPS, DEPLACEMENTS, CONTRAINTES, DEFORMATIONS, REACTIONS \
-          (STATUTS_CONTACT, PRESSIONS_CONTACT) out, indexed 0 (the initial state) 1 2 …; PERSO1, CHARMECA, REEV_MEC \
+          (STATUTS_CONTACT, PRESSIONS_CONTACT; VITESSES, ACCELERATIONS with DYNAMIQUE) out, indexed 0 (the initial state) 1 2 …; PERSO1, CHARMECA, REEV_MEC \
           hooks; a second call continues. One factorisation for the whole run.",
     example: "t = tabl ; t.'MODELE' = mo ; t.'CARACTERISTIQUES' = ma ; t.'BLOCAGES_MECANIQUES' = cl ; \
               t.'CHARGEMENT' = ch ; t.'TEMPS_CALCULES' = prog 0.5 1. ; pasapas t ;",
@@ -102,12 +106,13 @@ struct Input {
     times: Vec<f64>,
     saved: Vec<f64>,
     tref: Option<Rc<Chpoint>>,
+    /// 'DYNAMIQUE': Newmark's average acceleration (`pasapas_dyn`).
+    dynamic: bool,
 }
 
 /// Options of Cast3M's PASAPAS that change the physics gibi solves.
 const REFUSED: &[(&str, &str)] = &[
     ("GRANDS_DEPLACEMENTS", "large displacements"),
-    ("DYNAMIQUE", "dynamics"),
     ("CONSOLIDATION", "consolidation"),
     ("K_SIGMA", "the geometric stiffness"),
     ("FEFP_FORMULATION", "finite strains"),
@@ -218,12 +223,13 @@ fn read_input(a: &Args, t: &Tab) -> Result<Input> {
             _ => None,
         },
     };
-    Ok(Input { model, cara, blocks, charge, times, saved, tref })
+    let dynamic = flag(t, "DYNAMIQUE");
+    Ok(Input { model, cara, blocks, charge, times, saved, tref, dynamic })
 }
 
 /// Times are equal within a relative 1e-10 (Cast3M's 'DANS' precision),
 /// so a list built by PROG … 'PAS' … matches one written by hand.
-fn close(x: f64, y: f64) -> bool {
+pub(crate) fn close(x: f64, y: f64) -> bool {
     (x - y).abs() <= 1e-10 * x.abs().max(y.abs()).max(1e-300)
 }
 
@@ -239,6 +245,8 @@ struct Run {
     contact: bool,
     /// The material is evaluated at each step (`pasapas_vary`).
     varying: bool,
+    /// A dynamic run's mass, damping and state.
+    dynm: Option<Newmark>,
 }
 
 fn pasapas(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
@@ -259,16 +267,33 @@ fn pasapas(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         _ => None,
     };
     let loads = pmodel::loads(it, a, &s, input.charge.as_deref(), tref.as_deref())?;
+    if input.dynamic && varying {
+        return Err(a.err(
+            "'DYNAMIQUE' with material properties that vary along the run is not supported: gibi's dynamics keeps one \
+             effective operator per step length",
+        ));
+    }
+    let mut dynm =
+        if input.dynamic { Some(super::pasapas_dyn::newmark(it, a, &tab, &s, &input.model, &cara0)?) } else { None };
     let t = std::time::Instant::now();
-    let mut stepper = Stepper::new(s.asm.problem.clone()).map_err(|e| a.err(explain(it, &s, e, None)))?;
+    // Dynamics solves with the effective operator K + 4/h² M (+ 2/h C).
+    let problem = match dynm.as_mut() {
+        Some(nm) => nm.effective(&s.asm.problem, super::pasapas_dyn::first_step(&input.times, temp0)),
+        None => s.asm.problem.clone(),
+    };
+    let mut stepper = Stepper::new(problem).map_err(|e| a.err(explain(it, &s, e, None)))?;
     stepper.set_adhesion(&s.adhesion).map_err(|e| a.err(format!("'ADHE': {}", e)))?;
     // Ctrl-C stops a long status iteration between two solves.
     stepper.set_cancel(crate::solve::unilateral::status::Cancel(it.interrupt.shared()));
     it.timers.phase("PASAPAS factorisation", t.elapsed().as_secs_f64());
     let has_t = input.charge.as_ref().is_some_and(|c| c.has("T"));
     let contact = !s.contact.is_empty();
-    let mut run = Run { tab: tab.clone(), s, stepper, loads, charge: input.charge.clone(), has_t, contact, varying };
+    let mut run =
+        Run { tab: tab.clone(), s, stepper, loads, charge: input.charge.clone(), has_t, contact, varying, dynm };
     initial_state(it, a, &mut run, &input, temp0)?;
+    if let Some(nm) = run.dynm.as_mut() {
+        super::pasapas_dyn::initial(a, &tab, &run.s, &run.loads, temp0, nm)?;
+    }
     // A continued run starts its statuses where the last one ended.
     let w = sub(&tab, "WTABLE");
     if let Some(Value::ListEnti(l)) = w.borrow().get(&key("STATUTS_UNILATERAUX")) {
@@ -278,6 +303,10 @@ fn pasapas(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     if let Some(st) = run.stepper.statuses() {
         let l: Vec<i64> = st.iter().map(|&x| x as i64).collect();
         w.borrow_mut().set(key("STATUTS_UNILATERAUX"), Value::ListEnti(Rc::new(l)));
+    }
+    if let Some(nm) = &run.dynm {
+        // The inertial force at the end: a continued run starts from it.
+        w.borrow_mut().set(key("FREA1"), Value::Chpo(Rc::new(super::pasapas_dyn::field(&run.s, &nm.r, true))));
     }
     // pasapas.notice's outputs: the run converged, without error.
     set(&tab, "CONV", Value::Bool(true));
@@ -328,6 +357,11 @@ fn initial_state(it: &mut Interp, a: &Args, run: &mut Run, input: &Input, temp0:
         first.set(key("STATUTS_CONTACT"), Value::Chpo(Rc::new(st)));
         first.set(key("PRESSIONS_CONTACT"), Value::Chpo(Rc::new(pr)));
     }
+    if run.dynm.is_some() {
+        for k in ["VITESSES", "ACCELERATIONS"] {
+            first.set(key(k), super::pasapas_dyn::given_or_zero(tab, s, k));
+        }
+    }
     if run.has_t {
         if let Some(Value::Chpo(c)) =
             run.charge.as_ref().map(|ch| super::chargement::at(it, a, ch, Some("T"), temp0)).transpose()?
@@ -364,9 +398,8 @@ fn initial_state(it: &mut Interp, a: &Args, run: &mut Run, input: &Input, temp0:
         if let Some(m) = input.cara.first() {
             w.set(key("MAT_MEC"), Value::Mchaml(m.clone()));
         }
-        for k in ["DYNAMIQUE", "GRANDS_DEPLACEMENTS"] {
-            w.set(key(k), Value::Bool(false));
-        }
+        w.set(key("DYNAMIQUE"), Value::Bool(input.dynamic));
+        w.set(key("GRANDS_DEPLACEMENTS"), Value::Bool(false));
         let talpha = get(tab, "TALPHA_REFERENCE").unwrap_or(Value::Float(0.0));
         w.set(key("TALPHA_REFERENCE"), talpha);
         w.set(key("CONV"), Value::Bool(true));
@@ -444,7 +477,21 @@ fn steps(it: &mut Interp, a: &Args, run: &mut Run, input: &Input, temp0: f64) ->
             )?;
             (run.s, run.loads, run.charge) = (s, loads, current);
         }
-        let (coefs, extra, heat) = step_load(it, a, run, ti)?;
+        let (coefs, mut extra, heat) = step_load(it, a, run, ti)?;
+        if let Some(nm) = run.dynm.as_mut() {
+            // A new step length needs a new effective operator.
+            let h = ti - time;
+            if !nm.same_step(h) {
+                let p = nm.effective(&run.s.asm.problem, h);
+                run.stepper.renew(p).map_err(|e| a.err(explain(it, &run.s, e, None)))?;
+            }
+            let mut load = nm.inertia_load(h, run.s.asm.problem.conditions.len());
+            if let Some(e) = &extra {
+                crate::analysis::history::axpy(&mut load.f, 1.0, &e.f);
+                crate::analysis::history::axpy(&mut load.d, 1.0, &e.d);
+            }
+            extra = Some(load);
+        }
         // Cast3M prints its step lines unless told OPTI ECHO 0.
         let verbose = it.opts.echo >= 1 || !it.opts.kept.contains_key("ECHO");
         let out = run.stepper.solve_history(&run.loads.history, &coefs, extra.as_ref(), &mut |_| {}).map_err(|e| {
@@ -463,6 +510,9 @@ fn steps(it: &mut Interp, a: &Args, run: &mut Run, input: &Input, temp0: f64) ->
         }
         if let Some(p) = it.progress.as_mut() {
             p(ipas, total.max(ipas));
+        }
+        if let Some(nm) = run.dynm.as_mut() {
+            nm.advance(ti - time, &out.solution.u);
         }
         let estim = results(it, a, run, ti, &out, heat.as_deref())?;
         set(&tab, "ESTIMATION", Value::Table(estim.clone()));
@@ -571,6 +621,10 @@ fn results(it: &mut Interp, a: &Args, run: &Run, t: f64, out: &StepOutcome, heat
     e.set(key("CONTRAINTES"), Value::Mchaml(Rc::new(fields::element_field(s, &mut f, true))));
     e.set(key("DEFORMATIONS"), Value::Mchaml(Rc::new(fields::element_field(s, &mut f, false))));
     e.set(key("REACTIONS"), Value::Chpo(Rc::new(fields::reactions(s, &sol.lambda))));
+    if let Some(nm) = &run.dynm {
+        e.set(key("VITESSES"), Value::Chpo(Rc::new(super::pasapas_dyn::field(s, &nm.v, false))));
+        e.set(key("ACCELERATIONS"), Value::Chpo(Rc::new(super::pasapas_dyn::field(s, &nm.a, false))));
+    }
     if run.contact {
         let (st, pr) = fields::contact(s, sol);
         e.set(key("STATUTS_CONTACT"), Value::Chpo(Rc::new(st)));

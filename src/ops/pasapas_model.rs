@@ -165,7 +165,19 @@ pub(crate) fn build(
         };
         adhesion[k] = if share.is_finite() { v * share } else { 0.0 };
     }
-    let asm = rig.number();
+    let mut asm = rig.number();
+    // A condition written twice (the same BLOQ in two blocks) is one
+    // condition, as RESO takes it: the conditions (and the numbers that
+    // refer to them) follow the merged numbering.
+    asm.merge_twins();
+    let m = asm.problem.conditions.len();
+    if m != rig.conds.len() {
+        let back: HashMap<usize, usize> = (0..m).map(|k| (asm.origin(k), k)).collect();
+        rig.conds = (0..m).map(|k| rig.conds[asm.origin(k)].clone()).collect();
+        adhesion = (0..m).map(|k| adhesion[asm.origin(k)]).collect();
+        contact = contact.iter().filter_map(|c| back.get(c).copied()).collect();
+        contact_limits = contact_limits.iter().filter_map(|(c, d)| back.get(c).map(|k| (*k, *d))).collect();
+    }
     let mut index = HashMap::default();
     for (i, (n, c)) in asm.dofs.iter().enumerate() {
         index.insert((*n, c.clone()), i);

@@ -572,7 +572,7 @@ fn lump(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     model_mass(it, model, fields, true)
 }
 
-fn model_mass(it: &Interp, model: Rc<Model>, fields: Vec<Rc<Mchaml>>, lumped: bool) -> Result<Vec<Value>> {
+pub(crate) fn model_mass(it: &Interp, model: Rc<Model>, fields: Vec<Rc<Mchaml>>, lumped: bool) -> Result<Vec<Value>> {
     let mut rig = Rigidite::new(Subtype::Masse);
     for zone in model.zones.iter().filter(|z| z.formulation != super::pres_model::FORMULATION) {
         let (form, mode) = (formulation(zone), zone_mode(zone)?);
