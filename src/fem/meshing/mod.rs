@@ -25,6 +25,7 @@ pub mod contour;
 pub mod cote_swept;
 pub mod couture;
 pub mod dall;
+pub mod swept_triangles;
 pub mod dall_support;
 pub mod dall_unequal;
 pub mod deduce;
