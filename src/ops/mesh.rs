@@ -171,15 +171,6 @@ fn tran(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let v = vector(it, a).ok_or_else(|| a.missing("a vector (POINT)"))?;
     more_spacing(a, &mut sp)?;
     let m = mg::tran(&mut it.nodes, &geo, &sp, v)?;
-    // A line of one part swept into triangles: diagonals alternating
-    // along the line (see `swept_triangles`).
-    if let ([line], Some(ElemType::Tri3)) = (geo.parts.as_slice(), ElemType::from_name(&it.opts.elem)) {
-        if line.ty == ElemType::Seg2 {
-            if let Some(t) = mg::swept_triangles::alternate(&m, line.len()) {
-                return Ok(mesh_val(t));
-            }
-        }
-    }
     Ok(mesh_val(swept_surface(it, m)))
 }
 

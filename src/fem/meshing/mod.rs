@@ -25,7 +25,6 @@ pub mod contour;
 pub mod cote_swept;
 pub mod couture;
 pub mod dall;
-pub mod swept_triangles;
 pub mod dall_support;
 pub mod dall_unequal;
 pub mod deduce;
