@@ -166,7 +166,7 @@ fn bend(k: usize) -> usize {
 }
 
 /// Add w·Bᵀ D B to the local matrix, B's columns mapped by `idx`.
-fn add_btdb(k: &mut [f64], n: usize, b: &[Vec<f64>; 3], d: &[[f64; 3]; 3], w: f64, idx: fn(usize) -> usize) {
+fn add_btdb(k: &mut [f64], n: usize, b: &[Vec<f64>; 3], d: &[[f64; 3]; 3], w: f64, idx: impl Fn(usize) -> usize) {
     let nc = b[0].len();
     let db: Vec<[f64; 3]> = (0..nc).map(|c| std::array::from_fn(|r| (0..3).map(|s| d[r][s] * b[s][c]).sum())).collect();
     for i in 0..nc {
@@ -197,8 +197,9 @@ pub fn stiffness(f: Formulation, mode: Mode, x: &[[f64; 3]], m: &Material) -> Re
     let nn = x.len();
     let n = 6 * nn;
     let mut kl = vec![0.0; n * n];
+    let e = m.exce.unwrap_or(0.0);
     for (p, w) in points(f, &fr)? {
-        add_btdb(&mut kl, n, &p.bm, &sec.dm, w * p.det, mem);
+        add_btdb(&mut kl, n, &shell_offset::membrane_rows(&p, e, mem, bend), &sec.dm, w * p.det, |c| c);
         add_btdb(&mut kl, n, &p.bb, &sec.db, w * p.det, bend);
         if let Some(d) = &fr.dst {
             // Transverse shear energy: γ is constant, its stiffness k G t.
@@ -228,7 +229,6 @@ pub fn stiffness(f: Formulation, mode: Mode, x: &[[f64; 3]], m: &Material) -> Re
             }
         }
     }
-    shell_offset::stiffness_to_ref(m.exce.unwrap_or(0.0), &mut kl, n);
     // K = Tᵀ K_l T, applied column by column then row by row.
     let mut tmp = vec![0.0; n * n];
     for i in 0..n {
@@ -252,11 +252,12 @@ fn check_u(f: Formulation, x: &[[f64; 3]], u: &[f64]) -> Result<(), FemError> {
     Ok(())
 }
 
-/// Membrane strains and curvatures (the 6 [`STRAIN`] values) at `p`.
-fn strains(p: &PlatePoint, ul: &[f64]) -> [f64; 6] {
+/// Membrane strains (of the mid-surface, at offset `e` from the nodes'
+/// plane: ε + e κ) and curvatures (the 6 [`STRAIN`] values) at `p`.
+fn strains(p: &PlatePoint, ul: &[f64], e: f64) -> [f64; 6] {
     let em = |r: usize| (0..p.bm[r].len()).map(|c| p.bm[r][c] * ul[mem(c)]).sum::<f64>();
     let eb = |r: usize| (0..p.bb[r].len()).map(|c| p.bb[r][c] * ul[bend(c)]).sum::<f64>();
-    [em(0), em(1), em(2), eb(0), eb(1), eb(2)]
+    [em(0) + e * eb(0), em(1) + e * eb(1), em(2) + e * eb(2), eb(0), eb(1), eb(2)]
 }
 
 fn resultants(sec: &Section, e: &[f64; 6]) -> [f64; 6] {
@@ -271,7 +272,8 @@ pub fn strain(f: Formulation, mode: Mode, x: &[[f64; 3]], m: &Material, u: &[f64
     check_u(f, x, u)?;
     let fr = if f == Formulation::Dst { shear(f, frame(f, x)?, m, &section(f, m)?)? } else { frame(f, x)? };
     let ul = to_local(&fr.r, u);
-    let values = points(f, &fr)?.iter().map(|(p, _)| strains(p, &ul).to_vec()).collect();
+    let e = m.exce.unwrap_or(0.0);
+    let values = points(f, &fr)?.iter().map(|(p, _)| strains(p, &ul, e).to_vec()).collect();
     Ok(GaussField { comps: STRAIN.to_vec(), values })
 }
 
@@ -280,10 +282,10 @@ pub fn stress(f: Formulation, mode: Mode, x: &[[f64; 3]], m: &Material, u: &[f64
     check_u(f, x, u)?;
     let sec = section(f, m)?;
     let fr = shear(f, frame(f, x)?, m, &sec)?;
-    let mut ul = to_local(&fr.r, u);
-    shell_offset::to_mid(m.exce.unwrap_or(0.0), &mut ul);
+    let ul = to_local(&fr.r, u);
+    let e = m.exce.unwrap_or(0.0);
     let moments = |p: [f64; 3]| {
-        let r = resultants(&sec, &strains(&point_at(&fr, p), &ul));
+        let r = resultants(&sec, &strains(&point_at(&fr, p), &ul, e));
         [r[3], r[4], r[5]]
     };
     // Moment gradients by central differences in the reference plane:
@@ -291,7 +293,7 @@ pub fn stress(f: Formulation, mode: Mode, x: &[[f64; 3]], m: &Material, u: &[f64
     const H: f64 = 0.01;
     let mut values = Vec::new();
     for ((p, _), (xi, _)) in points(f, &fr)?.iter().zip(rule(geometry(f))) {
-        let r = resultants(&sec, &strains(p, &ul));
+        let r = resultants(&sec, &strains(p, &ul, e));
         let d = |a: usize| -> [f64; 3] {
             let (mut lo, mut hi) = (xi, xi);
             lo[a] -= H;
@@ -322,6 +324,7 @@ pub fn internal_forces(
     dofs(f, mode)?;
     let fr = if f == Formulation::Dst { shear(f, frame(f, x)?, m, &section(f, m)?)? } else { frame(f, x)? };
     let pts = points(f, &fr)?;
+    let e = m.exce.unwrap_or(0.0);
     if sig.values.len() != pts.len() {
         return Err(FemError::WrongPointCount { elem: f.name(), expected: pts.len(), got: sig.values.len() });
     }
@@ -334,7 +337,8 @@ pub fn internal_forces(
             fl[mem(c)] += wd * (0..3).map(|i| p.bm[i][c] * r[i]).sum::<f64>();
         }
         for c in 0..p.bb[0].len() {
-            fl[bend(c)] += wd * (0..3).map(|i| p.bb[i][c] * r[3 + i]).sum::<f64>();
+            // The offset mid-surface's membrane strain ε + e κ works on N too.
+            fl[bend(c)] += wd * (0..3).map(|i| p.bb[i][c] * (r[3 + i] + e * r[i])).sum::<f64>();
         }
         if let Some(d) = &fr.dst {
             let v = [s(6)?, s(7)?];

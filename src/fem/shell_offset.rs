@@ -1,42 +1,37 @@
 //! Eccentric flat shells (MATE … 'EXCE' e): the mid-surface lies at e
-//! along the element normal from the nodes' plane. The mid-surface moves
-//! with the nodes as a rigid offset, u_mid = u + θ × (e n): in the element
-//! axes (n = z) u_mid = u + e θy and v_mid = v − e θx, the other dofs
-//! unchanged. That map T (6 dofs per node, local axes) turns the
-//! mid-surface stiffness into the nodes' one, Tᵀ K T, and mid-surface
-//! nodal forces into the nodes' ones, Tᵀ f.
+//! along the element normal from the nodes' plane (the reference
+//! surface). Under Kirchhoff's hypothesis a fibre at height e stretches
+//! by ε + e κ, ε the reference membrane strains and κ the curvatures, so
+//! the mid-surface's membrane strain is read through the element's own
+//! curvature rows (DKT/DKQ), not through a rigid shift of the nodes: a
+//! shift u + e θ would differentiate the linearly interpolated nodal
+//! rotations, which the discrete Kirchhoff curvature does not tie to w,
+//! and a stack of thin offset layers (a multilayer shell) would then
+//! have almost no bending stiffness in w.
 
-/// u_mid = T u_ref on local displacements.
-pub fn to_mid(e: f64, u: &mut [f64]) {
-    for d in u.chunks_mut(6) {
-        d[0] += e * d[4];
-        d[1] -= e * d[3];
-    }
-}
+use super::plate::PlatePoint;
 
-/// f_ref = Tᵀ f_mid on local nodal forces.
-pub fn forces_to_ref(e: f64, f: &mut [f64]) {
-    for d in f.chunks_mut(6) {
-        d[4] += e * d[0];
-        d[3] -= e * d[1];
-    }
-}
-
-/// K_ref = Tᵀ K_mid T on a dense n×n local matrix (row-major).
-pub fn stiffness_to_ref(e: f64, k: &mut [f64], n: usize) {
-    if e == 0.0 {
-        return;
-    }
-    // K T: column 6i+4 gains e·column 6i, column 6i+3 loses e·column 6i+1.
-    for r in 0..n {
-        forces_to_ref(e, &mut k[r * n..(r + 1) * n]);
-    }
-    // Tᵀ (K T): the same on the rows.
-    for i in 0..n / 6 {
-        for c in 0..n {
-            let (r0, r1) = (k[(6 * i) * n + c], k[(6 * i + 1) * n + c]);
-            k[(6 * i + 4) * n + c] += e * r0;
-            k[(6 * i + 3) * n + c] -= e * r1;
+/// The mid-surface membrane strain rows over the element's local dofs
+/// (6 per node): the membrane rows on the (u1, u2) dofs plus e times the
+/// curvature rows on the (w, θ1, θ2) dofs. `mem` and `bend` map a
+/// membrane or bending dof to its place among the local dofs.
+pub(crate) fn membrane_rows(
+    p: &PlatePoint,
+    e: f64,
+    mem: impl Fn(usize) -> usize,
+    bend: impl Fn(usize) -> usize,
+) -> [Vec<f64>; 3] {
+    let n = 6 * (p.bm[0].len() / 2);
+    std::array::from_fn(|r| {
+        let mut row = vec![0.0; n];
+        for (c, v) in p.bm[r].iter().enumerate() {
+            row[mem(c)] += v;
         }
-    }
+        if e != 0.0 {
+            for (c, v) in p.bb[r].iter().enumerate() {
+                row[bend(c)] += e * v;
+            }
+        }
+        row
+    })
 }

@@ -22,6 +22,7 @@ fn positions(it: &Interp, a: &Args, z: &MchamlZone) -> Result<Vec<Vec<[f64; 3]>>
         mode: String::new(),
         dpge: None,
         xfem: None,
+        cons: String::new(),
     };
     let form = super::model::formulation(&mz);
     let mut out = Vec::new();

@@ -65,6 +65,7 @@ fn mode_on(it: &mut Interp, a: &mut Args, geo: Mesh) -> Result<Vec<Value>> {
     // mesh takes the one made for its geometry (MODE's notice).
     let mut names: Vec<String> = Vec::new();
     let mut dpge = None;
+    let mut cons = String::new();
     // ELASTIQUE is matched before any operator check: its first four
     // letters name the operator ELAS, which must not stop `MODE s
     // MECANIQUE ELASTIQUE` (Cast3M reads MODE's words as words).
@@ -80,9 +81,8 @@ fn mode_on(it: &mut Interp, a: &mut Args, geo: Mesh) -> Result<Vec<Value>> {
         } else if super::args::keyword_matches(&w, "DPGE") {
             dpge = Some(a.req::<PointId>()?.0);
         } else if super::args::keyword_matches(&w, "CONSTITUANT") {
-            // gibi ties element fields to model zones by their mesh, so the
-            // constituent's name is read and not kept (as MANU 'CHML').
-            a.req::<String>()?;
+            // Element fields go to model zones by mesh and constituent.
+            cons = a.req::<String>()?.to_uppercase();
         } else if ["ELAS", "ISOT", "SECT"].iter().any(|k| w.starts_with(k)) {
             behaviour.push(w);
         } else if INELASTIC.iter().any(|k| w.starts_with(k)) || behaviour.iter().any(|b| inelastic(b)) {
@@ -150,7 +150,19 @@ fn mode_on(it: &mut Interp, a: &mut Args, geo: Mesh) -> Result<Vec<Value>> {
             model.zones.push(ModelZone { dpge, ..ModelZone::on_part(p, &formulation, &behaviour, None, &mode) });
         }
     } else {
-        model.zones.push(ModelZone { mesh: geo, formulation, behaviour, element, mode, dpge: None, xfem: None });
+        model.zones.push(ModelZone {
+            mesh: geo,
+            formulation,
+            behaviour,
+            element,
+            mode,
+            dpge: None,
+            xfem: None,
+            cons: String::new(),
+        });
+    }
+    for z in &mut model.zones {
+        z.cons.clone_from(&cons);
     }
     Ok(vec![Value::Model(Rc::new(model))])
 }
@@ -271,6 +283,7 @@ fn props(it: &Interp, a: &mut Args, subtype: &str) -> Result<Vec<Value>> {
     for z in &model.zones {
         let mut mz = MchamlZone {
             mesh: z.mesh.clone(),
+            cons: z.cons.clone(),
             element: z.element.clone(),
             constants: consts.clone(),
             vectors: vecs.clone(),
@@ -353,7 +366,7 @@ fn cara(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 pub(crate) fn material_for(zone: &ModelZone, fields: &[Rc<Mchaml>]) -> Material {
     let mut m = Material::default();
     for f in fields {
-        for z in f.zones.iter().filter(|z| z.mesh == zone.mesh) {
+        for z in f.zones.iter().filter(|z| z.belongs_to(zone)) {
             for (k, v) in &z.constants {
                 // Entries "STRESS/STRAIN" of a HOOKE field (ops/hooke.rs).
                 if !m.set(k, *v) && k.contains('/') {

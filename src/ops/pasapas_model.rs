@@ -327,7 +327,7 @@ fn per_elem(
 fn zone_values(a: &Args, zone: &ModelZone, cara: &[Rc<Mchaml>], name: &str) -> Result<Vec<f64>> {
     let n = zone.mesh.n_elements();
     for f in cara {
-        for z in f.zones.iter().filter(|z| z.mesh == zone.mesh) {
+        for z in f.zones.iter().filter(|z| z.belongs_to(zone)) {
             if let Some(v) = z.constants.get(name) {
                 return Ok(vec![*v; n]);
             }

@@ -86,8 +86,12 @@ fn gauss_field(it: &Interp, a: &mut Args, subtype: &str, f: PointFn) -> Result<V
             // A property given point by point (a density-scaled YOUN) enters
             // each element as RIGI takes it.
             let mats = super::variable_fields::element_materials(a, &mat, part, &fields)?;
-            let mut z =
-                MchamlZone { mesh: Mesh::single(part.clone()), element: zone.element.clone(), ..Default::default() };
+            let mut z = MchamlZone {
+                mesh: Mesh::single(part.clone()),
+                element: zone.element.clone(),
+                cons: zone.cons.clone(),
+                ..Default::default()
+            };
             for (e, nodes) in part.elems().enumerate() {
                 let mat = if mats.len() == 1 { &mats[0] } else { &mats[e] };
                 let mut x: Vec<[f64; 3]> = nodes.iter().map(|n| it.nodes.get(*n)).collect();

@@ -177,30 +177,34 @@ fn key(ty: ElemType, e: &[usize]) -> (ElemType, Vec<usize>) {
 fn mchaml_to_model(a: &Args, m: &Mchaml, mo: &Model) -> Result<Mchaml> {
     let constant: Vec<&MchamlZone> = m.zones.iter().filter(|z| z.values.is_empty()).collect();
     let valued: Vec<&MchamlZone> = m.zones.iter().filter(|z| !z.values.is_empty()).collect();
-    // Where each element of the field is: (zone, element number in it).
-    let mut at: HashMap<(ElemType, Vec<usize>), (usize, usize)> = HashMap::new();
-    for (zi, z) in valued.iter().enumerate() {
-        let mut e = 0;
-        for p in &z.mesh.parts {
-            for el in p.elems() {
-                at.entry(key(p.ty, el)).or_insert((zi, e));
-                e += 1;
-            }
-        }
-    }
     let mut out = Mchaml { subtype: m.subtype.clone(), zones: Vec::new() };
     let mut any_covered = false;
     for mz in &mo.zones {
+        // Where each element of the field is: (zone, element number in
+        // it), among the zones of this model zone's constituent.
+        let mut at: HashMap<(ElemType, Vec<usize>), (usize, usize)> = HashMap::new();
+        for (zi, z) in valued.iter().enumerate() {
+            if !(z.cons.is_empty() || mz.cons.is_empty() || z.cons == mz.cons) {
+                continue;
+            }
+            let mut e = 0;
+            for p in &z.mesh.parts {
+                for el in p.elems() {
+                    at.entry(key(p.ty, el)).or_insert((zi, e));
+                    e += 1;
+                }
+            }
+        }
         let elems: Vec<(ElemType, Vec<usize>)> =
             mz.mesh.parts.iter().flat_map(|p| p.elems().map(move |e| key(p.ty, e))).collect();
         let mut covered = vec![false; elems.len()];
-        for z in &constant {
+        for z in constant.iter().filter(|z| z.cons.is_empty() || mz.cons.is_empty() || z.cons == mz.cons) {
             let own: HashSet<(ElemType, Vec<usize>)> =
                 z.mesh.parts.iter().flat_map(|p| p.elems().map(move |e| key(p.ty, e))).collect();
             let hit: Vec<bool> = elems.iter().map(|k| own.contains(k)).collect();
             if hit.iter().any(|h| *h) {
                 covered.iter_mut().zip(&hit).for_each(|(c, h)| *c |= *h);
-                match out.zones.iter_mut().find(|x| x.values.is_empty() && x.mesh == mz.mesh) {
+                match out.zones.iter_mut().find(|x| x.values.is_empty() && x.mesh == mz.mesh && x.cons == mz.cons) {
                     Some(x) => {
                         x.constants.extend(z.constants.clone());
                         x.vectors.extend(z.vectors.clone());
@@ -209,6 +213,7 @@ fn mchaml_to_model(a: &Args, m: &Mchaml, mo: &Model) -> Result<Mchaml> {
                     }
                     None => out.zones.push(MchamlZone {
                         mesh: mz.mesh.clone(),
+                        cons: mz.cons.clone(),
                         element: mz.element.clone(),
                         constants: z.constants.clone(),
                         vectors: z.vectors.clone(),
@@ -228,6 +233,7 @@ fn mchaml_to_model(a: &Args, m: &Mchaml, mo: &Model) -> Result<Mchaml> {
                     let src = valued[zi];
                     let z = nz.get_or_insert_with(|| MchamlZone {
                         mesh: Mesh::single(p.clone()),
+                        cons: src.cons.clone(),
                         element: mz.element.clone(),
                         comps: src.comps.clone(),
                         at_nodes: src.at_nodes,

@@ -54,6 +54,7 @@ pub(super) fn model(
         mode,
         dpge: None,
         xfem: Some(Rc::new(RefCell::new(Enrichment::default()))),
+        cons: String::new(),
     };
     Ok(vec![Value::Model(Rc::new(Model { zones: vec![zone], ties: Vec::new() }))])
 }

@@ -30,6 +30,10 @@ pub struct ModelZone {
     /// The crack enrichment of an X-FEM zone (XQ4R), set by TRIE; shared by
     /// every model holding the zone, as TRIE changes the model in place.
     pub xfem: Option<std::rc::Rc<std::cell::RefCell<crate::fem::xfem::Enrichment>>>,
+    /// The constituent's name (MODE … 'CONS' name; empty when none was
+    /// given): zones on one mesh (the layers of a multilayer shell) keep
+    /// their own material data apart by it.
+    pub cons: String,
 }
 
 impl ModelZone {
@@ -51,6 +55,7 @@ impl ModelZone {
             mode: mode.into(),
             dpge: None,
             xfem: None,
+            cons: String::new(),
         }
     }
 }
@@ -86,6 +91,17 @@ pub struct MchamlZone {
     /// The points are the element's nodes (CHAN 'NOEUD'), not the points
     /// where the element gives its stresses.
     pub at_nodes: bool,
+    /// The constituent of the model zone the data was given on (MATE,
+    /// CARA); empty for any constituent.
+    pub cons: String,
+}
+
+impl MchamlZone {
+    /// Whether this zone's data belongs to model zone `z`: the same mesh
+    /// and no other constituent.
+    pub fn belongs_to(&self, z: &ModelZone) -> bool {
+        self.mesh == z.mesh && (self.cons.is_empty() || z.cons.is_empty() || self.cons == z.cons)
+    }
 }
 
 /// EVOLUTIO: curves y(x).
@@ -152,8 +168,10 @@ impl Mchaml {
     pub fn merge(&self, b: &Mchaml) -> Mchaml {
         let mut out = self.clone();
         for z in &b.zones {
-            if let Some(x) =
-                out.zones.iter_mut().find(|x| x.mesh == z.mesh && x.values.is_empty() && z.values.is_empty())
+            if let Some(x) = out
+                .zones
+                .iter_mut()
+                .find(|x| x.mesh == z.mesh && x.cons == z.cons && x.values.is_empty() && z.values.is_empty())
             {
                 x.constants.extend(z.constants.clone());
                 x.vectors.extend(z.vectors.clone());
