@@ -30,6 +30,7 @@ mod damping;
 mod dans;
 mod date;
 mod dofs;
+mod elem_containing;
 mod elem_field;
 mod element_block;
 mod empty;

@@ -23,6 +23,7 @@ pub mod between;
 pub mod cont_order;
 pub mod contour;
 pub mod cote_swept;
+pub mod containing;
 pub mod couture;
 pub mod dall;
 pub mod dall_support;
