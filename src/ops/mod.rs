@@ -135,6 +135,7 @@ mod reso;
 mod restrict;
 mod rimp;
 mod rtens;
+mod rtens_matrix;
 mod simplex;
 mod special;
 mod spectra;
