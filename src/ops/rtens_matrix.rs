@@ -57,7 +57,8 @@ pub(super) fn by_matrices(a: &mut Args, field: &Mchaml, rot: &Mchaml) -> Result<
     let rart = a.keyword(&["RTAR", "RART"]) == Some("RART");
     let mut out = field.clone();
     for (iz, z) in out.zones.iter_mut().enumerate() {
-        let job = Job::of(z).ok_or_else(|| a.err("expected a stress or strain field of massive elements (SMXX …, EPXX …)"))?;
+        let job = Job::of(z)
+            .ok_or_else(|| a.err("expected a stress or strain field of massive elements (SMXX …, EPXX …)"))?;
         if !matches!(job, Job::Massive(..)) {
             return Err(a.err("a field of rotation matrices turns the stresses or strains of massive elements only"));
         }

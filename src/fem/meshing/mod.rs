@@ -21,9 +21,9 @@
 pub mod arcs;
 pub mod between;
 pub mod cont_order;
+pub mod containing;
 pub mod contour;
 pub mod cote_swept;
-pub mod containing;
 pub mod couture;
 pub mod dall;
 pub mod dall_support;
