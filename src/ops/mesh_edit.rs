@@ -12,7 +12,7 @@ use crate::value::{Chpoint, Value};
 use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[
-    OpDef { name: "ELEM", signature: "GEO ELEM TYPE|COLOUR | CHE1 ELEM (ABS) SUPE|INFE|EGSU|EGIN|EGAL|DIFF x|COMP x1 x2|MAXI|MINI (LARG|STRI) (AVEC|SANS LMOTS) | GEO ELEM n|LISTENTI | GEO ELEM 'APPU' ('STRI'|'LARG') GEO2 | LINE ELEM 'COMP' P1 P2 | GEO ELEM 'TYPE'", doc: "Elements of a mesh by type, by colour, by number, or resting on another mesh; the part of a line between two of its points; the element types of a mesh (LISTMOTS); the elements of an MCHAML whose values meet a test.", example: "q = s elem qua4 ;", f: elem },
+    OpDef { name: "ELEM", signature: "GEO ELEM TYPE|COLOUR | CHE1 ELEM (ABS) SUPE|INFE|EGSU|EGIN|EGAL|DIFF x|COMP x1 x2|MAXI|MINI (LARG|STRI) (AVEC|SANS LMOTS) | GEO ELEM n|LISTENTI | GEO ELEM 'APPU' ('STRI'|'LARG') GEO2 | GEO ELEM 'CONTENANT' P ('TOUS') ('NOVERIF') | LINE ELEM 'COMP' P1 P2 | GEO ELEM 'TYPE'", doc: "Elements of a mesh by type, by colour, by number, resting on another mesh, or containing a point; the part of a line between two of its points; the element types of a mesh (LISTMOTS); the elements of an MCHAML whose values meet a test.", example: "q = s elem qua4 ;", f: elem },
     OpDef { name: "COTE", signature: "COTE (n) SURFACE", doc: "Side n of a surface whose quadrilaterals form a grid (or of a DALL/TRAN surface of triangles), or its four sides.", example: "b = cote 1 s ;", f: cote },
     OpDef { name: "FACE", signature: "FACE (n) VOLUME", doc: "Face n of a volume made by VOLU, TRAN or ROTA: 1 the base, 2 the opposite face, 3 the lateral surface; without n, the three.", example: "haut = face 2 v ;", f: face },
     OpDef { name: "ENVE", signature: "ENVE VOLUME", doc: "The envelope of a volume mesh: the faces that belong to one element only (TRI3/QUA4), oriented outwards as in their elements.", example: "peau = enve v ;", f: enve },
@@ -34,6 +34,9 @@ fn elem(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let m = a.req::<Rc<Mesh>>()?;
     if let Some(k) = a.keyword(&["COMP", "TYPE"]) {
         return super::mesh_select::elem_keyword(it, a, &m, k);
+    }
+    if a.keyword(&["CONT"]).is_some() {
+        return super::elem_containing::elem_containing(it, a, &m);
     }
     if a.keyword(&["APPU"]).is_some() {
         let strict = a.keyword(&["STRI", "LARG"]) != Some("LARG");

@@ -310,8 +310,14 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             // Relabel a field by element (chan.notice): a field built by
             // arithmetic becomes CONTRAINTES again for VMIS or PRIN, which
             // look for stresses by this label.
-            let m = a.req::<Rc<Mchaml>>()?;
+            // `CHAN CHE1 'TYPE' word`: the keyword read past the field
+            // brings the word to the front, so the two come in either order.
+            let m = a.opt::<Rc<Mchaml>>();
             let w = a.req::<String>()?;
+            let m = match m {
+                Some(m) => m,
+                None => a.req::<Rc<Mchaml>>()?,
+            };
             let mut c = (*m).clone();
             c.subtype = w.trim().to_uppercase();
             Ok(vec![Value::Mchaml(Rc::new(c))])

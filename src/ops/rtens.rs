@@ -15,8 +15,8 @@ use std::rc::Rc;
 
 pub(crate) const OPS: &[OpDef] = &[OpDef {
     name: "RTENS",
-    signature: "RTENS MCHAML MMODEL (MCHAML_CARA) POINT1 (POINT2)",
-    doc: "The stress or strain field in the direct orthonormal frame of POINT1 (2D: and POINT1 turned by +90°; 3D: the direction of POINT2 made normal to POINT1, and their vector product). Massive elements: SMXX SMYY SMZZ SMXY SMXZ SMYZ (EPXX … GAXY …, shear strains counted as engineering ones; SMRR SMZZ SMRZ in axisymmetry) from the global axes. Thin shells: N11 N22 N12, M11 M22 M12, V1 V2 (EP.., GA.., RT..) from each element's frame, the first axis along the projection of POINT1 on the element. The names are kept.",
+    signature: "RTENS MCHAML MMODEL (MCHAML_CARA) POINT1 (POINT2) | RTENS MCHAML MMODEL GRADIENT ('RTAR'|'RART')",
+    doc: "The stress or strain field in the direct orthonormal frame of POINT1 (2D: and POINT1 turned by +90°; 3D: the direction of POINT2 made normal to POINT1, and their vector product). Massive elements: SMXX SMYY SMZZ SMXY SMXZ SMYZ (EPXX … GAXY …, shear strains counted as engineering ones; SMRR SMZZ SMRZ in axisymmetry) from the global axes. Thin shells: N11 N22 N12, M11 M22 M12, V1 V2 (EP.., GA.., RT..) from each element's frame, the first axis along the projection of POINT1 on the element. The names are kept. With a field of rotation matrices R (UX,X … UZ,Z, row then column), each point's tensor A becomes Rt A R ('RTAR', the default) or R A Rt ('RART').",
     example: "s2 = rtens s mo (1. 1.) ;",
     f: rtens,
 }];
@@ -25,7 +25,12 @@ fn rtens(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
     let field = a.req::<Rc<Mchaml>>()?;
     let _model = a.req::<Rc<Model>>()?;
     // Thick shells' thicknesses: the frame of thin ones does not need them.
-    let _ = a.opt::<Rc<Mchaml>>();
+    // A field of rotation matrices instead: the fifth form.
+    if let Some(m) = a.opt::<Rc<Mchaml>>() {
+        if super::rtens_matrix::is_rotation(&m) {
+            return super::rtens_matrix::by_matrices(a, &field, &m);
+        }
+    }
     let p1 = a.req::<PointId>()?;
     let p2 = a.opt::<PointId>();
     let xyz = |p: PointId| it.nodes.coords.get(p.0).copied();
@@ -85,14 +90,14 @@ fn names(z: &MchamlZone) -> String {
     }
 }
 
-enum Turn<'a> {
+pub(super) enum Turn<'a> {
     Frame(&'a [[f64; 3]; 3]),
     Angle(f64, f64),
 }
 
 /// Where the components sit in a vector of named values.
 #[derive(Clone)]
-enum Job {
+pub(super) enum Job {
     /// Indices of xx yy zz xy xz yz (zz and the out-of-plane ones may be
     /// absent in 2D), and the factor of the shear ones (1/2 for
     /// engineering shear strains).
@@ -102,7 +107,7 @@ enum Job {
 }
 
 impl Job {
-    fn of(z: &MchamlZone) -> Option<Job> {
+    pub(super) fn of(z: &MchamlZone) -> Option<Job> {
         let list: Vec<String> =
             if z.comps.is_empty() { z.constants.keys().cloned().collect() } else { z.comps.clone() };
         let at = |n: &str| list.iter().position(|c| c == n);
@@ -136,7 +141,7 @@ impl Job {
         (!tensors.is_empty() || !vectors.is_empty()).then_some(Job::Shell { tensors, vectors })
     }
 
-    fn turn(&self, v: &mut [f64], how: Turn) {
+    pub(super) fn turn(&self, v: &mut [f64], how: Turn) {
         match (self, how) {
             (Job::Massive(ix, f), Turn::Frame(e)) => {
                 let get = |k: usize| ix[k].map_or(0.0, |i| v[i]) * if k >= 3 { *f } else { 1.0 };

@@ -123,18 +123,26 @@ fn bbox(conn: &[usize], nodes: &Nodes) -> ([f64; 3], [f64; 3]) {
 }
 
 /// `PROI GEO CHEL`: a diffuse CHPOINT on the nodes of `geo`, in their
-/// order. Errors name the first node (1-based in the mesh) that lies in
-/// no element of the field.
+/// order. A node outside the field's elements gets no value: Cast3M's
+/// decks project a moving crack front to learn which of its points are
+/// still in the body (EXTR then reads 0 there). When no node at all lies
+/// in the field, the error names the first one (1-based in the mesh).
 pub fn onto_mesh(field: &Mchaml, geo: &Mesh, nodes: &Nodes) -> Result<Chpoint, String> {
     let loc = Locator::new(field, nodes);
     let mut out = Chpoint::new(Nature::Diffus);
-    for (i, n) in geo.node_list().into_iter().enumerate() {
-        let (names, vals) = loc.values_at(nodes.get(n), nodes)?.ok_or_else(|| not_found(i, n, nodes))?;
+    let list = geo.node_list();
+    let mut found = false;
+    for &n in &list {
+        let Some((names, vals)) = loc.values_at(nodes.get(n), nodes)? else { continue };
+        found = true;
         for (c, v) in names.iter().zip(vals) {
             out.add(n, c, v, false);
         }
     }
-    Ok(out)
+    match list.first() {
+        Some(&n) if !found => Err(not_found(0, n, nodes)),
+        _ => Ok(out),
+    }
 }
 
 fn not_found(i: usize, n: usize, nodes: &Nodes) -> String {

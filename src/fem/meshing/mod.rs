@@ -21,6 +21,7 @@
 pub mod arcs;
 pub mod between;
 pub mod cont_order;
+pub mod containing;
 pub mod contour;
 pub mod cote_swept;
 pub mod couture;
