@@ -532,6 +532,23 @@ impl Args<'_> {
         }
     }
 
+    /// A word written against the group that follows it, with no blank
+    /// (`F(T)`: a label with its argument, as decks name a curve's
+    /// ordinate): the word and the group's word as one text, both consumed.
+    /// `None` (nothing consumed) when the next word stands alone.
+    pub fn word_with_glued_group(&mut self) -> Option<(String, String)> {
+        let (w, g) = (self.st.right.front()?, self.st.right.get(1)?);
+        let glued = w.span.end == g.span.start && g.span.end > g.span.start + 1;
+        let inner = match (&w.kind, &g.kind) {
+            (TokKind::Word(_) | TokKind::Quoted(_), TokKind::Val(Value::Mot(m))) if glued => m.to_string(),
+            _ => return None,
+        };
+        let word = self.right_word()?;
+        self.st.right.pop_front();
+        self.st.right.pop_front();
+        Some((word, inner))
+    }
+
     /// Where the next right token was written, when it was a name (the
     /// caller reads the name back from the source).
     pub fn next_name_span(&self) -> Option<Span> {

@@ -203,3 +203,12 @@ mod tests {
         assert!(deformation_gradient(&[[-2.0, 0.0, 0.0], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0]]).is_err());
     }
 }
+
+/// The gradient from a reference configuration to the current one when
+/// both displacements are known on a third, undeformed one (PICA's second
+/// field, X-FEM): x = X₀ + u₂ + u₁ and X = X₀ + u₂ give
+/// F = ∂x/∂X = I + G₁ (I + G₂)⁻¹, Gₖ = ∂uₖ/∂X₀; checked.
+pub fn relative_gradient(g1: &M3, g2: &M3) -> Result<M3, FiniteStrainError> {
+    let f2 = deformation_gradient(g2)?;
+    deformation_gradient(&mul(g1, &inverse(&f2)))
+}

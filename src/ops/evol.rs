@@ -130,6 +130,9 @@ fn complex(a: &mut Args) -> Result<Evolution> {
 /// A list's name: a word before the list, even one that names an
 /// operator (`EVOL 'MANU' temp lt ampl la`: a title, not the TEMP operator).
 fn label(a: &mut Args) -> Option<String> {
+    if let Some((w, g)) = a.word_with_glued_group() {
+        return Some(format!("{}({})", w, g));
+    }
     a.word_before_value().or_else(|| a.word_not_operator())
 }
 

@@ -142,7 +142,7 @@ fn intg(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         mats.push(f);
     }
     let parts = match (&field, &chpo) {
-        (Some(f), _) => intg_mchaml(it, a, &model, f, &comp, &mats)?,
+        (Some(f), _) => intg_mchaml(it, a, &model, &on_model(a, &model, f, &comp), &comp, &mats)?,
         (_, Some(c)) => intg_chpoint(it, a, &model, c, &comp, &mats)?,
         _ => unreachable!("one of them was read"),
     };
@@ -160,6 +160,22 @@ fn intg(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
         })
         .collect();
     Ok(vec![Value::Mchaml(Rc::new(Mchaml { subtype: "SCALAIRE".into(), zones }))])
+}
+
+/// The field as the model's zones hold it: a field made on a mesh (CHAN
+/// 'CHAM' of a CHPOINT on the whole geometry) whose zones are not those of
+/// the model (a part of it, REDU) is first carried onto the model's
+/// elements, as REDU MCHAML MMODEL does; a field made on the model is kept.
+fn on_model(a: &Args, model: &Model, f: &Rc<Mchaml>, comp: &str) -> Rc<Mchaml> {
+    let carrying = |z: &&MchamlZone| z.comps.iter().any(|c| c == comp);
+    let foreign = f.zones.iter().filter(carrying).any(|z| zone_of(model, z).is_none());
+    if !foreign {
+        return f.clone();
+    }
+    match super::restrict::mchaml_to_model(a, f, model) {
+        Ok(m) if m.zones.iter().any(|z| z.comps.iter().any(|c| c == comp)) => Rc::new(m),
+        _ => f.clone(),
+    }
 }
 
 fn intg_mchaml(

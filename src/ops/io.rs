@@ -87,6 +87,10 @@ fn mess(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
 }
 
 fn list(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
+    // 'RESUME' asks for a shorter listing (list.notice): it is a keyword
+    // here even unquoted, where it would otherwise run the RESU operator.
+    // gibi's listings are already short, so it changes nothing.
+    a.keyword_next(&["RESUME"]);
     let name = a.next_name_span().map(|sp| it.source.slice(sp).to_uppercase());
     match a.opt::<Value>() {
         Some(v) => {

@@ -112,6 +112,7 @@ mod pasapas_fields;
 mod pasapas_model;
 mod pasapas_vary;
 mod pica;
+mod pica_xfem;
 mod poin_field;
 mod pointwise;
 mod poly_roots;

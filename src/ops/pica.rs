@@ -16,22 +16,25 @@ use std::rc::Rc;
 pub(crate) const OPS: &[OpDef] = &[
     OpDef {
         name: "PICA",
-        signature: "PICA MMODEL MCHAML_STRESS|MCHAML_STRAIN CHPOINT",
+        signature: "PICA MMODEL MCHAML_STRESS|MCHAML_STRAIN CHPOINT (CHPOINT2)",
         doc: "Cauchy stresses from second Piola-Kirchhoff ones (σ = F S Fᵀ / J), or Almansi-Euler strains from \
               Green-Lagrange ones (e = F⁻ᵀ E F⁻¹), F = I + ∂u/∂X the gradient of the displacement CHPOINT taken \
               on the current geometry, at the field's points of massive elements (OPTI EPSI QUADRATIQUE or \
               TRUESDELL). With OPTI EPSI JAUMANN, and with LINEAIRE (small strains: the stretch is neglected), only \
               the rotation of F turns the tensors; with 'UTILISATEUR' the field is returned as it is. Zones of \
               bars, beams and shells, whose values are in axes that follow the element, are returned as they are. \
-              The arguments may come in any order.",
+              The arguments may come in any order. A second CHPOINT (X-FEM) carries the undeformed geometry, \
+              where the crack is closed, to the reference configuration: both gradients are taken there and \
+              F = I + ∂u₁/∂X₀ (I + ∂u₂/∂X₀)⁻¹. On X-FEM zones (XQ4R, XC8R) the gradients include the enriched \
+              unknowns.",
         example: "sigc = pica mo sig u ;",
         f: pica,
     },
     OpDef {
         name: "CAPI",
-        signature: "CAPI MMODEL MCHAML_STRESS|MCHAML_STRAIN CHPOINT",
+        signature: "CAPI MMODEL MCHAML_STRESS|MCHAML_STRAIN CHPOINT (CHPOINT2)",
         doc: "The reverse of PICA: second Piola-Kirchhoff stresses from Cauchy ones (S = J F⁻¹ σ F⁻ᵀ), or \
-              Green-Lagrange strains from Almansi-Euler ones (E = Fᵀ e F).",
+              Green-Lagrange strains from Almansi-Euler ones (E = Fᵀ e F). A second CHPOINT is read as by PICA.",
         example: "sigp = capi mo sigc u ;",
         f: capi,
     },
@@ -85,9 +88,9 @@ fn convert(it: &mut Interp, a: &mut Args, forward: bool) -> Result<Vec<Value>> {
     let model = a.req::<Rc<Model>>()?;
     let field = a.req::<Rc<Mchaml>>()?;
     let u = a.req::<Rc<Chpoint>>()?;
-    if a.opt::<Rc<Chpoint>>().is_some() {
-        return Err(a.err("PICA with a second displacement field (the X-FEM form) is not implemented"));
-    }
+    // pica.notice's DEP2 (X-FEM): from the undeformed geometry to the
+    // reference configuration.
+    let u2 = a.opt::<Rc<Chpoint>>();
     let measure = match field.subtype.as_str() {
         "CONTRAINTES" => Measure::Stress,
         "DEFORMATIONS" => Measure::Strain,
@@ -112,6 +115,31 @@ fn convert(it: &mut Interp, a: &mut Args, forward: bool) -> Result<Vec<Value>> {
             return Err(a.err("the field is given at the nodes (CHAN 'NOEUD'): give it at the stress points"));
         }
         let mode = zone_mode(mz)?;
+        if mz.xfem.is_some() || u2.is_some() {
+            let fs = super::pica_xfem::gradients(it, a, mz, z, &u, u2.as_deref())?;
+            let mut nz = z.clone();
+            for (e, (vals, fe)) in nz.values.iter_mut().zip(&fs).enumerate() {
+                if fe.len() != vals.len() {
+                    return Err(a.err(format!(
+                        "element {}: the field has {} points, the element gives its stresses at {}",
+                        e + 1,
+                        vals.len(),
+                        fe.len()
+                    )));
+                }
+                for (v, f) in vals.iter_mut().zip(fe) {
+                    transform_point(&z.comps, mode, v, |t| {
+                        if forward {
+                            fs::push_forward(kin, measure, f, t)
+                        } else {
+                            fs::pull_back(kin, measure, f, t)
+                        }
+                    });
+                }
+            }
+            out.zones.push(nz);
+            continue;
+        }
         let mat = material_for(mz, &[]);
         let names = element::node_dofs(form, mode).map_err(|e| a.err(e.to_string()))?;
         let mut nz = z.clone();

@@ -174,7 +174,7 @@ fn key(ty: ElemType, e: &[usize]) -> (ElemType, Vec<usize>) {
 /// (RIGI, SIGM …) as a field made on it would. Constant zones (MATE,
 /// CARA) become one zone per model zone; zones of point values one per
 /// part, element by element.
-fn mchaml_to_model(a: &Args, m: &Mchaml, mo: &Model) -> Result<Mchaml> {
+pub(crate) fn mchaml_to_model(a: &Args, m: &Mchaml, mo: &Model) -> Result<Mchaml> {
     let constant: Vec<&MchamlZone> = m.zones.iter().filter(|z| z.values.is_empty()).collect();
     let valued: Vec<&MchamlZone> = m.zones.iter().filter(|z| !z.values.is_empty()).collect();
     let mut out = Mchaml { subtype: m.subtype.clone(), zones: Vec::new() };
