@@ -15,6 +15,7 @@ mod catalogue_tests;
 mod chan_cham;
 mod chan_comp;
 mod chan_support;
+mod chan_supp;
 mod chargement;
 mod chargement_extr;
 mod chpo_rigi;

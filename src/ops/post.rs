@@ -352,7 +352,11 @@ fn chan(it: &mut Interp, a: &mut Args) -> Result<Vec<Value>> {
             }
             // CHPO: the nodal value is the mean of the elements' values
             // there ('MOYE', the default) or their sum ('SOMM').
-            let summed = k == "CHPO" && a.keyword(&["MOYE", "SOMM"]) == Some("SOMM");
+            let how = if k == "CHPO" { a.keyword(&["MOYE", "SOMM", "SUPP"]) } else { None };
+            if how == Some("SUPP") {
+                return super::chan_supp::on_points(it, a, &model, &m);
+            }
+            let summed = how == Some("SOMM");
             let mut sum = Chpoint::new(Nature::Diffus);
             let mut count = std::collections::HashMap::<(usize, String), f64>::new();
             let mut out_m = Mchaml { subtype: m.subtype.clone(), zones: vec![] };

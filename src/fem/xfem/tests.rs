@@ -61,6 +61,18 @@ fn solve(
     phi: &dyn Fn([f64; 3]) -> f64,
     fixed: &dyn Fn(usize, &str) -> Option<f64>,
 ) -> Solution {
+    solve_with(g, psi, phi, fixed, false)
+}
+
+/// [`solve`], with every node given the tip functions when `all_tip`
+/// (instead of TRIE's choice).
+fn solve_with(
+    g: &Grid,
+    psi: &dyn Fn([f64; 3]) -> f64,
+    phi: &dyn Fn([f64; 3]) -> f64,
+    fixed: &dyn Fn(usize, &str) -> Option<f64>,
+    all_tip: bool,
+) -> Solution {
     let elems = g.elems();
     let lv: Vec<(Vec<f64>, Vec<f64>)> = elems
         .iter()
@@ -68,7 +80,11 @@ fn solve(
         .collect();
     let sel: Vec<ElemLevels> =
         elems.iter().zip(&lv).map(|(e, (s, f))| ElemLevels { nodes: e, psi: s, phi: f, size: 1.0 }).collect();
-    let kinds: HashMap<usize, NodeKind> = select(&sel, false).into_iter().collect();
+    let kinds: HashMap<usize, NodeKind> = if all_tip {
+        (0..(g.nx + 1) * (g.ny + 1)).map(|n| (n, NodeKind::Tip)).collect()
+    } else {
+        select(&sel, false).into_iter().collect()
+    };
     let mut index: HashMap<(usize, &'static str), usize> = HashMap::new();
     let mut mats = Vec::new();
     for (e, (s, f)) in elems.iter().zip(&lv) {
@@ -173,13 +189,16 @@ fn a_crack_through_the_plate_lets_its_halves_part() {
 }
 
 #[test]
-#[ignore = "known defect: with a crack tip inside the patch the displacement is off by up to 9e-3 (XQ4R's tip enrichment is unfinished; see tests/cast3m-base.md)"]
 fn enriched_elements_pass_the_patch_test() {
     // A linear displacement on the boundary of a 3 × 3 grid with a crack
     // tip in the middle: the enriched unknowns stay 0 and the field is
-    // reproduced, to the accuracy of the integration of the tip functions
-    // (not polynomials; the tip unknowns are ill-conditioned and come out
-    // ~1e-4, not 0, while the displacements stay within 1e-6).
+    // reproduced, to rounding and the quadrature of the tip functions.
+    // The boundary holds every unknown of its nodes, the enriched ones at
+    // 0: the crack reaches the left side, whose cut nodes carry the jump,
+    // and a free jump unknown there would let that side move away from
+    // the prescribed field (u = uᵢ + H aᵢ on the edge), which is another
+    // problem than the patch test's. (Held that way, the field comes out
+    // exact; left free, it does not, by ~1e-2.)
     let g = Grid { nx: 3, ny: 3 };
     let boundary = |n: usize| {
         let (i, j) = (n % 4, n / 4);
@@ -189,22 +208,24 @@ fn enriched_elements_pass_the_patch_test() {
     // traction, so the crack changes nothing and the exact field is linear.
     let free = |x: [f64; 3]| [0.01 * x[0], -0.01 * 0.3 / 0.7 * x[1]];
     let (sol, kinds) = solve(&g, &|x| x[0] - 1.5, &|x| x[1] - 1.5 - 1e-3, &|n, c| {
-        if !boundary(n) || !matches!(c, "UX" | "UY") {
+        if !boundary(n) {
             return None;
         }
         let u = free(g.x(n));
-        Some(if c == "UX" { u[0] } else { u[1] })
+        Some(match c {
+            "UX" => u[0],
+            "UY" => u[1],
+            _ => 0.0,
+        })
     });
     assert!(kinds.values().any(|k| *k == NodeKind::Tip));
+    assert!(kinds.values().any(|k| *k == NodeKind::Jump));
     for (&(n, c), &v) in &sol {
         let x = g.x(n);
         match c {
-            "UX" => assert!((v - free(x)[0]).abs() < 1e-6, "UX at {n}: {v}"),
-            "UY" => assert!((v - free(x)[1]).abs() < 1e-6, "UY at {n}: {v}"),
-            // The tip functions are integrated by an approximate (Duffy)
-            // rule, so their unknowns pick up small values; the physical
-            // displacement above is what the patch test holds to 1e-6.
-            _ => assert!(v.abs() < 2e-2, "{c} at {n}: {v}"),
+            "UX" => assert!((v - free(x)[0]).abs() < 1e-9, "UX at {n}: {v}"),
+            "UY" => assert!((v - free(x)[1]).abs() < 1e-9, "UY at {n}: {v}"),
+            _ => assert!(v.abs() < 1e-7, "{c} at {n}: {v}"),
         }
     }
 }
@@ -235,4 +256,69 @@ fn rigid_motions_have_no_energy() {
         .collect();
     let ku: Vec<f64> = (0..nd).map(|r| (0..nd).map(|c| k.k[r * nd + c] * u[c]).sum()).collect();
     assert!(ku.iter().all(|v| v.abs() < 1e-9), "{ku:?}");
+}
+
+/// The coefficients of the four tip functions in Williams' asymptotic
+/// displacement (unit factor K/2μ √(1/2π)), per crack-frame component:
+/// mode I:  u₁ = (κ-1) F2 + F3,   u₂ = (κ+1) F1 - F4;
+/// mode II: u₁ = (κ+1) F1 + F4,   u₂ = -(κ-1) F2 + F3;
+/// (from cos θ/2 (κ-1+2 sin² θ/2) = (κ-1) cos θ/2 + sin θ/2 sin θ, etc.).
+fn williams(kappa: f64, k1: f64, k2: f64) -> [[f64; 4]; 2] {
+    [
+        [k2 * (kappa + 1.0), k1 * (kappa - 1.0), k1, k2],
+        [k1 * (kappa + 1.0), -k2 * (kappa - 1.0), k2, -k1],
+    ]
+}
+
+#[test]
+fn tip_enriched_patch_reproduces_williams_field() {
+    // Every node of a 3 × 3 grid carries the tip functions, so the
+    // discrete space holds Williams' mode I + II field exactly (the
+    // functions times a partition of unity). That field is an elastic
+    // solution with traction-free lips: held on the boundary (classical
+    // unknowns 0, tip unknowns its coefficients), the free interior nodes
+    // must come out with it, to the accuracy of the quadrature of the
+    // singular strain energy. The crack is tilted by 30°, so the crack
+    // frame and the global frame differ.
+    let g = Grid { nx: 3, ny: 3 };
+    let (xt, yt) = (1.37, 1.58);
+    let (ca, sa) = (30f64.to_radians().cos(), 30f64.to_radians().sin());
+    let psi = move |x: [f64; 3]| (x[0] - xt) * ca + (x[1] - yt) * sa;
+    let phi = move |x: [f64; 3]| -(x[0] - xt) * sa + (x[1] - yt) * ca;
+    let kappa = 3.0 - 4.0 * 0.3;
+    let w = williams(kappa, 1.0, 0.4);
+    // Global components: u_x = cos α u₁ - sin α u₂, u_y = sin α u₁ + cos α u₂.
+    let coef = |comp: usize, k: usize| {
+        if comp == 0 {
+            ca * w[0][k] - sa * w[1][k]
+        } else {
+            sa * w[0][k] + ca * w[1][k]
+        }
+    };
+    let want = |c: &str| -> f64 {
+        let comp = if c.ends_with('X') { 0 } else { 1 };
+        match &c[..1] {
+            "B" => coef(comp, 0),
+            "C" => coef(comp, 1),
+            "D" => coef(comp, 2),
+            "E" => coef(comp, 3),
+            _ => 0.0,
+        }
+    };
+    let boundary = |n: usize| {
+        let (i, j) = (n % 4, n / 4);
+        i == 0 || j == 0 || i == 3 || j == 3
+    };
+    let (sol, _) = solve_with(&g, &psi, &phi, &|n, c| boundary(n).then(|| want(c)), true);
+    let mut worst: f64 = 0.0;
+    for (&(n, c), &v) in &sol {
+        if !boundary(n) {
+            worst = worst.max((v - want(c)).abs());
+        }
+    }
+    // The coefficients are O(1); the error left is the quadrature's
+    // (the tip's collapsed rule and the neighbours' sub-cells), far below
+    // the ~1e-2 of a wrong frame or a missing lip.
+    eprintln!("Williams field reproduced to {worst:e}");
+    assert!(worst < 1e-4, "off by {worst}");
 }
