@@ -49,8 +49,8 @@ pub(super) fn gradients(
                             let corners = ref_nodes(part.ty);
                             let mut x0 = d.x.clone();
                             for (l, p) in x0.iter_mut().enumerate() {
-                                let v = el_displacement(mz, &d.elem(), corners[l], &ue2, None)
-                                    .map_err(|err| fail(&err))?;
+                                let v =
+                                    el_displacement(mz, &d.elem(), corners[l], &ue2, None).map_err(|err| fail(&err))?;
                                 for (c, vc) in v.iter().enumerate() {
                                     p[c] -= vc;
                                 }
@@ -90,7 +90,9 @@ pub(super) fn gradients(
                         }
                     }
                     let grad = |ue: &[f64]| {
-                        element::gradient(form, part.ty, mode, &x0, &mat, ue).map(|g| g.values).map_err(|err| fail(&err))
+                        element::gradient(form, part.ty, mode, &x0, &mat, ue)
+                            .map(|g| g.values)
+                            .map_err(|err| fail(&err))
                     };
                     let g2 = match u2 {
                         Some(u2) => Some(grad(&at(u2))?),

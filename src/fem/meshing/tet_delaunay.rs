@@ -32,6 +32,11 @@ pub struct Tets {
     /// The first of the four enclosing corners (they are the last points).
     pub n_input: usize,
     last: usize,
+    /// For each vertex, the tetrahedra ever made on it (dead ones too:
+    /// tetrahedra are only appended, so the list is filtered on reading).
+    /// Boundary recovery asks "which tetrahedra touch this vertex" at every
+    /// move; scanning all tetrahedra made VOLU quadratic on large surfaces.
+    star: Vec<Vec<usize>>,
 }
 
 /// The face opposite vertex `i`, as a sorted triple (a key).
@@ -75,7 +80,7 @@ impl Tets {
         let n = pts.len();
         let mut all = pts.to_vec();
         all.extend(corners);
-        let mut t = Tets { pts: all, tets: vec![], nb: vec![], alive: vec![], n_input: n, last: 0 };
+        let mut t = Tets { pts: all, tets: vec![], nb: vec![], alive: vec![], n_input: n, last: 0, star: vec![] };
         let mut first = [n, n + 1, n + 2, n + 3];
         if t.orient(first[0], first[1], first[2], first[3]) < 0.0 {
             first.swap(2, 3);
@@ -83,6 +88,7 @@ impl Tets {
         t.tets.push(first);
         t.nb.push([NONE; 4]);
         t.alive.push(true);
+        t.note_star(0);
         // A fixed pseudo-random order: expected linear walks, reproducible.
         let mut order: Vec<usize> = (0..n).collect();
         let mut s: u64 = 0x9e37_79b9_7f4a_7c15;
@@ -196,6 +202,20 @@ impl Tets {
         Ok(())
     }
 
+    fn note_star(&mut self, id: usize) {
+        for v in self.tets[id] {
+            if self.star.len() <= v {
+                self.star.resize_with(v + 1, Vec::new);
+            }
+            self.star[v].push(id);
+        }
+    }
+
+    /// The living tetrahedra that have vertex `v`.
+    pub fn around(&self, v: usize) -> impl Iterator<Item = usize> + '_ {
+        self.star.get(v).into_iter().flatten().copied().filter(move |&k| self.alive[k] && self.tets[k].contains(&v))
+    }
+
     /// Replace tetrahedra `old` by `new` (filling the same region, each
     /// positively oriented), keeping the adjacency. Returns the new indices.
     pub fn replace(&mut self, old: &[usize], new: Vec<[usize; 4]>) -> Vec<usize> {
@@ -218,6 +238,7 @@ impl Tets {
             self.tets.push(q);
             self.nb.push([NONE; 4]);
             self.alive.push(true);
+            self.note_star(id);
             ids.push(id);
             for i in 0..4 {
                 let key = face_key(&q, i);

@@ -34,7 +34,7 @@ fn sorted2(a: usize, b: usize) -> [usize; 2] {
 }
 
 fn with(t: &Tets, vs: &[usize]) -> Vec<usize> {
-    (0..t.tets.len()).filter(|&k| t.alive[k] && vs.iter().all(|v| t.tets[k].contains(v))).collect()
+    t.around(vs[0]).filter(|&k| vs[1..].iter().all(|v| t.tets[k].contains(v))).collect()
 }
 
 /// The tetrahedra around edge `uv` in turning order, and the ring of
@@ -215,7 +215,7 @@ fn flip23(t: &mut Tets, s: &Surface, k: usize, i: usize) -> bool {
 }
 
 fn has_edge(t: &Tets, a: usize, b: usize) -> bool {
-    (0..t.tets.len()).any(|k| t.alive[k] && t.tets[k].contains(&a) && t.tets[k].contains(&b))
+    t.around(a).any(|k| t.tets[k].contains(&b))
 }
 
 /// Make edge `ab` appear; false if the moves run out.

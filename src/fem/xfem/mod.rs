@@ -11,6 +11,7 @@
 //! so the physical displacement at a node is uᵢ + H aᵢ + Σ F_k bᵢₖ there.
 
 pub mod functions;
+pub mod on_crack;
 pub mod q4;
 pub mod subcell;
 #[cfg(test)]
@@ -121,6 +122,7 @@ pub fn select(elems: &[ElemLevels], jump_only: bool) -> BTreeMap<usize, NodeKind
             cut_nodes.extend(e.nodes.iter().copied());
         }
     }
+    cut_nodes.extend(on_crack::nodes_on_crack(elems));
     let mut out = BTreeMap::new();
     for n in cut_nodes.difference(&tip_nodes) {
         out.insert(*n, NodeKind::Jump);

@@ -264,10 +264,7 @@ fn rigid_motions_have_no_energy() {
 /// mode II: u₁ = (κ+1) F1 + F4,   u₂ = -(κ-1) F2 + F3;
 /// (from cos θ/2 (κ-1+2 sin² θ/2) = (κ-1) cos θ/2 + sin θ/2 sin θ, etc.).
 fn williams(kappa: f64, k1: f64, k2: f64) -> [[f64; 4]; 2] {
-    [
-        [k2 * (kappa + 1.0), k1 * (kappa - 1.0), k1, k2],
-        [k1 * (kappa + 1.0), -k2 * (kappa - 1.0), k2, -k1],
-    ]
+    [[k2 * (kappa + 1.0), k1 * (kappa - 1.0), k1, k2], [k1 * (kappa + 1.0), -k2 * (kappa - 1.0), k2, -k1]]
 }
 
 #[test]
