@@ -143,11 +143,10 @@ impl Newmark {
         for (ri, r0) in r.iter_mut().zip(&self.r) {
             *ri -= r0;
         }
-        for i in 0..du.len() {
-            let v1 = 2.0 / h * du[i] - self.v[i];
-            let a1 = 4.0 / (h * h) * du[i] - 4.0 / h * self.v[i] - self.a[i];
-            self.v[i] = v1;
-            self.a[i] = a1;
+        for ((&d, v), a) in du.iter().zip(self.v.iter_mut()).zip(self.a.iter_mut()) {
+            let v1 = 2.0 / h * d - *v;
+            *a = 4.0 / (h * h) * d - 4.0 / h * *v - *a;
+            *v = v1;
         }
         self.u = u1.to_vec();
         self.r = r;

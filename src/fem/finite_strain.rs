@@ -174,6 +174,15 @@ pub fn pull_back(k: Kinematics, m: Measure, f: &M3, t: &M3) -> M3 {
     }
 }
 
+/// The gradient from a reference configuration to the current one when
+/// both displacements are known on a third, undeformed one (PICA's second
+/// field, X-FEM): x = X₀ + u₂ + u₁ and X = X₀ + u₂ give
+/// F = ∂x/∂X = I + G₁ (I + G₂)⁻¹, Gₖ = ∂uₖ/∂X₀; checked.
+pub fn relative_gradient(g1: &M3, g2: &M3) -> Result<M3, FiniteStrainError> {
+    let f2 = deformation_gradient(g2)?;
+    deformation_gradient(&mul(g1, &inverse(&f2)))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -202,13 +211,4 @@ mod tests {
         assert!(close(&push_forward(Kinematics::Truesdell, Measure::Stress, &f, &sxx), &syy));
         assert!(deformation_gradient(&[[-2.0, 0.0, 0.0], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0]]).is_err());
     }
-}
-
-/// The gradient from a reference configuration to the current one when
-/// both displacements are known on a third, undeformed one (PICA's second
-/// field, X-FEM): x = X₀ + u₂ + u₁ and X = X₀ + u₂ give
-/// F = ∂x/∂X = I + G₁ (I + G₂)⁻¹, Gₖ = ∂uₖ/∂X₀; checked.
-pub fn relative_gradient(g1: &M3, g2: &M3) -> Result<M3, FiniteStrainError> {
-    let f2 = deformation_gradient(g2)?;
-    deformation_gradient(&mul(g1, &inverse(&f2)))
 }
