@@ -54,7 +54,7 @@ fn closest_on_segment(a: [f64; 3], b: [f64; 3], x: [f64; 3]) -> [f64; 3] {
 
 /// The point of triangle abc nearest to p (by the Voronoi regions of its
 /// corners, edges and face).
-fn closest_on_triangle(a: [f64; 3], b: [f64; 3], c: [f64; 3], p: [f64; 3]) -> [f64; 3] {
+pub(crate) fn closest_on_triangle(a: [f64; 3], b: [f64; 3], c: [f64; 3], p: [f64; 3]) -> [f64; 3] {
     let (ab, ac, ap) = (sub(b, a), sub(c, a), sub(p, a));
     let (d1, d2) = (dot(ab, ap), dot(ac, ap));
     if d1 <= 0.0 && d2 <= 0.0 {
@@ -82,7 +82,12 @@ fn closest_on_triangle(a: [f64; 3], b: [f64; 3], c: [f64; 3], p: [f64; 3]) -> [f
     if va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0 {
         return axpy(b, (d4 - d3) / ((d4 - d3) + (d5 - d6)), sub(c, b));
     }
-    let den = 1.0 / (va + vb + vc);
+    // A degenerate (flat) triangle has no face region: its corner will do.
+    let sum = va + vb + vc;
+    if sum.abs() < 1e-300 {
+        return a;
+    }
+    let den = 1.0 / sum;
     axpy(axpy(a, vb * den, ab), vc * den, ac)
 }
 

@@ -225,7 +225,7 @@ pub fn interior_points(op: &'static str, pts: &[V3], tris: &[[usize; 3]], h: f64
         let mut far = true;
         for (t, (a, b)) in tris.iter().zip(&boxes) {
             if (0..3).all(|k| p[k] > a[k] - gap && p[k] < b[k] + gap) {
-                let q = closest_on_triangle(p, pts[t[0]], pts[t[1]], pts[t[2]]);
+                let q = crate::fem::level_set::closest_on_triangle(pts[t[0]], pts[t[1]], pts[t[2]], p);
                 if dist(p, q) < gap {
                     far = false;
                     break;
@@ -262,45 +262,6 @@ fn ray_hits(o: V3, d: V3, a: V3, b: V3, c: V3) -> bool {
         return false;
     }
     dot(e2, q) / det > 0.0
-}
-
-/// The point of triangle `abc` nearest to `p` (by the Voronoi regions of
-/// its vertices, edges and face).
-fn closest_on_triangle(p: V3, a: V3, b: V3, c: V3) -> V3 {
-    let at = |x: V3, y: V3, t: f64| [0, 1, 2].map(|k| x[k] + t * (y[k] - x[k]));
-    let (ab, ac, ap) = (sub(b, a), sub(c, a), sub(p, a));
-    let (d1, d2) = (dot(ab, ap), dot(ac, ap));
-    if d1 <= 0.0 && d2 <= 0.0 {
-        return a;
-    }
-    let bp = sub(p, b);
-    let (d3, d4) = (dot(ab, bp), dot(ac, bp));
-    if d3 >= 0.0 && d4 <= d3 {
-        return b;
-    }
-    let vc = d1 * d4 - d3 * d2;
-    if vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0 {
-        return at(a, b, d1 / (d1 - d3));
-    }
-    let cp = sub(p, c);
-    let (d5, d6) = (dot(ab, cp), dot(ac, cp));
-    if d6 >= 0.0 && d5 <= d6 {
-        return c;
-    }
-    let vb = d5 * d2 - d1 * d6;
-    if vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0 {
-        return at(a, c, d2 / (d2 - d6));
-    }
-    let va = d3 * d6 - d5 * d4;
-    if va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0 {
-        return at(b, c, (d4 - d3) / ((d4 - d3) + (d5 - d6)));
-    }
-    let den = va + vb + vc;
-    if den.abs() < 1e-300 {
-        return a;
-    }
-    let (v, w) = (vb / den, vc / den);
-    [0, 1, 2].map(|k| a[k] + ab[k] * v + ac[k] * w)
 }
 
 /// Points bucketed by cells of the size, for "is a point nearer than r".
