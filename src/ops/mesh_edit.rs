@@ -20,8 +20,8 @@ pub(crate) const OPS: &[OpDef] = &[
     OpDef { name: "ELIM", signature: "ELIM (crit) GEO (GEO2 …)", doc: "Merge nodes closer than crit, in every object (with GEO2: only nodes of GEO with nodes of GEO2, never within one object).", example: "elim 1.e-5 l ;", f: elim },
     OpDef { name: "INTE", signature: "GEO1 INTE GEO2 ('NOVERIF') | S1B S2B C1 C2 = INTE 'GEOM' S1 S2 ('NOVERIF')", doc: "Elements common to two meshes (an empty mesh when there are none); with 'GEOM', two TRI3 surfaces cut along the curve where they cross, and that curve on the nodes of each.", example: "c = s1 inte s2 ;", f: inte },
     OpDef { name: "DIFF", signature: "DIFF GEO1 GEO2", doc: "Symmetric difference of two meshes.", example: "d = diff s1 s2 ;", f: diff },
-    OpDef { name: "PLUS", signature: "OBJ PLUS VECTOR | GEO PLUS CHPOINT", doc: "A translated copy (geometric, not arithmetic), or the mesh moved by a displacement field.", example: "l2 = l plus (0. 1.) ;", f: plus },
-    OpDef { name: "MOIN", signature: "OBJ MOIN VECTOR", doc: "A copy translated by minus the vector.", example: "l2 = l moin (0. 1.) ;", f: moin },
+    OpDef { name: "PLUS", signature: "OBJ PLUS VECTOR | GEO|POINT PLUS CHPOINT", doc: "A translated copy (geometric, not arithmetic), or the mesh moved by a displacement field.", example: "l2 = l plus (0. 1.) ;", f: plus },
+    OpDef { name: "MOIN", signature: "OBJ MOIN VECTOR | GEO|POINT MOIN CHPOINT", doc: "A copy translated by minus the vector.", example: "l2 = l moin (0. 1.) ;", f: moin },
     OpDef { name: "SYME", signature: "POINT|MAILLAGE SYME ('DROIT' P1 P2 | 'PLAN' P1 P2 P3 | 'POINT' P)", doc: "Mirror image on new nodes: about a line (2D; in 3D the half-turn about it), a plane (3D) or a point. Surfaces and volumes keep their orientation.", example: "s2 = s1 syme 'DROIT' p1 p2 ;", f: syme },
     OpDef { name: "TOUR", signature: "POINT|MAILLAGE TOUR angle P1 (P2)", doc: "A copy on new nodes turned by angle degrees about P1 (2D) or about the axis P1 P2 (3D).", example: "s2 = s1 tour 90. p0 ;", f: tour },
     OpDef { name: "INVE", signature: "INVE GEO | INVE CHPOINT", doc: "Reverse the orientation of a mesh; the inverse of each value of a node field.", example: "l2 = inve l ;", f: inve },
@@ -212,6 +212,13 @@ fn translate(it: &mut Interp, a: &mut Args, sign: f64) -> Result<Vec<Value>> {
     let (mut objs, _) = super::mesh_move::gather(a, obj, 0, "")?;
     if let [Value::Mesh(m), Value::Chpo(u)] = objs.as_slice() {
         return Ok(mesh_val(moved_by_field(it, m, u, sign)));
+    }
+    if let [Value::Point(p), Value::Chpo(u)] = objs.as_slice() {
+        // plus.notice: a POINT too is carried by a displacement field (a
+        // crack tip moved by a propagation increment), to a new point.
+        let m = Mesh { parts: vec![crate::fem::mesh::Part::with(ElemType::Poi1, vec![*p])] };
+        let moved = moved_by_field(it, &m, u, sign);
+        return Ok(vec![Value::Point(moved.parts[0].conn[0])]);
     }
     if let ([Value::Mesh(g2), Value::Mesh(g1)], true) = (objs.as_slice(), sign < 0.0) {
         return super::mesh_moin_geo::mesh_minus_mesh(it, a, g2, g1);
