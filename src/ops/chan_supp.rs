@@ -9,7 +9,7 @@ use super::post::zone_of;
 use super::Args;
 use crate::error::Result;
 use crate::eval::Interp;
-use crate::fem::element::gauss_points;
+use crate::fem::element::{gauss_points, gauss_positions};
 use crate::value::{Chpoint, Mchaml, Model, Nature, Value};
 
 pub(crate) fn on_points(it: &mut Interp, a: &Args, model: &Model, m: &Mchaml) -> Result<Vec<Value>> {
@@ -34,19 +34,14 @@ pub(crate) fn on_points(it: &mut Interp, a: &Args, model: &Model, m: &Mchaml) ->
                 // integration points.
                 let points: Vec<[f64; 3]> = if z.at_nodes && v.len() == nodes.len() {
                     x.clone()
-                } else if v.len() == gauss.len() || v.len() == 1 {
-                    let refs: Vec<[f64; 3]> = if v.len() == gauss.len() {
-                        gauss.iter().map(|(p, _)| *p).collect()
-                    } else {
-                        let r = crate::fem::shape::ref_nodes(part.ty);
-                        vec![r.iter().fold([0.0; 3], |s, p| [0, 1, 2].map(|i| s[i] + p[i] / r.len() as f64))]
-                    };
-                    refs.iter()
-                        .map(|p| {
-                            let n = crate::fem::shape::eval(part.ty, *p).n;
-                            [0, 1, 2].map(|c| n.iter().zip(&x).map(|(w, xi)| w * xi[c]).sum())
-                        })
-                        .collect()
+                } else if v.len() == gauss.len() {
+                    gauss_positions(form, part.ty, &x)
+                } else if v.len() == 1 {
+                    // The reference centre, carried like an integration point.
+                    let r = crate::fem::shape::ref_nodes(part.ty);
+                    let c = r.iter().fold([0.0; 3], |s, p| [0, 1, 2].map(|i| s[i] + p[i] / r.len() as f64));
+                    let n = crate::fem::shape::eval(part.ty, c).n;
+                    vec![[0, 1, 2].map(|k| n.iter().zip(&x).map(|(w, xi)| w * xi[k]).sum())]
                 } else {
                     return Err(a.err(format!(
                         "cannot place the {} values of a {} element on its {} integration points",
